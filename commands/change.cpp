@@ -1,0 +1,138 @@
+// CHANGE GRID | TANGENTS | POINTS (manual 4.2): a new version of the current surface.
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "commands/entries.h"
+#include "workspace/kernels/data_error.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+enum Option { grid, tangents, points };
+
+const Prompt change_grid_prompt{
+    "CHANGE GRID TOO?",
+    "Y to give new numbers of interpolated curves and stringers, N to keep them; or type the\n"
+    "two numbers (INTCU INTST) at once."};
+const Prompt change_tangents_prompt{
+    "CHANGE TANGENTS TOO?",
+    "Y to change border tangents, N to keep them; or type a tangent entry (k tx ty tz [f]) at "
+    "once."};
+
+// The follow-up of CHANGE TANGENTS and POINTS: Y/N, or the two numbers directly.
+Density ask_grid_too(Context& ctx, const Workspace& ws) {
+  for (;;) {
+    auto words = ctx.ask(change_grid_prompt);
+    if (words.empty()) continue;
+    if (auto yes = parse_yes_no(words)) {
+      if (*yes) return ask_density(ctx, ws.nocur, ws.nostr);
+      return {ws.intcu, ws.intst};
+    }
+    Density density;
+    if (auto error = parse_density(words, ws.nocur, ws.nostr, density))
+      ctx.report(*error);
+    else
+      return density;
+  }
+}
+
+// The follow-up of CHANGE POINTS: Y/N, or the first tangent entry directly.
+void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg) {
+  for (;;) {
+    auto words = ctx.ask(change_tangents_prompt);
+    if (words.empty()) continue;
+    if (auto yes = parse_yes_no(words)) {
+      if (*yes) ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+      return;
+    }
+    if (auto error = apply_tangent_entry(words, ws.nocur, ws.nostr, inptg)) {
+      ctx.report(*error);
+      continue;
+    }
+    ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+    return;
+  }
+}
+
+void run_change(Context& ctx, int option) {
+  Workspace& ws = ctx.workspace();
+  if (!ws.has_input()) throw Report(reports::input_not_found);
+  Array inppn = ws.inppn;
+  Array inptg = ws.inptg;
+  Density density;
+  if (option == grid) {
+    density = ask_density(ctx, ws.nocur, ws.nostr);
+  } else {
+    if (option == points) {
+      ask_point_entries(ctx, inppn);
+      ask_tangents_too(ctx, ws, inptg);
+    } else {
+      ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+    }
+    density = ask_grid_too(ctx, ws);
+  }
+  // The new surface is computed into the arrays of the old one (no fresh pages on a large grid);
+  // the kernels check everything first and leave them as they were when they refuse.
+  SurfaceInput input{ws.nocur, ws.nostr, density.intcu, density.intst, &inppn, &inptg};
+  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
+  auto give_back = [&] {
+    ws.patches = std::move(surface.patches);
+    ws.intpn = std::move(surface.intpn);
+  };
+  try {
+    if (option == grid && !surface.patches.empty())
+      refit_into(input, surface.patches, surface.intpn);  // the patches do not depend on the grid
+    else
+      interpolate_into(input, surface);
+  } catch (const DataError& e) {
+    give_back();
+    throw Report(fmt::format("{}; THE SURFACE IS NOT CHANGED", e.what()));
+  } catch (...) {
+    give_back();
+    throw;
+  }
+  ws.intcu = density.intcu;
+  ws.intst = density.intst;
+  ws.inppn = std::move(inppn);
+  ws.inptg = std::move(inptg);
+  ws.patches = std::move(surface.patches);
+  ws.intpn = std::move(surface.intpn);
+}
+
+}  // namespace
+
+extern const Command change_command{
+    .name = "CHANGE",
+    .options = {"GRID", "TANGENTS", "POINTS"},
+    .option_prompt = {"GRID, TANGENTS OR POINTS?",
+                      "GRID: new numbers of interpolated curves and stringers; TANGENTS: new "
+                      "border tangents;\nPOINTS: new input points."},
+    .short_help = "CHANGE GRID, TANGENTS or POINTS: modify the current surface.",
+    .long_help = R"(CHANGE modifies the current surface (there must be one: BUILD or RESTORE it
+first, else INPUT NOT FOUND). The entries are typed as in BUILD; what is not
+changed keeps its value, and the surface is interpolated again at the end.
+
+  CHANGE GRID      asks INTCU INTST, the numbers of curves and stringers to insert
+                   between two input ones.
+  CHANGE TANGENTS  takes tangent entries "k tx ty tz" ("k tx ty tz f" at a corner,
+                   f = 1 along the curve, 0 along the stringer) up to an empty line,
+                   then asks CHANGE GRID TOO? Answer Y or N, or the two numbers.
+  CHANGE POINTS    takes point entries "k x y z [x y z ...]" up to an empty line,
+                   then asks CHANGE TANGENTS TOO? (Y, N or a tangent entry) and
+                   CHANGE GRID TOO? (Y, N or the two numbers).
+
+Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up and keeps
+the surface as it was.
+
+Example: move point 5 up and use a finer grid.
+  CHANGE POINTS
+  POINTS? 5 10 10 4
+  POINTS?
+  CHANGE TANGENTS TOO? N
+  CHANGE GRID TOO? 8 8)",
+    .run = run_change,
+};
+
+}  // namespace igds

@@ -1,0 +1,75 @@
+// What a command sees of the session: the workspace, the dialogue with the user, the disk and
+// the devices. The interpreter implements it; commands never touch the terminal themselves.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "devices/plot.h"
+#include "devices/terminal.h"
+#include "workspace/disk/disk.h"
+#include "workspace/state.h"
+
+namespace igds {
+
+// The command-line options of igds (spec igds.md section 1), resolved at start.
+struct Options {
+  std::filesystem::path disk = ".";
+  TermMode term = TermMode::none;
+  TekOptions tek;
+  std::string plotter;  // "": a new PLOTnnnn.HPGL on the disk per plot; "tty"; else a path
+  PlotOptions plot;
+  bool strict = false;
+};
+
+// What the user is asked for: the prompt's words and the HELP SHORT text at that prompt (one
+// or two lines). HELP LONG at any prompt explains the command being run.
+struct Prompt {
+  std::string_view text;
+  std::string_view short_help;
+};
+
+// Ctrl-C: the entry in progress is abandoned and the state is as before the command.
+struct Abandon {};
+// End of input (Ctrl-D, end of a command file) in the middle of a command: as Abandon, then END.
+struct EndOfInput {};
+
+class Context {
+ public:
+  virtual ~Context() = default;
+
+  virtual Workspace& workspace() = 0;
+  virtual const Options& options() const = 0;
+  virtual const Disk& disk() const = 0;
+
+  // The words of the next reply: the words still unread on the command line, if any (all of
+  // them), else the words of a line read after showing `prompt`. HELP, HELP SHORT and HELP LONG
+  // typed there are answered and the prompt is shown again. An empty line gives no words.
+  // Throws Abandon on Ctrl-C and EndOfInput at the end of input.
+  virtual std::vector<std::string> ask(const Prompt& prompt) = 0;
+  // Puts words back in front, so that the next ask() returns them without prompting.
+  virtual void unread(std::vector<std::string> words) = 0;
+  // True while words of the command line are still unread.
+  virtual bool has_pending() const = 0;
+
+  // A line for the user (information such as RESTORE's NOCUR NOSTR INTCU INTST).
+  virtual void say(std::string_view line) = 0;
+  // An error report that does not end the command (INCORRECT ENTRY): printed like say(), and
+  // counted as an error for --strict.
+  virtual void report(std::string_view text) = 0;
+
+  // Draws an image on the terminal as the terminal mode says.
+  virtual void show(const Image& image) = 0;
+  // ERASE: a clean screen (a page), where there is a screen to erase.
+  virtual void erase() = 0;
+  // The plotter on the terminal line (--plotter tty): bytes already wrapped in ESC.( ... ESC.).
+  virtual void send_to_terminal(std::string_view bytes) = 0;
+
+  // END CMS (apl = false) or END APL (apl = true): the interpreter saves the session and leaves
+  // or enters the APL environment once the command returns.
+  virtual void end_session(bool apl) = 0;
+};
+
+}  // namespace igds

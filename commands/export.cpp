@@ -1,0 +1,71 @@
+// EXPORT SVG | TEK | HPGL [name]: the current image in a file for other programs.
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "commands/entries.h"
+#include "devices/plot.h"
+#include "devices/terminal.h"
+#include "workspace/disk/format.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+enum Option { svg, tek, hpgl };
+constexpr std::string_view file_types[] = {"SVG", "TEK", "HPGL"};
+
+const Prompt file_prompt{"FILE NAME?",
+                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file of "
+                         "that name and type is replaced)."};
+
+void run_export(Context& ctx, int option) {
+  const Workspace& ws = ctx.workspace();
+  if (!ws.image) throw Report(reports::image_not_found);
+  std::vector<std::string> words;
+  while (words.empty()) words = ctx.ask(file_prompt);
+  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
+  if (!name) throw Report(reports::incorrect_parameter);
+  std::string_view type = file_types[option];
+  std::string bytes = option == svg   ? svg_of(*ws.image)
+                      : option == tek ? tek_stream(*ws.image, ctx.options().tek)
+                                      : plot_hpgl(*ws.image, ctx.options().plot).hpgl;
+  try {
+    disk::replace_file(ctx.disk().path(*name, type), bytes);
+  } catch (const disk::IoError& e) {
+    throw Report(fmt::format("CANNOT WRITE {}.{} ({}); NO FILE CHANGED", *name, type, e.reason()));
+  }
+  ctx.say(fmt::format("{}.{}: {} BYTES", *name, type, bytes.size()));
+}
+
+}  // namespace
+
+extern const Command export_command{
+    .name = "EXPORT",
+    .options = {"SVG", "TEK", "HPGL"},
+    .option_prompt = {"SVG, TEK OR HPGL?",
+                      "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013 "
+                      "stream) or HPGL (a plot)."},
+    .short_help = "EXPORT SVG, TEK or HPGL name: write the current image to a file on the disk.",
+    .long_help = R"(EXPORT writes the current image (the one last displayed), with its
+description, to a file on the disk for other programs:
+
+  EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid out as on
+                      the Tektronix screen
+  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would receive (a
+                      clean screen, the image, the description); tek2plot and
+                      xterm -t read it
+  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a plotter or hp2xx
+
+A file of the same name and type is replaced. With no current image EXPORT
+says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits or
+$ # @ + - _ gets INCORRECT PARAMETER.
+
+Example (EX S is EXPORT SVG):
+  DISPLAY SURFACE ASSONOMETRIC 110 130 120
+  EXPORT SVG HULL
+  EX T HULL)",
+    .run = run_export,
+};
+
+}  // namespace igds

@@ -1,0 +1,117 @@
+// PLOT SELECTRIC | EBCDIC (manual 4.5): the current image on the HP-GL pen plotter.
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "commands/entries.h"
+#include "devices/plot.h"
+#include "workspace/disk/format.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+// The escape sequences that wake and put to sleep a plotter wired on the terminal line.
+constexpr std::string_view plotter_on = "\x1b.(", plotter_off = "\x1b.)";
+
+// A new PLOTnnnn.HPGL on the disk, the first number not used yet; its name.
+std::string to_new_file(const Disk& disk, std::string_view hpgl) {
+  for (int n = 1; n <= 9999; ++n) {
+    std::string name = fmt::format("PLOT{:04}", n);
+    if (disk.exists(name, "HPGL")) continue;
+    try {
+      disk::replace_file(disk.path(name, "HPGL"), hpgl);
+    } catch (const disk::IoError& e) {
+      throw Report(fmt::format("CANNOT WRITE {}.HPGL ({}); NOTHING PLOTTED", name, e.reason()));
+    }
+    return name + ".HPGL";
+  }
+  throw Report("NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
+}
+
+// Appended to a file, plot after plot, or written to a device such as /dev/ttyUSB0.
+void to_path(const std::string& path, std::string_view hpgl) {
+  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NOCTTY | O_CLOEXEC, 0666);
+  if (fd < 0)
+    throw Report(fmt::format("CANNOT OPEN PLOTTER {} ({}); NOTHING PLOTTED", path,
+                             disk::system_reason(errno)));
+  std::size_t sent = 0;
+  int error = 0;
+  while (sent < hpgl.size()) {
+    ssize_t n = ::write(fd, hpgl.data() + sent, hpgl.size() - sent);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = n < 0 ? errno : EIO;
+      break;
+    }
+    sent += static_cast<std::size_t>(n);
+  }
+  if (::close(fd) != 0 && error == 0 && errno != EINTR) error = errno;
+  if (error != 0)
+    throw Report(fmt::format("CANNOT WRITE TO PLOTTER {} ({}); {}", path,
+                             disk::system_reason(error),
+                             sent == 0 ? "NOTHING PLOTTED" : "THE PLOT IS INCOMPLETE"));
+}
+
+void run_plot(Context& ctx, int option) {
+  Workspace& ws = ctx.workspace();
+  if (!ws.image) throw Report(reports::image_not_found);
+  expect_no_more_words(ctx);
+  Plot plot = plot_hpgl(*ws.image, ctx.options().plot);
+  const std::string& plotter = ctx.options().plotter;
+  std::string where;
+  if (plotter.empty()) {
+    where = to_new_file(ctx.disk(), plot.hpgl);
+  } else if (plotter == "tty") {
+    ctx.send_to_terminal(std::string(plotter_on) + plot.hpgl + std::string(plotter_off));
+    where = "PLOTTER";
+  } else {
+    to_path(plotter, plot.hpgl);
+    where = plotter;
+  }
+  // STATUS[2]: the keyboard of the last PLOT, 1 SELECTRIC, 2 EBCDIC.
+  ws.status[1] = option + 1;
+  ctx.say(plot_summary(where, plot.stats));
+  if (plot.stats.clipped) ctx.say(plot_clipped_notice);
+}
+
+}  // namespace
+
+extern const Command plot_command{
+    .name = "PLOT",
+    .options = {"SELECTRIC", "EBCDIC"},
+    .option_prompt = {"SELECTRIC OR EBCDIC?",
+                      "The keyboard of your terminal: SELECTRIC or EBCDIC (kept for the "
+                      "record; the plot is the same)."},
+    .short_help = "PLOT SELECTRIC or EBCDIC: draw the current image on the HP-GL pen plotter.",
+    .long_help = R"(PLOT draws the current image (the one last displayed) on a pen plotter that
+speaks HP-GL (HP 7475A and its kin), with its description beside it, as large
+as the paper allows, aspect kept, centred on a landscape sheet.
+
+  PLOT SELECTRIC     the option named the keyboard of the 1975 terminal (the
+  PLOT EBCDIC        = sign on the left or on the right); it is recorded in
+                     STATUS but no longer changes the output.
+
+Where the plot goes is chosen when igds starts:
+  (default)              a new file PLOTnnnn.HPGL on the disk, numbered on
+  --plotter tty          the plotter wired on the terminal line
+  --plotter PATH         a file (each plot appended) or a device (/dev/ttyUSB0)
+  --paper A4|A3|LETTER|B the paper in the plotter (A4 unless told)
+
+After each plot igds says how many vectors were drawn, how often the pen was
+lifted, how far it travelled lifted, and how many bytes were sent. The pen
+order is chosen to keep that travel short. With no current image PLOT says
+IMAGE NOT FOUND.
+
+Example (P S is PLOT SELECTRIC):
+  DISPLAY SURFACE ASSONOMETRIC 110 130 120
+  P S)",
+    .run = run_plot,
+};
+
+}  // namespace igds

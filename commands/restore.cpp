@@ -1,0 +1,53 @@
+// RESTORE [name] (manual 4.3): NAME IGDSDATA, written by SAVE, becomes the current surface.
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+const Prompt file_prompt{"FILE NAME?",
+                         "The name of a file saved with SAVE: 1 to 8 letters, digits or "
+                         "$ # @ + - _ (type IGDSDATA)."};
+
+void run_restore(Context& ctx, int) {
+  std::vector<std::string> words;
+  while (words.empty()) words = ctx.ask(file_prompt);
+  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
+  if (!name) throw Report(reports::incorrect_parameter);
+  Workspace& ws = ctx.workspace();
+  restore_surface(ctx.disk(), *name, ws);
+  ctx.say(
+      fmt::format("NOCUR {} NOSTR {} INTCU {} INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst));
+}
+
+}  // namespace
+
+extern const Command restore_command{
+    .name = "RESTORE",
+    .options = {},
+    .option_prompt = {},
+    .short_help = "RESTORE name: make a surface saved with SAVE the current surface.",
+    .long_help = R"(RESTORE reads the file NAME IGDSDATA from the disk, written earlier by
+SAVE, and makes the surface in it the current surface: the input points and
+tangents, NOCUR, NOSTR, INTCU, INTST, the patches and the interpolated grid.
+The current image, the stored copies and the HELP setting are not changed.
+Afterwards IGDS shows the numbers of curves and stringers and the grid.
+
+The name may follow the command; otherwise IGDS asks for it. A name is 1 to
+8 letters, digits or $ # @ + - _ (HULL and hull are the same file).
+
+  INCORRECT PARAMETER   the name is not such a name
+  FILE NOT FOUND        there is no NAME IGDSDATA on the disk
+  FILE DAMAGED: ...     the file is not a good IGDSDATA file; the current
+                        surface is kept
+
+Example:
+  RESTORE HULL
+  NOCUR 4 NOSTR 5 INTCU 3 INTST 3)",
+    .run = run_restore,
+};
+
+}  // namespace igds

@@ -1,0 +1,48 @@
+// SAVE [name] (manual 4.6): the current surface in the binary file NAME IGDSDATA.
+#include "commands/command.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+const Prompt file_prompt{"FILE NAME?",
+                         "A name for the surface file: 1 to 8 letters, digits or $ # @ + - _ "
+                         "(type IGDSDATA; a file of that name is replaced)."};
+
+void run_save(Context& ctx, int) {
+  const Workspace& ws = ctx.workspace();
+  if (!ws.has_input()) throw Report(reports::input_not_found);
+  std::vector<std::string> words;
+  while (words.empty()) words = ctx.ask(file_prompt);
+  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
+  if (!name) throw Report(reports::incorrect_parameter);
+  save_surface(ctx.disk(), *name, ws);
+}
+
+}  // namespace
+
+extern const Command save_command{
+    .name = "SAVE",
+    .options = {},
+    .option_prompt = {},
+    .short_help = "SAVE name: keep the current surface in a file, for RESTORE.",
+    .long_help = R"(SAVE writes the current surface to the file NAME IGDSDATA on the disk: the
+input points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches and the
+interpolated grid, exactly (RESTORE gives back the very same numbers). A
+file of the same name is replaced; the file is written whole or not at all.
+These files are an archive of surfaces; RESTORE makes one current again.
+
+The name may follow the command; otherwise IGDS asks for it. A name is 1 to
+8 letters, digits or $ # @ + - _ (HULL and hull are the same file).
+
+  INPUT NOT FOUND       there is no current surface (BUILD or RESTORE first)
+  INCORRECT PARAMETER   the name is not such a name
+  CANNOT WRITE ...      the disk refused (full, say); nothing was changed
+
+Example (SA is the shortest abbreviation: S is STORE):
+  SA HULL)",
+    .run = run_save,
+};
+
+}  // namespace igds

@@ -1,0 +1,59 @@
+// STORE FIRST | SECOND | FILE (manual 4.8): a copy of the current image, in memory or on disk.
+#include "commands/command.h"
+#include "commands/entries.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+enum Option { first, second, file };
+
+const Prompt file_prompt{"FILE NAME?",
+                         "A name for the image file: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "(type IGDSIMAG; a file of that name is replaced)."};
+
+void run_store(Context& ctx, int option) {
+  Workspace& ws = ctx.workspace();
+  if (!ws.image) throw Report(reports::image_not_found);
+  if (option == file) {
+    std::vector<std::string> words;
+    while (words.empty()) words = ctx.ask(file_prompt);
+    auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
+    if (!name) throw Report(reports::incorrect_parameter);
+    store_image(ctx.disk(), *name, *ws.image);
+    return;
+  }
+  expect_no_more_words(ctx);
+  (option == first ? ws.temp1 : ws.temp2) = ws.image;
+}
+
+}  // namespace
+
+extern const Command store_command{
+    .name = "STORE",
+    .options = {"FIRST", "SECOND", "FILE"},
+    .option_prompt = {"FIRST, SECOND OR FILE?",
+                      "FIRST or SECOND: keep the current image in memory; FILE: keep it in a "
+                      "file on the disk."},
+    .short_help = "STORE FIRST, SECOND or FILE name: keep a copy of the current image.",
+    .long_help = R"(STORE keeps a copy of the current image (the one last displayed), so that
+DISPLAY can show it again later without projecting anything.
+
+  STORE FIRST        the first copy in memory (DISPLAY FIRST shows it)
+  STORE SECOND       the second copy in memory (DISPLAY SECOND shows it)
+  STORE FILE [name]  the file NAME IGDSIMAG on the disk (DISPLAY FILE name shows it);
+                     a file of the same name is replaced.
+
+The copies in memory are part of the session: they are still there next time.
+With no current image STORE says IMAGE NOT FOUND; a name that is not 1 to 8
+letters, digits or $ # @ + - _ gets INCORRECT PARAMETER.
+
+Example (S FI is STORE FIRST, S FIL is STORE FILE):
+  DISPLAY SURFACE ORTHOGONAL XY
+  S FI
+  STORE FILE TOPVIEW)",
+    .run = run_store,
+};
+
+}  // namespace igds

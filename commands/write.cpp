@@ -1,0 +1,62 @@
+// WRITE [name] (manual 4.7): the current surface as character card images in NAME IGDSCHAR.
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+const Prompt file_prompt{"FILE NAME?",
+                         "A name for the character file: 1 to 8 letters, digits or "
+                         "$ # @ + - _ (type IGDSCHAR; a file of that name is replaced)."};
+
+void run_write(Context& ctx, int) {
+  const Workspace& ws = ctx.workspace();
+  if (!ws.has_input()) throw Report(reports::input_not_found);
+  std::vector<std::string> words;
+  while (words.empty()) words = ctx.ask(file_prompt);
+  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
+  if (!name) throw Report(reports::incorrect_parameter);
+  std::size_t overflow = write_char(ctx.disk(), *name, ws);
+  if (overflow == 1) ctx.say("1 VALUE DOES NOT FIT F10.3: WRITTEN AS **********");
+  if (overflow > 1)
+    ctx.say(fmt::format("{} VALUES DO NOT FIT F10.3: WRITTEN AS **********", overflow));
+}
+
+}  // namespace
+
+extern const Command write_command{
+    .name = "WRITE",
+    .options = {},
+    .option_prompt = {},
+    .short_help = "WRITE name: the current surface as FORTRAN card images, for other programs.",
+    .long_help = R"(WRITE writes the current surface to the character file NAME IGDSCHAR on the
+disk, in card images that a FORTRAN program (or any other) can read with these
+formats, one group after the other:
+
+  (10I5)    STATUS
+  (4I5)     NOCUR NOSTR INTCU INTST
+  (2I5)     the shape of INPPN,   then (8F10.3) INPPN, 8 numbers a card
+  (2I5)     the shape of INPTG,   then (8F10.3) INPTG
+  (3I5)     the shape of INTPN,   then (8F10.3) INTPN
+  (5I5)     the shape of PATCHES, then (8F10.3) PATCHES
+
+Values are rounded to 3 decimals. A value that needs more than 10 columns
+(1000000 or more, -100000 or less) is written as ten asterisks, as FORTRAN
+does, and WRITE says how many there are; SAVE keeps every value exactly.
+A file of the same name is replaced.
+
+The name may follow the command; otherwise IGDS asks for it. A name is 1 to
+8 letters, digits or $ # @ + - _ (HULL and hull are the same file).
+
+  INPUT NOT FOUND       there is no current surface
+  INCORRECT PARAMETER   the name is not such a name
+
+Example:
+  WRITE HULL)",
+    .run = run_write,
+};
+
+}  // namespace igds

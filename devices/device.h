@@ -1,0 +1,43 @@
+// The interface every output device implements (style.md, Devices): integer device
+// coordinates, and a device that remembers its own state so that it emits nothing redundant.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace igds {
+
+struct DevicePoint {
+  int x = 0, y = 0;
+  friend bool operator==(DevicePoint, DevicePoint) = default;
+};
+
+// A polyline in device coordinates: a move to the first point, vectors to the others.
+using DevicePath = std::vector<DevicePoint>;
+
+class Device {
+ public:
+  virtual ~Device() = default;
+  // Pen up (a dark vector) to `p`. Nothing is sent when the pen is already there.
+  virtual void move(DevicePoint p) = 0;
+  // Pen down from the current position to `p`.
+  virtual void draw(DevicePoint p) = 0;
+  // One line of plain text whose first character has its baseline-left corner at `p`.
+  virtual void text(DevicePoint p, std::string_view line) = 0;
+  // A clean screen or sheet.
+  virtual void page() = 0;
+  // One polyline: a move to the first point, vectors to the others. Devices may send it faster.
+  virtual void polyline(std::span<const DevicePoint> points) {
+    if (points.empty()) return;
+    move(points.front());
+    for (std::size_t i = 1; i < points.size(); ++i) draw(points[i]);
+  }
+};
+
+// Draws `path` as one polyline.
+inline void draw_path(Device& device, const DevicePath& path) {
+  device.polyline(path);
+}
+
+}  // namespace igds

@@ -1,0 +1,88 @@
+#include "devices/svg.h"
+
+#include <fmt/format.h>
+
+#include "devices/layout.h"
+#include "devices/plot.h"
+
+namespace igds {
+
+namespace {
+
+int flip(int y) {
+  return tek_screen::height - 1 - y;
+}
+
+}  // namespace
+
+void SvgWriter::close_polyline() {
+  if (drawing_) fmt::format_to(std::back_inserter(body_), "<polyline points=\"{}\"/>\n", points_);
+  drawing_ = false;
+  points_.clear();
+}
+
+void SvgWriter::move(DevicePoint p) {
+  if (at_known_ && at_ == p) return;
+  close_polyline();
+  at_ = p;
+  at_known_ = true;
+}
+
+void SvgWriter::draw(DevicePoint p) {
+  if (!at_known_) {
+    move(p);
+    return;
+  }
+  if (at_ == p) return;
+  if (!drawing_) fmt::format_to(std::back_inserter(points_), "{},{}", at_.x, flip(at_.y));
+  fmt::format_to(std::back_inserter(points_), " {},{}", p.x, flip(p.y));
+  drawing_ = true;
+  at_ = p;
+}
+
+void SvgWriter::text(DevicePoint p, std::string_view line) {
+  close_polyline();
+  at_known_ = false;
+  std::string escaped;
+  for (char c : line) {
+    if (c == '<')
+      escaped += "&lt;";
+    else if (c == '>')
+      escaped += "&gt;";
+    else if (c == '&')
+      escaped += "&amp;";
+    else
+      escaped += (c >= 0x20 && c < 0x7F) ? c : '?';
+  }
+  fmt::format_to(std::back_inserter(body_),
+                 "<text x=\"{}\" y=\"{}\" fill=\"black\" stroke=\"none\">{}</text>\n", p.x,
+                 flip(p.y), escaped);
+}
+
+void SvgWriter::page() {
+  close_polyline();
+  body_.clear();
+  at_known_ = false;
+}
+
+std::string SvgWriter::document() {
+  close_polyline();
+  using namespace tek_screen;
+  return fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+      "viewBox=\"0 0 {0} {1}\">\n"
+      "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
+      "<g fill=\"none\" stroke=\"black\" stroke-width=\"1\" stroke-linejoin=\"round\" "
+      "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n"
+      "{3}</g>\n</svg>\n",
+      width, height, line_height - 4, body_);
+}
+
+std::string svg_of(const Image& image) {
+  SvgWriter svg;
+  draw_tek_display(image, svg, 1);
+  return svg.document();
+}
+
+}  // namespace igds

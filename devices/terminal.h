@@ -1,0 +1,34 @@
+// What a DISPLAY sends to the terminal, by terminal mode (spec tek4013.md).
+#pragma once
+
+#include <string>
+
+#include "workspace/state.h"
+
+namespace igds {
+
+// tek: the Tek screen itself (dialogue in alpha mode); xterm: VT window with a Tek window
+// beside it; none: images are not drawn on the terminal.
+enum class TermMode { tek, xterm, none };
+
+struct TekOptions {
+  int bits = 10;  // 10 for the 4013 (1024 x 780), 12 for --tek 4014 (4096 x 3120)
+};
+
+// The bytes that draw `image` and its description on the left of the screen, ending in alpha
+// mode: in tek mode the graph data itself, in xterm mode wrapped in ESC[?38h ... US ESC ETX,
+// in none mode nothing.
+std::string display_bytes(const Image& image, TermMode mode, TekOptions tek);
+
+// ERASE: a page (ESC FF), with its character size and line style sent again; wrapped for xterm.
+std::string erase_bytes(TermMode mode, TekOptions tek);
+
+// The start of a session in tek mode: the alpha cursor at the top left of the screen, where the
+// first line of the dialogue goes, without erasing (a storage tube keeps what it shows). Empty
+// in the other modes, where the dialogue is not on the Tek screen.
+std::string home_bytes(TermMode mode, TekOptions tek);
+
+// The complete 4013 stream of one image (EXPORT TEK): a page, the image, the description.
+std::string tek_stream(const Image& image, TekOptions tek);
+
+}  // namespace igds

@@ -1,0 +1,40 @@
+// The command line of igds (spec igds.md section 1) and the choice of the terminal mode
+// (spec tek4013.md).
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands/context.h"
+
+namespace igds {
+
+// A command line igds does not understand: the message, then the usage, exit status 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct CommandLine {
+  Options options;                  // disk and term are resolved by resolve_command_line
+  std::optional<std::string> disk;  // --disk DIR
+  std::optional<TermMode> term;     // --term
+  std::vector<std::string> files;   // command files, in order
+  bool then_interactive = false;    // `-` after the files
+  bool device_2250 = false;         // `igds 2250`
+  bool help = false, version = false;
+};
+
+// Parses argv[1..]. Throws UsageError.
+CommandLine parse_command_line(const std::vector<std::string>& args);
+
+// The automatic terminal mode, first rule that applies: stdout not a terminal -> tek; TERM
+// starting with "tek" -> tek; XTERM_VERSION set and TERM=dumb (xterm -t without a tek4014
+// terminfo entry) -> tek; XTERM_VERSION set -> xterm; else none.
+TermMode choose_term(bool stdout_is_terminal, const char* term_env, const char* xterm_version);
+
+// The usage message (--help, and after a usage error).
+std::string usage_text();
+
+}  // namespace igds

@@ -1,0 +1,124 @@
+#include "interp/start.h"
+
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devices/terminal.h"
+#include "interp/command_line.h"
+#include "interp/input.h"
+#include "interp/interpreter.h"
+#include "workspace/disk/session.h"
+#include "workspace/report.h"
+
+namespace igds {
+
+namespace {
+
+void close_all(const std::vector<int>& fds) {
+  for (int fd : fds) {
+    if (fd >= 0) close(fd);
+  }
+}
+
+}  // namespace
+
+int igds_main(int argc, char** argv) {
+  CommandLine line;
+  try {
+    line = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "igds: {}\n{}", e.what(), usage_text());
+    return 2;
+  }
+  if (line.help) {
+    fmt::print("{}", usage_text());
+    return 0;
+  }
+  if (line.version) {
+    fmt::print("igds {}\n", IGDS_VERSION);
+    return 0;
+  }
+  if (line.device_2250) {
+    fmt::print(stderr,
+               "igds: the 2250 light-pen workspace is not available yet; igds 4013 (the "
+               "default) works on any terminal\n");
+    return 1;
+  }
+
+  Options options = line.options;
+  const char* disk_env = std::getenv("IGDS_DISK");
+  options.disk = line.disk ? *line.disk : (disk_env && *disk_env ? disk_env : ".");
+  options.term = line.term ? *line.term
+                           : choose_term(isatty(STDOUT_FILENO) == 1, std::getenv("TERM"),
+                                         std::getenv("XTERM_VERSION"));
+
+  set_seven_bit_output(options.term == TermMode::tek);
+
+  // Every command file is opened before anything starts: a missing one stops igds at once.
+  std::vector<int> files;
+  for (const auto& name : line.files) {
+    int fd = open(name.c_str(), O_RDONLY | O_CLOEXEC);
+    struct stat info {};
+    if (fd >= 0 && (fstat(fd, &info) != 0 || S_ISDIR(info.st_mode))) {
+      close(fd);
+      fd = -1;
+      errno = EISDIR;
+    }
+    if (fd < 0) {
+      fmt::print(stderr, "igds: cannot read the command file {}: {}\n", name, std::strerror(errno));
+      close_all(files);
+      return 1;
+    }
+    files.push_back(fd);
+  }
+
+  try {
+    Disk disk(options.disk);
+    Session session(disk);
+    Workspace ws = session.load();
+    Interpreter interpreter(options, disk, session, std::move(ws));
+    write_out(home_bytes(options.term, options.tek));
+    for (const auto& notice : session.notices()) interpreter.say(notice);
+
+    auto outcome = Interpreter::Outcome::input_ended;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+      FdInput input(std::exchange(files[i], -1), true, true);
+      outcome = interpreter.converse(input);
+      if (outcome != Interpreter::Outcome::input_ended) break;
+    }
+    close_all(files);
+    if (outcome == Interpreter::Outcome::input_ended && (files.empty() || line.then_interactive)) {
+      const bool terminal = isatty(STDIN_FILENO) == 1;
+      if (terminal) catch_interrupts();
+      if (terminal && options.term != TermMode::tek) {
+        ReadlineInput input(disk.path("HISTORY", "IGDSHIST"),
+                            [&interpreter](const std::vector<std::string>& before) {
+                              return interpreter.completions(before);
+                            });
+        outcome = interpreter.converse(input);
+      } else {
+        // A pipe is a command file; a terminal in tek mode gives plain lines, as the 4013 did.
+        FdInput input(STDIN_FILENO, !terminal, !terminal);
+        outcome = interpreter.converse(input);
+      }
+    }
+    interpreter.save();
+    std::fflush(stdout);
+    return outcome == Interpreter::Outcome::strict_stop ? 3 : 0;
+  } catch (const Report& r) {
+    std::fflush(stdout);
+    fmt::print(stderr, "{}\n", r.what());
+    return 1;
+  }
+}
+
+}  // namespace igds

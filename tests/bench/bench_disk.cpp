@@ -1,0 +1,129 @@
+// Speed of the disk: the autosave after a CHANGE GRID and after a STATUS-only change (HELP
+// SHORT), the bytes that one writes, and RESTORE, on a 100 x 100 grid (10 x 10 input points,
+// INTCU = INTST = 10) in a scratch folder of the system's temporary disk (fsync included).
+#include <fmt/core.h>
+#include <stdlib.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tests/bench/bench.h"
+#include "workspace/disk/disk.h"
+#include "workspace/disk/session.h"
+#include "workspace/kernels/surface.h"
+
+namespace {
+
+using namespace igds;
+
+// Bytes this process has handed to write(2) so far (Linux /proc/self/io).
+std::size_t bytes_written_so_far() {
+  std::ifstream io("/proc/self/io");
+  std::string key;
+  std::size_t value = 0;
+  while (io >> key >> value)
+    if (key == "wchar:") return value;
+  return 0;
+}
+
+struct Folder {
+  std::filesystem::path path;
+  Folder() {
+    std::string t = (std::filesystem::temp_directory_path() / "igds-bench-XXXXXX").string();
+    path = ::mkdtemp(t.data());
+  }
+  ~Folder() { std::filesystem::remove_all(path); }
+};
+
+// A wavy 10 x 10 input surface with its border tangents, interpolated with INTCU, INTST.
+Workspace surface(int intcu, int intst) {
+  Workspace ws;
+  ws.nocur = ws.nostr = 10;
+  ws.inppn = Array({100, 3});
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) {
+      double* p = ws.inppn.data() + 3 * (i * 10 + j);
+      p[0] = j, p[1] = 1.5 * i, p[2] = std::sin(0.5 * j) * std::cos(0.3 * i);
+    }
+  ws.inptg = Array({40, 4});
+  for (int r = 0; r < 40; ++r) ws.inptg.ravel[4 * r + (r < 20 ? 0 : 1)] = 1;
+  ws.intcu = intcu;
+  ws.intst = intst;
+  Surface s = interpolate({10, 10, intcu, intst, &ws.inppn, &ws.inptg});
+  ws.patches = std::move(s.patches);
+  ws.intpn = std::move(s.intpn);
+  return ws;
+}
+
+// The XY view of INTPN, as DISPLAY SURFACE ORTHOGONAL XY keeps it.
+Image view(const Workspace& ws) {
+  Image image;
+  image.desim.what = 1;
+  image.points = Array({ws.intpn.shape[0], ws.intpn.shape[1], 2});
+  for (std::size_t k = 0; k < ws.intpn.size() / 3; ++k) {
+    image.points.ravel[2 * k] = ws.intpn.ravel[3 * k];
+    image.points.ravel[2 * k + 1] = ws.intpn.ravel[3 * k + 1];
+  }
+  return image;
+}
+
+}  // namespace
+
+IGDS_BENCH("disk") {
+  Folder folder;
+  Disk disk(folder.path);
+  Workspace fine = surface(10, 10);  // INTPN 100 x 100 x 3
+  Workspace coarse = surface(9, 9);
+  {
+    Session session(disk);
+    session.load();
+    Workspace ws = coarse;
+    session.save(ws);
+    // Time only the save: the copies above are the command's work, not the autosave's.
+    double change_grid = 1e300;
+    for (int r = 0; r < 10; ++r) {
+      ws.intcu = ws.intst = 9;
+      ws.intpn = coarse.intpn;
+      session.save(ws);
+      ws.intcu = ws.intst = 10;
+      ws.intpn = fine.intpn;
+      change_grid = std::min(change_grid, bench::best_seconds(1, [&] { session.save(ws); }));
+    }
+    fmt::print("autosave_change_grid_100x100_int10_ms {:.3f}\n", change_grid * 1e3);
+
+    // The same surface with the current image and both stored copies.
+    ws.image = view(ws);
+    ws.temp1 = view(ws);
+    ws.temp2 = view(coarse);
+    session.save(ws);
+    double help_short = 1e300;
+    std::size_t bytes = 0;
+    for (int r = 0; r < 20; ++r) {
+      ws.status[0] = 1 - ws.status[0];  // HELP SHORT / HELP LONG
+      std::size_t w0 = bytes_written_so_far();
+      help_short = std::min(help_short, bench::best_seconds(1, [&] { session.save(ws); }));
+      bytes = bytes_written_so_far() - w0;
+    }
+    fmt::print("autosave_help_short_ms {:.3f}\n", help_short * 1e3);
+    fmt::print("autosave_help_short_bytes_written {}\n", bytes);
+    std::size_t w0 = bytes_written_so_far();
+    session.save(ws);
+    fmt::print("autosave_unchanged_bytes_written {}\n", bytes_written_so_far() - w0);
+  }
+  {
+    double load = bench::best_seconds(10, [&] {
+      Session session(disk);
+      Workspace ws = session.load();
+      if (ws.intpn.size() != 30000) fmt::print("session_load: wrong INTPN\n");
+    });
+    fmt::print("session_load_100x100_int10_ms {:.3f}\n", load * 1e3);
+  }
+  save_surface(disk, "HULL", fine);
+  Workspace ws;
+  double restore = bench::best_seconds(20, [&] { restore_surface(disk, "HULL", ws); });
+  fmt::print("restore_100x100_int10_ms {:.3f}\n", restore * 1e3);
+  double save = bench::best_seconds(10, [&] { save_surface(disk, "HULL", fine); });
+  fmt::print("save_100x100_int10_ms {:.3f}\n", save * 1e3);
+}

@@ -1,0 +1,91 @@
+// Speed of the surface kernels: interpolation of a large grid against the machine's memcpy rate,
+// one long spline, and the CHANGE GRID recompute.
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include "tests/bench/bench.h"
+#include "workspace/kernels/spline.h"
+#include "workspace/kernels/surface.h"
+#include "workspace/kernels/vec3.h"
+
+namespace {
+
+using igds::Array;
+using igds::Vec3;
+
+// A smooth NOCUR x NOSTR surface with its border tangents (INPTG in workspace/state.h order).
+struct Input {
+  int nocur, nostr;
+  Array inppn, inptg;
+};
+
+Input wavy(int nocur, int nostr) {
+  Input in{nocur, nostr, Array({std::size_t(nocur) * nostr, 3}),
+           Array({2 * std::size_t(nocur + nostr), 4})};
+  auto pts = igds::as_vec3(in.inppn);
+  for (int i = 0; i < nocur; ++i)
+    for (int j = 0; j < nostr; ++j)
+      pts[i * nostr + j] = {j * 1.0, i * 1.5, 10 * std::sin(0.05 * j) * std::cos(0.03 * i)};
+  double* t = in.inptg.data();
+  for (int r = 0; r < 2 * (nocur + nostr); ++r) {
+    bool along_curve = r < 2 * nocur;
+    t[4 * r] = along_curve ? 1 : 0, t[4 * r + 1] = along_curve ? 0 : 1, t[4 * r + 2] = 0;
+  }
+  return in;
+}
+
+}  // namespace
+
+IGDS_BENCH("grid") {
+  const Input in = wavy(500, 500);
+  const igds::SurfaceInput si{in.nocur, in.nostr, 8, 8, &in.inppn, &in.inptg};
+  // Recomputed into the arrays of the previous run (interpolate_into), as a recompute of a
+  // surface of the same size does: the memory is already mapped.
+  igds::Surface surface;
+  igds::interpolate_into(si, surface);
+  const std::size_t points = surface.intpn.size() / 3;
+  const double seconds = igds::bench::best_seconds(5, [&] { igds::interpolate_into(si, surface); });
+  fmt::print("grid_500x500_int8_points {}\n", points);
+  fmt::print("grid_500x500_int8_ms {:.1f}\n", seconds * 1e3);
+  fmt::print("grid_500x500_int8_mpts {:.1f}\n", points / seconds / 1e6);
+  // Into new arrays (interpolate): the system must first map and clear 580 MB of fresh pages.
+  double fresh = 1e300;
+  for (int run = 0; run < 5; ++run) {
+    auto t0 = std::chrono::steady_clock::now();
+    igds::Surface s = igds::interpolate(si);
+    fresh = std::min(fresh,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }  // each surface is freed outside the timed part
+  fmt::print("grid_500x500_int8_new_arrays_ms {:.1f}\n", fresh * 1e3);
+  fmt::print("grid_500x500_int8_new_arrays_mpts {:.1f}\n", points / fresh / 1e6);
+  // The same volume copied by memcpy between two buffers already in memory.
+  std::vector<double> from(points * 3, 1.0), to(points * 3, 0.0);
+  const double copy = igds::bench::best_seconds(
+      5, [&] { std::memcpy(to.data(), from.data(), from.size() * sizeof(double)); });
+  fmt::print("memcpy_mpts {:.1f}\n", points / copy / 1e6);
+  fmt::print("grid_over_memcpy {:.2f}\n", copy / seconds);
+}
+
+IGDS_BENCH("spline") {
+  const std::size_t n = 1000000;
+  std::vector<Vec3> pts(n), tangents(n);
+  for (std::size_t k = 0; k < n; ++k) pts[k] = {double(k), std::sin(0.001 * k), 0.5 * (k % 7)};
+  igds::SplineScratch scratch;
+  double seconds = igds::bench::best_seconds(5, [&] {
+    igds::spline_tangents(pts, {1, 0, 0}, {1, 0, 0}, tangents, scratch);
+  });
+  fmt::print("spline_1e6_ms {:.2f}\n", seconds * 1e3);
+}
+
+IGDS_BENCH("recompute") {
+  const Input in = wavy(100, 100);
+  const igds::Surface s = igds::interpolate({in.nocur, in.nostr, 1, 1, &in.inppn, &in.inptg});
+  const igds::SurfaceInput si{in.nocur, in.nostr, 10, 10, &in.inppn, &in.inptg};
+  double seconds = igds::bench::best_seconds(10, [&] { igds::refit(si, s.patches); });
+  fmt::print("recompute_100x100_int10_ms {:.2f}\n", seconds * 1e3);
+}

@@ -1,0 +1,316 @@
+// BUILD, CHANGE, DISPLAY, STORE, END and HELP driven through a scripted Context.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "commands/command.h"
+#include "commands/view.h"
+#include "tests/commands/fake_context.h"
+#include "tests/support/process.h"
+#include "workspace/report.h"
+
+namespace igds {
+extern const Command build_command;
+extern const Command change_command;
+extern const Command display_command;
+extern const Command store_command;
+extern const Command end_command;
+extern const Command help_command;
+}  // namespace igds
+
+namespace igds::test {
+
+namespace {
+
+enum { grid, tangents, points };               // CHANGE
+enum { first, second, file, input, surface };  // DISPLAY and STORE
+const std::vector<std::string> saddle{"3 3",
+                                      "1  0 0 0   0 10 2   0 20 0",
+                                      "4  10 0 2  10 10 0  10 20 2",
+                                      "7  20 0 0  20 10 2  20 20 0",
+                                      "",
+                                      "1 0 1 0 1",
+                                      "1 1 0 0 0",
+                                      "",
+                                      "2 2"};
+
+std::string report_of(FakeContext& ctx, const Command& c, int option,
+                      std::vector<std::string> words = {}) {
+  try {
+    ctx.run(c, option, std::move(words));
+  } catch (const Report& r) {
+    return r.what();
+  }
+  return "";
+}
+
+void build_saddle(FakeContext& ctx) {
+  ctx.type(saddle);
+  ctx.run(build_command, -1);
+  REQUIRE(ctx.ws.has_surface());
+}
+
+}  // namespace
+
+TEST_CASE("BUILD asks its four questions and makes the surface") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  CHECK(ctx.prompts == std::vector<std::string>{"NUMBER OF CURVES AND STRINGERS?", "POINTS?",
+                                                "POINTS?", "POINTS?", "POINTS?", "TANGENTS?",
+                                                "TANGENTS?", "TANGENTS?",
+                                                "INTERPOLATED CURVES AND STRINGERS?"});
+  const Workspace& ws = ctx.ws;
+  CHECK(ws.nocur == 3);
+  CHECK(ws.nostr == 3);
+  CHECK(ws.intcu == 2);
+  CHECK(ws.intst == 2);
+  CHECK(ws.inppn.shape == std::vector<std::size_t>{9, 3});
+  CHECK(ws.inppn.ravel[3 * 4 + 2] == 0);  // point 5 is 10 10 0
+  CHECK(ws.inppn.ravel[3 * 5 + 2] == 2);  // point 6 is 10 20 2
+  CHECK(ws.inptg.shape == std::vector<std::size_t>{12, 4});
+  CHECK(ws.inptg.ravel[0 * 4 + 1] == 1);  // point 1 along the curve: 0 1 0
+  CHECK(ws.inptg.ravel[6 * 4 + 0] == 1);  // point 1 along the stringer: 1 0 0
+  CHECK(ws.patches.shape == std::vector<std::size_t>{2, 2, 3, 4, 4});
+  CHECK(ws.intpn.shape == std::vector<std::size_t>{7, 7, 3});
+  // Input point 5 (curve 2, place 2) is grid point (3, 3), bit-exact.
+  const double* p = ws.intpn.data() + (3 * 7 + 3) * 3;
+  CHECK(p[0] == 10);
+  CHECK(p[1] == 10);
+  CHECK(p[2] == 0);
+  CHECK(ctx.reports == 0);
+}
+
+TEST_CASE("BUILD: words after BUILD are refused") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  CHECK(report_of(ctx, build_command, -1, {"3", "3"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(ctx.prompts.empty());
+}
+
+TEST_CASE("BUILD: incorrect entries are reported, ignored, and the next one awaited") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  ctx.type({"1 3", "3 3 3", "2 x", "2 2", "5 1 1 1", "9 1 2", "4 1 2 3", "", "3 0 0", "2 1 0 0 0",
+            "", "-1 0", "1 1"});
+  ctx.run(build_command, -1);
+  CHECK(ctx.reports == 7);
+  CHECK(ctx.said[0] == "INCORRECT ENTRY");
+  CHECK(ctx.said[2] == "INCORRECT ENTRY");
+  CHECK(ctx.said[3] == "INCORRECT ENTRY: THE POINT NUMBER MUST BE 1 TO 4");
+  CHECK(ctx.ws.nocur == 2);
+  CHECK(ctx.ws.inppn.ravel == std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3});
+  CHECK(ctx.ws.inptg.ravel[6 * 4 + 0] == 1);  // point 2, f = 0: along stringer 2 at curve 1
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{3, 3, 3});
+}
+
+TEST_CASE("BUILD: Ctrl-C or the end of the input leaves the workspace as it was") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  const Workspace before = ctx.ws;
+  ctx.type({"2 2", "1 5 5 5", "^C"});
+  CHECK_THROWS_AS(ctx.run(build_command, -1), Abandon);
+  CHECK(ctx.ws == before);
+  ctx.type({"2 2", "1 5 5 5", "", ""});
+  CHECK_THROWS_AS(ctx.run(build_command, -1), EndOfInput);
+  CHECK(ctx.ws == before);
+}
+
+TEST_CASE("CHANGE needs a surface") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  for (int option : {grid, tangents, points})
+    CHECK(report_of(ctx, change_command, option) == "INPUT NOT FOUND");
+}
+
+TEST_CASE("CHANGE GRID refits the same patches") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  const Array patches = ctx.ws.patches;
+  ctx.type({"x", "4 0"});
+  ctx.run(change_command, grid);
+  CHECK(ctx.reports == 1);
+  CHECK(ctx.ws.intcu == 4);
+  CHECK(ctx.ws.intst == 0);
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{11, 3, 3});
+  CHECK(ctx.ws.patches == patches);
+}
+
+TEST_CASE("CHANGE TANGENTS, then the grid as two numbers or Y/N") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  const Array patches = ctx.ws.patches;
+  ctx.type({"3 0 5 0 1", "", "maybe", "1 1"});
+  ctx.run(change_command, tangents);
+  CHECK(ctx.reports == 1);
+  CHECK(ctx.prompts.back() == "CHANGE GRID TOO?");
+  CHECK(ctx.ws.inptg.ravel[1 * 4 + 1] == 5);  // point 3 along curve 1
+  CHECK(ctx.ws.intcu == 1);
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{5, 5, 3});
+  CHECK(ctx.ws.patches != patches);
+
+  ctx.type({"", "N"});
+  ctx.run(change_command, tangents);
+  CHECK(ctx.ws.intcu == 1);
+  ctx.type({"", "Y", "3 3"});
+  ctx.run(change_command, tangents);
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{9, 9, 3});
+}
+
+TEST_CASE("CHANGE POINTS offers CHANGE TANGENTS and CHANGE GRID") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  ctx.type({"5 10 10 7", "", "9 0 1 0 1", "", "N"});
+  ctx.run(change_command, points);
+  CHECK(ctx.ws.inppn.ravel[4 * 3 + 2] == 7);
+  CHECK(ctx.ws.inptg.ravel[5 * 4 + 1] == 1);  // the tangent entry typed at CHANGE TANGENTS TOO?
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{7, 7, 3});
+  // The grid point of input point 5 follows it.
+  CHECK(ctx.ws.intpn.ravel[(3 * 7 + 3) * 3 + 2] == 7);
+
+  ctx.type({"", "Y", "1 0 0 0 1", "", "Y", "0 0"});
+  ctx.run(change_command, points);
+  CHECK(ctx.ws.inptg.ravel[0] == 0);
+  CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{3, 3, 3});
+  CHECK(ctx.reports == 0);
+}
+
+TEST_CASE("DISPLAY reports what is missing") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  CHECK(report_of(ctx, display_command, input) == "INPUT NOT FOUND");
+  CHECK(report_of(ctx, display_command, surface) == "SURFACE NOT FOUND");
+  CHECK(report_of(ctx, display_command, first) == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, display_command, second) == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, display_command, file, {"a/b"}) == "INCORRECT PARAMETER");
+  CHECK(report_of(ctx, display_command, file, {"TOOLONGNAME"}) == "INCORRECT PARAMETER");
+  CHECK(report_of(ctx, display_command, file, {"NOSUCH"}) == "FILE NOT FOUND");
+  CHECK(report_of(ctx, display_command, first, {"X"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(ctx.shown.empty());
+}
+
+TEST_CASE("DISPLAY projection parameters are checked") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  for (auto words :
+       std::vector<std::vector<std::string>>{{"PERSPECTIVE"},
+                                             {"O", "XX"},
+                                             {"O", "X"},
+                                             {"I", "4", "30"},
+                                             {"I", "1", "95"},
+                                             {"I", "1.5", "30"},
+                                             {"A", "90", "130", "140"},
+                                             {"A", "120", "120"},
+                                             {"C", "10", "10", "1"},  // inside the bounding box
+                                             {"C", "1", "2"},
+                                             {"C", "x", "1", "2"}}) {
+    CAPTURE(words.front());
+    CHECK(report_of(ctx, display_command, surface, words) == "INCORRECT PARAMETER");
+  }
+  CHECK(ctx.shown.empty());
+  CHECK_FALSE(ctx.ws.image);
+}
+
+TEST_CASE("DISPLAY INPUT projects the points and the tangents") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  ctx.run(display_command, input, {"ORTHOGONAL", "xy"});
+  REQUIRE(ctx.ws.image);
+  const Image& image = *ctx.ws.image;
+  CHECK(image.desim == Description{0, Projection::orthogonal, {1, 0, 0}});
+  CHECK(image.points.shape == std::vector<std::size_t>{3, 3, 2});
+  CHECK(image.points.ravel[4 * 2 + 0] == 10);  // point 5: x 10 y 10
+  CHECK(image.points.ravel[5 * 2 + 1] == 20);  // point 6: y 20
+  // Two tangents at point 1: 0 1 0 along the curve, 1 0 0 along the stringer.
+  REQUIRE(image.arrows.shape == std::vector<std::size_t>{2, 4});
+  for (std::size_t i = 0; i < 4; ++i) {
+    CHECK(image.arrows.ravel[i] == doctest::Approx(std::vector<double>{0, 0, 0, 1}[i]));
+    CHECK(image.arrows.ravel[4 + i] == doctest::Approx(std::vector<double>{0, 0, 1, 0}[i]));
+  }
+  REQUIRE(ctx.shown.size() == 1);
+  CHECK(ctx.shown[0] == image);
+}
+
+TEST_CASE("DISPLAY SURFACE asks the projection and its parameters") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  ctx.type({"", "ass", "110 130 120"});
+  ctx.run(display_command, surface);
+  CHECK(ctx.prompts.back() == "THREE ANGLES?");
+  REQUIRE(ctx.ws.image);
+  CHECK(ctx.ws.image->desim == Description{1, Projection::assonometric, {110, 130, 120}});
+  CHECK(ctx.ws.image->points.shape == std::vector<std::size_t>{7, 7, 2});
+  CHECK(ctx.ws.image->arrows.empty());
+
+  ctx.run(display_command, surface, {"AXONOMETRIC", "120", "120", "120"});
+  CHECK(ctx.ws.image->desim.projection == Projection::assonometric);
+  ctx.run(display_command, surface, {"I", "3", "30"});
+  CHECK(ctx.ws.image->desim == Description{1, Projection::isometric, {3, 30, 0}});
+  ctx.run(display_command, surface, {"C", "100", "¯50", "80"});
+  CHECK(ctx.ws.image->desim == Description{1, Projection::conic, {100, -50, 80}});
+  CHECK(ctx.shown.size() == 4);
+}
+
+TEST_CASE("STORE and DISPLAY FIRST, SECOND and FILE") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  CHECK(report_of(ctx, store_command, first) == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, store_command, file, {"X"}) == "IMAGE NOT FOUND");
+  build_saddle(ctx);
+  ctx.run(display_command, surface, {"O", "XY"});
+  const Image xy = *ctx.ws.image;
+  ctx.run(store_command, first);
+  ctx.run(display_command, surface, {"O", "YZ"});
+  const Image yz = *ctx.ws.image;
+  ctx.run(store_command, second);
+  CHECK(report_of(ctx, store_command, file, {"a.b"}) == "INCORRECT PARAMETER");
+  ctx.run(store_command, file, {"view"});
+  CHECK(std::filesystem::exists(dir.path() / "VIEW.IGDSIMAG"));
+  CHECK(report_of(ctx, store_command, second, {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(*ctx.ws.temp1 == xy);
+  CHECK(*ctx.ws.temp2 == yz);
+
+  ctx.run(display_command, first);
+  CHECK(*ctx.ws.image == xy);
+  ctx.type({"VIEW"});
+  ctx.run(display_command, file);
+  CHECK(ctx.prompts.back() == "FILE NAME?");
+  CHECK(*ctx.ws.image == yz);
+  ctx.run(display_command, second);
+  CHECK(ctx.shown.size() == 5);
+}
+
+TEST_CASE("END and HELP") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  ctx.run(end_command, 0);
+  CHECK(ctx.ends == 1);
+  ctx.run(end_command, 1);
+  CHECK(ctx.ends == 0);
+  CHECK(report_of(ctx, end_command, 1, {"NOW"}) == "INCORRECT COMMAND OR PARAMETERS");
+
+  CHECK(ctx.ws.status[0] == 1);
+  ctx.run(help_command, 0);
+  CHECK(ctx.ws.status[0] == 0);
+  CHECK(ctx.said.size() == 2);
+  CHECK(ctx.said[0].starts_with("Type a command: BUILD CHANGE RESTORE DISPLAY"));
+  ctx.said.clear();
+  ctx.run(help_command, -1);
+  CHECK(ctx.said.size() == 2);
+  ctx.said.clear();
+  ctx.run(help_command, 1);
+  CHECK(ctx.ws.status[0] == 1);
+  CHECK(ctx.said.size() > 20);
+  ctx.said.clear();
+  ctx.run(help_command, -1);
+  CHECK(ctx.said.size() > 20);
+}
+
+}  // namespace igds::test

@@ -1,0 +1,184 @@
+// Every device stream read by a real client: tek2plot for the 4013/4014 streams, hp2xx for the
+// HP-GL plots, xmllint for the SVG.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <regex>
+
+#include "devices/hpgl.h"
+#include "devices/layout.h"
+#include "devices/plot.h"
+#include "devices/tek4013.h"
+#include "devices/terminal.h"
+#include "tests/devices/support.h"
+#include "tests/support/process.h"
+
+namespace igds::test::devices {
+
+namespace {
+
+std::vector<Image> sample_images() {
+  std::vector<Image> images{input_image(3, 4), surface_image(5, 4), surface_image(2, 2),
+                            input_image(6, 5), flat_grid(40)};
+  Image isometric = surface_image(7, 3);
+  isometric.desim = {1, Projection::isometric, {2, 45, 0}};
+  images.push_back(isometric);
+  return images;
+}
+
+// tek2plot's SVG of `stream`; it must read it without a word on stderr.
+std::string tek2plot_svg(const std::string& stream) {
+  TempDir dir;
+  write_file(dir.path() / "s.tek", stream);
+  RunOptions options;
+  options.timeout_seconds = 60;
+  RunResult r = run({"tek2plot", "-T", "svg", (dir.path() / "s.tek").string()}, options);
+  CHECK(r.status == 0);
+  CHECK(r.err == "");
+  return r.out;
+}
+
+// The text lines of tek2plot's SVG, with their position.
+std::vector<std::pair<Point2, std::string>> tek2plot_texts(const std::string& svg) {
+  std::vector<std::pair<Point2, std::string>> out;
+  static const std::regex text(
+      R"(<text transform="translate\(([-0-9.]+),([-0-9.]+)\)[^>]*>([^<]*)</text>)");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), text); it != std::sregex_iterator();
+       ++it)
+    out.push_back({{std::stod((*it)[1]), std::stod((*it)[2])}, (*it)[3]});
+  return out;
+}
+
+// What tek2plot must show for the polylines drawn at `unit` times the 4013's resolution: a
+// 10-bit point (x, y) at (4x, 4y + 488), a 12-bit one at (x, y + 488).
+std::vector<DevicePath> in_tek2plot_units(const std::vector<DevicePath>& paths, int unit) {
+  std::vector<DevicePath> out = paths;
+  int k = 4 / unit;
+  for (auto& p : out)
+    for (auto& q : p) q = {k * q.x, k * q.y + 488};
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("tek2plot: a 10-bit point (x, y) appears at (4x, 4y + 488)") {
+  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  std::string s = cat({"\x1D", tek_address(100, 100), tek_address(500, 600), "\x1D",
+                       tek_address(0, 0), tek_address(1023, 779), "\x1F"});
+  auto paths = svg_paths(tek2plot_svg(s));
+  CHECK(paths == std::vector<DevicePath>{{{400, 888}, {2000, 2888}}, {{0, 488}, {4092, 3604}}});
+  std::string s12 = cat({"\x1D", tek_address(401, 402, 12), tek_address(4095, 3119, 12), "\x1F"});
+  CHECK(svg_paths(tek2plot_svg(s12)) == std::vector<DevicePath>{{{401, 890}, {4095, 3607}}});
+}
+
+TEST_CASE("tek2plot reads every 4013 and 4014 stream, vertices where they were meant") {
+  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  for (const Image& im : sample_images())
+    for (int bits : {10, 12}) {
+      int unit = bits == 12 ? 4 : 1;
+      Recorder r;
+      draw_tek_display(im, r, unit);
+      auto expected = in_tek2plot_units(r.drawn(), unit);
+      for (const std::string& stream :
+           {tek_stream(im, {bits}), display_bytes(im, TermMode::tek, {bits})}) {
+        std::string svg = tek2plot_svg(stream);
+        INFO(show(expected));
+        CHECK(show(svg_paths(svg)) == show(expected));
+        auto texts = tek2plot_texts(svg);
+        REQUIRE(texts.size() == r.texts.size());
+        for (std::size_t i = 0; i < texts.size(); ++i) {
+          CHECK(texts[i].second == r.texts[i].line);
+          CHECK(texts[i].first.x == doctest::Approx(4 * tek_screen::text_x));
+          CHECK(std::abs(texts[i].first.y - (4.0 * r.texts[i].at.y / unit + 488)) <
+                4 * tek_screen::line_height);
+        }
+      }
+    }
+  // A page alone.
+  CHECK(svg_paths(tek2plot_svg(erase_bytes(TermMode::tek, {}))).empty());
+}
+
+namespace {
+
+struct Hp2xx {
+  std::string dump;
+  Hp2xxLog log;
+};
+
+Hp2xx hp2xx(const std::string& hpgl) {
+  TempDir dir;
+  write_file(dir.path() / "p.hpgl", hpgl);
+  RunOptions options;
+  options.timeout_seconds = 60;
+  RunResult r =
+      run({"hp2xx", "-t", "-m", "hpgl", "-f", "-", (dir.path() / "p.hpgl").string()}, options);
+  CHECK(r.status == 0);
+  Hp2xx h{r.out, read_hp2xx_log(r.err)};
+  INFO(r.err);
+  CHECK(h.log.commands > 0);
+  CHECK(h.dump.find("PD") != std::string::npos);
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("hp2xx reads every plot: within the paper, the same drawing absolute or relative") {
+  REQUIRE_MESSAGE(have_program("hp2xx"), "hp2xx is needed");
+  for (const Image& im : sample_images())
+    for (Paper paper : {Paper::a4, Paper::a3, Paper::letter, Paper::b}) {
+      Plot relative = plot_hpgl(im, {paper, false});
+      Plot absolute = plot_hpgl(im, {paper, true});
+      CHECK(relative.stats.vectors == absolute.stats.vectors);
+      CHECK(relative.stats.pen_up_mm == doctest::Approx(absolute.stats.pen_up_mm));
+      Hp2xx a = hp2xx(relative.hpgl), b = hp2xx(absolute.hpgl);
+      CHECK(a.dump == b.dump);
+      DevicePoint lim = hp7475a.limit(paper);
+      CHECK(a.log.x0 >= 0);
+      CHECK(a.log.y0 >= 0);
+      CHECK(a.log.x1 <= lim.x);
+      CHECK(a.log.y1 <= lim.y);
+      CHECK(a.log.x1 > a.log.x0);
+    }
+}
+
+TEST_CASE("hp2xx reads a clipped plot: nothing beyond the hard-clip limits") {
+  REQUIRE_MESSAGE(have_program("hp2xx"), "hp2xx is needed");
+  Picture pic = picture_of(surface_image(4, 4));
+  PlotLayout layout = plot_layout(pic, {});
+  layout.at.scale *= 2.5;
+  Plot plot = plot_placed(pic, layout, {});
+  CHECK(plot.stats.clipped);
+  Hp2xx h = hp2xx(plot.hpgl);
+  CHECK(h.log.x0 >= 0);
+  CHECK(h.log.y0 >= 0);
+  CHECK(h.log.x1 <= 11040);
+  CHECK(h.log.y1 <= 7721);
+}
+
+TEST_CASE("xmllint reads the SVG; its coordinates are the Tek ones, y flipped") {
+  REQUIRE_MESSAGE(have_program("xmllint"), "xmllint (libxml2-utils) is needed");
+  for (const Image& im : sample_images()) {
+    std::string svg = svg_of(im);
+    TempDir dir;
+    write_file(dir.path() / "i.svg", svg);
+    RunResult r = run({"xmllint", "--noout", (dir.path() / "i.svg").string()});
+    CHECK(r.status == 0);
+    CHECK(r.err == "");
+    auto decoded = decode_tek(tek_stream(im, {}), 10);
+    std::vector<DevicePath> flipped = decoded.paths;
+    for (auto& p : flipped)
+      for (auto& q : p) q.y = 779 - q.y;
+    auto paths = svg_paths(svg);
+    // Closed squares and rings are polylines in our SVG: compare as drawn.
+    CHECK(paths == flipped);
+    CHECK(svg.find("viewBox=\"0 0 1024 780\"") != std::string::npos);
+    for (const auto& [at, line] : decoded.texts) {
+      if (line.empty()) continue;
+      CHECK(svg.find(fmt::format("<text x=\"{}\" y=\"{}\"", at.x, 779 - at.y)) !=
+            std::string::npos);
+      CHECK(svg.find(">" + line + "</text>") != std::string::npos);
+    }
+  }
+}
+
+}  // namespace igds::test::devices

@@ -1,0 +1,155 @@
+// The devices through the real igds binary: a whole --term tek session is a 4013 stream that
+// tek2plot renders without complaint, and EXPORT and PLOT write what the devices make.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <regex>
+
+#include "tests/devices/support.h"
+#include "tests/support/process.h"
+
+namespace igds::test::devices {
+
+namespace {
+
+// A 3 x 3 surface with two border tangents, shown three ways, erased once, exported, plotted.
+constexpr std::string_view session = R"(BUILD
+3 3
+1 0 0 0  1 0 0.2  2 0 0
+4 0 1 0.3  1 1 0.5  2 1 0.3
+7 0 2 0  1 2 0.2  2 2 0
+
+1 1 0 0 1
+2 0 1 0
+
+2 2
+DISPLAY INPUT ASSONOMETRIC 110 130 120
+DISPLAY SURFACE ORTHOGONAL XY
+ERASE
+DISPLAY SURFACE ISOMETRIC 3 30
+EXPORT SVG HULL
+EXPORT TEK HULL
+EXPORT HPGL HULL
+PLOT SELECTRIC
+END CMS
+)";
+
+RunResult run_session(const TempDir& disk, std::vector<std::string> options) {
+  write_file(disk.path() / "session.igds", session);
+  std::vector<std::string> args{"--disk", disk.path().string()};
+  args.insert(args.end(), options.begin(), options.end());
+  args.push_back((disk.path() / "session.igds").string());
+  RunOptions run_options;
+  run_options.timeout_seconds = 60;
+  return run_igds(args, run_options);
+}
+
+RunResult tek2plot(const std::filesystem::path& file) {
+  RunOptions options;
+  options.timeout_seconds = 60;
+  return run({"tek2plot", "-T", "svg", file.string()}, options);
+}
+
+bool contains(const std::vector<DevicePath>& all, const std::vector<DevicePath>& part) {
+  for (const auto& p : part)
+    if (std::find(all.begin(), all.end(), p) == all.end()) return false;
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("igds --term tek: the whole session is a 4013 stream tek2plot renders") {
+  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  TempDir disk;
+  RunResult r = run_session(disk, {"--term", "tek"});
+  INFO(r.out, r.err);
+  REQUIRE(r.status == 0);
+  write_file(disk.path() / "out.tek", r.out);
+  RunResult t = tek2plot(disk.path() / "out.tek");
+  CHECK(t.status == 0);
+  CHECK(t.err == "");
+  CHECK(!svg_paths(t.out).empty());
+  auto session = decode_tek(r.out, 10);
+  CHECK(session.pages == 1);  // ERASE; DISPLAY never erases
+  // The last DISPLAY is what EXPORT TEK wrote: every one of its vectors is in the session.
+  std::string exported = read_file(disk.path() / "HULL.TEK");
+  auto image = decode_tek(exported, 10);
+  CHECK(image.pages == 1);
+  CHECK(!image.paths.empty());
+  CHECK(contains(session.paths, image.paths));
+  CHECK(r.out.find("SURFACE") != std::string::npos);
+  CHECK(r.out.find("ISOMETRIC") != std::string::npos);
+  RunResult e = tek2plot(disk.path() / "HULL.TEK");
+  CHECK(e.status == 0);
+  CHECK(e.err == "");
+  // READY after a DISPLAY comes at the text column, below the description.
+  auto ready = std::find_if(session.texts.begin(), session.texts.end(), [](const auto& t) {
+    return t.second.rfind("READY", 0) == 0 && t.first.x == 780;
+  });
+  CHECK(ready != session.texts.end());
+}
+
+TEST_CASE("igds: EXPORT and PLOT files read by xmllint and hp2xx, the PLOT summary") {
+  REQUIRE_MESSAGE(have_program("hp2xx"), "hp2xx is needed");
+  REQUIRE_MESSAGE(have_program("xmllint"), "xmllint (libxml2-utils) is needed");
+  TempDir disk;
+  RunResult r = run_session(disk, {"--term", "none", "--paper", "a3"});
+  INFO(r.out, r.err);
+  REQUIRE(r.status == 0);
+  std::string plot = read_file(disk.path() / "PLOT0001.HPGL");
+  CHECK(read_file(disk.path() / "HULL.HPGL") == plot);
+  std::smatch m;
+  REQUIRE(std::regex_search(
+      r.out, m,
+      std::regex(
+          R"(PLOT0001\.HPGL: ([0-9]+) VECTORS, ([0-9]+) PEN LIFTS, PEN-UP TRAVEL ([0-9]+) MM, ([0-9]+) BYTES)")));
+  CHECK(std::stoul(m[4]) == plot.size());
+  CHECK(std::stoul(m[1]) > 0);
+  RunOptions options;
+  options.timeout_seconds = 60;
+  RunResult h = run(
+      {"hp2xx", "-t", "-m", "hpgl", "-f", "-", (disk.path() / "PLOT0001.HPGL").string()}, options);
+  CHECK(h.status == 0);
+  Hp2xxLog log = read_hp2xx_log(h.err);
+  CHECK(log.commands > 0);
+  CHECK(log.x1 <= 16158);  // A3 on the 7475A
+  CHECK(log.y1 <= 11040);
+  CHECK(log.x1 > 11040);  // larger than A4 allows
+  RunResult x = run({"xmllint", "--noout", (disk.path() / "HULL.SVG").string()}, options);
+  CHECK(x.status == 0);
+  CHECK(x.err == "");
+}
+
+TEST_CASE("igds --tek 4014: 12-bit addresses, still read by tek2plot") {
+  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  TempDir disk;
+  RunResult r = run_session(disk, {"--term", "tek", "--tek", "4014"});
+  REQUIRE(r.status == 0);
+  write_file(disk.path() / "out.tek", r.out);
+  RunResult t = tek2plot(disk.path() / "out.tek");
+  CHECK(t.status == 0);
+  CHECK(t.err == "");
+  auto image = decode_tek(read_file(disk.path() / "HULL.TEK"), 12);
+  int largest = 0;
+  for (const auto& p : image.paths)
+    for (auto q : p) largest = std::max({largest, q.x, q.y});
+  CHECK(largest > 1023);
+  CHECK(contains(decode_tek(r.out, 12).paths, image.paths));
+}
+
+TEST_CASE("igds --term xterm and --plotter tty: the wrappings on the terminal") {
+  TempDir disk;
+  RunResult r = run_session(disk, {"--term", "xterm", "--plotter", "tty"});
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("\x1B[?38h\x1D") != std::string::npos);
+  CHECK(r.out.find("\x1F\x1B\x03") != std::string::npos);
+  CHECK(r.out.find("\x1B[?38h\x1B\x0C") != std::string::npos);  // ERASE
+  auto start = r.out.find("\x1B.(IN;SP1;");
+  REQUIRE(start != std::string::npos);
+  auto end = r.out.find("PU;SP0;\x1B.)", start);
+  REQUIRE(end != std::string::npos);
+  CHECK(r.out.substr(start + 3, end + 7 - start - 3) == read_file(disk.path() / "HULL.HPGL"));
+  CHECK(!std::filesystem::exists(disk.path() / "PLOT0001.HPGL"));
+}
+
+}  // namespace igds::test::devices

@@ -1,0 +1,288 @@
+// RESTORE, SAVE and WRITE with the real binary (manual 4.3, 4.6, 4.7; spec igds.md sections 3
+// and 5): the dialogue, every report, and what reaches the disk.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <regex>
+
+#include <fmt/format.h>
+
+#include "commands/command.h"
+#include "tests/support/process.h"
+#include "tests/workspace/disk_fixtures.h"
+#include "tests/workspace/small_disk.h"
+#include "workspace/disk/session.h"
+#include "workspace/report.h"
+
+using namespace igds;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const build_3x3 =
+    "BUILD\n3 3\n1 0 0 0 1 0 1 2 0 2\n4 0 1 0 1 1 1 2 1 1\n7 0 2 0 1 2 0 2 2 0\n\n1 1 0 0 1\n\n"
+    "1 1\n";
+
+// Runs igds on `disk` with `commands` as its command file.
+test::RunResult igds_on(const fs::path& disk, const std::string& commands) {
+  test::TempDir files;
+  test::write_file(files.path() / "commands.igds", commands);
+  return test::run_igds(
+      {"--disk", disk.string(), "--term", "none", (files.path() / "commands.igds").string()});
+}
+
+Workspace session_on(const fs::path& dir, std::vector<std::string>* notices = nullptr) {
+  Disk disk(dir);
+  Session session(disk);
+  Workspace ws = session.load();
+  if (notices) *notices = session.notices();
+  return ws;
+}
+
+bool has(const std::string& out, const std::string& part) {
+  return out.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("RESTORE, SAVE, WRITE: the dialogue and the reports") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir disk;
+
+  SUBCASE("no surface: INPUT NOT FOUND before any name is asked") {
+    auto r = igds_on(disk.path(), "SAVE\nSA HULL\nWRITE\nWRITE HULL\n");
+    CHECK(r.out ==
+          "READY\nSAVE\nINPUT NOT FOUND\nREADY\nSA HULL\nINPUT NOT FOUND\nREADY\nWRITE\nINPUT NOT "
+          "FOUND\nREADY\nWRITE HULL\nINPUT NOT FOUND\nREADY\n");
+  }
+  SUBCASE("names that are not CMS names, and files that are not there") {
+    auto r = igds_on(disk.path(),
+                     "RESTORE ../X\nRESTORE /tmp/X\nRESTORE A.B\nRESTORE TOOLONGNAME\nRESTORE "
+                     "CAF\xc3\xa9\nRESTORE A B\nRESTORE\n\nNONE\n");
+    CHECK(r.out ==
+          "READY\nRESTORE ../X\nINCORRECT PARAMETER\nREADY\nRESTORE /tmp/X\nINCORRECT "
+          "PARAMETER\nREADY\nRESTORE A.B\nINCORRECT PARAMETER\nREADY\nRESTORE TOOLONGNAME\n"
+          "INCORRECT PARAMETER\nREADY\nRESTORE CAF\xc3\xa9\nINCORRECT PARAMETER\nREADY\nRESTORE "
+          "A B\nINCORRECT PARAMETER\nREADY\nRESTORE\nFILE NAME?\nFILE NAME? NONE\nFILE NOT "
+          "FOUND\nREADY\n");
+    auto s = igds_on(disk.path(), std::string(build_3x3) + "SAVE ../X\nWRITE\nA.B\n");
+    CHECK(has(s.out, "SAVE ../X\nINCORRECT PARAMETER\nREADY\n"));
+    CHECK(has(s.out, "WRITE\nFILE NAME? A.B\nINCORRECT PARAMETER\nREADY\n"));
+    for (const auto& e : fs::directory_iterator(disk.path())) {
+      std::string name = e.path().filename().string();
+      CHECK((name == "BINSAVE.IGDSCONT" || name.ends_with(".IGDSVARS")));
+    }
+  }
+}
+
+TEST_CASE("SAVE then RESTORE with the binary: the surface back, images and STATUS kept") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir disk;
+  auto r = igds_on(disk.path(), std::string(build_3x3) + "SAVE hull\nWRITE\nhull\n");
+  CHECK(has(r.out, "SAVE hull\nREADY\nWRITE\nFILE NAME? hull\nREADY\n"));
+  CHECK(fs::exists(disk.path() / "HULL.IGDSDATA"));
+  CHECK(fs::exists(disk.path() / "HULL.IGDSCHAR"));
+  Workspace saved = session_on(disk.path());
+
+  auto c = igds_on(disk.path(),
+                   "CHANGE GRID 4 2\nDISPLAY SURFACE ORTHOGONAL XY\nSTORE FIRST\n"
+                   "HELP SHORT\n");
+  CHECK(c.status == 0);
+  Workspace changed = session_on(disk.path());
+  REQUIRE(changed.intcu == 4);
+  REQUIRE(changed.image);
+
+  auto back = igds_on(disk.path(), "RESTORE\nHULL\n");
+  CHECK(back.out == "READY\nRESTORE\nFILE NAME? HULL\nNOCUR 3 NOSTR 3 INTCU 1 INTST 1\nREADY\n");
+  Workspace restored = session_on(disk.path());
+  test::check_same_surface(restored, saved);
+  CHECK(test::same_bits(restored.image, changed.image));
+  CHECK(test::same_bits(restored.temp1, changed.temp1));
+  CHECK(restored.status == changed.status);
+}
+
+TEST_CASE("WRITE says how many values did not fit F10.3, and the file agrees") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir disk;
+  auto r =
+      igds_on(disk.path(), "BUILD\n2 2\n1 0 0 0 0 1 0 1 0 0 1 1 12345678\n\n\n1 1\nWRITE BIG\n");
+  std::smatch m;
+  REQUIRE(std::regex_search(r.out, m,
+                            std::regex("\n([0-9]+) VALUES DO NOT FIT F10.3: WRITTEN AS "
+                                       "\\*\\*\\*\\*\\*\\*\\*\\*\\*\\*\nREADY\n")));
+  std::string text = test::read_file(disk.path() / "BIG.IGDSCHAR");
+  std::size_t stars = 0;
+  for (std::size_t at = text.find("**********"); at != std::string::npos;
+       at = text.find("**********", at + 10))
+    ++stars;
+  CHECK(std::to_string(stars) == m[1].str());
+  CHECK(stars >= 2);  // INPPN and INTPN hold the point itself
+}
+
+TEST_CASE("a damaged file is reported word for word and the surface is kept") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir disk;
+  igds_on(disk.path(), std::string(build_3x3) + "SAVE HULL\nCHANGE GRID 2 2\n");
+  std::string good = test::read_file(disk.path() / "HULL.IGDSDATA");
+  std::string bad = good;
+  bad[bad.size() - 30] ^= 1;
+  test::rewrite_file(disk.path() / "HULL.IGDSDATA", bad);
+  Workspace before = session_on(disk.path());
+  auto r = igds_on(disk.path(), "RESTORE HULL\nRESTORE\nHULL\n");
+  CHECK(r.out ==
+        "READY\nRESTORE HULL\nFILE DAMAGED: HULL.IGDSDATA (CHECKSUM); CURRENT SURFACE KEPT\n"
+        "READY\nRESTORE\nFILE NAME? HULL\nFILE DAMAGED: HULL.IGDSDATA (CHECKSUM); CURRENT "
+        "SURFACE KEPT\nREADY\n");
+  test::check_same_workspace(session_on(disk.path()), before);
+  test::rewrite_file(disk.path() / "HULL.IGDSDATA", good.substr(0, good.size() / 2));
+  CHECK(has(igds_on(disk.path(), "RESTORE HULL\n").out,
+            "FILE DAMAGED: HULL.IGDSDATA (TRUNCATED); CURRENT SURFACE KEPT\n"));
+}
+
+TEST_CASE("a damaged session at start: said before READY, kept aside, igds goes on") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir disk;
+  igds_on(disk.path(), build_3x3);
+  std::string good = test::read_file(disk.path() / "BINSAVE.IGDSCONT");
+  test::rewrite_file(disk.path() / "BINSAVE.IGDSCONT", good.substr(0, good.size() - 3));
+  auto r = igds_on(disk.path(), "SAVE HULL\n");
+  CHECK(r.status == 0);
+  CHECK(r.out ==
+        "SESSION FILE BINSAVE.IGDSCONT DAMAGED (TRUNCATED): KEPT AS BINSAVE.IGDSBAD; THE "
+        "WORKSPACE STARTS EMPTY\nREADY\nSAVE HULL\nINPUT NOT FOUND\nREADY\n");
+  CHECK(test::read_file(disk.path() / "BINSAVE.IGDSBAD") == good.substr(0, good.size() - 3));
+  // The next start is quiet again.
+  CHECK(igds_on(disk.path(), "").out == "READY\n");
+}
+
+TEST_CASE("a disk that fills up: the command's report, and the last session kept") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir scratch;
+  test::SmallDisk small(scratch.path() / "disk", 96);
+  if (!small.mounted()) {
+    MESSAGE("cannot mount a tmpfs here (not root?): the unit tests simulate a full disk instead");
+    return;
+  }
+  igds_on(small.path(), build_3x3);
+  Workspace before = session_on(small.path());
+  auto r = igds_on(small.path(), "CHANGE GRID 40 40\nSAVE HULL\n");
+  CHECK(has(r.out,
+            "CHANGE GRID 40 40\nCANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON "
+            "DEVICE); THE LAST SAVED SESSION IS KEPT\nREADY\n"));
+  CHECK(has(r.out,
+            "SAVE HULL\nCANNOT WRITE HULL.IGDSDATA (NO SPACE LEFT ON DEVICE); NO FILE CHANGED\n"));
+  test::check_same_workspace(session_on(small.path()), before);
+  for (const auto& e : fs::directory_iterator(small.path()))
+    CHECK(!e.path().filename().string().ends_with(".IGDSTEMP"));
+}
+
+TEST_CASE("a disk that is not there") {
+  if (!fs::exists(test::igds_binary())) {
+    MESSAGE("the igds binary is not built: skipped");
+    return;
+  }
+  test::TempDir scratch;
+  auto r = test::run_igds({"--disk", (scratch.path() / "none").string(), "--term", "none"});
+  CHECK(r.status == 1);
+  CHECK(r.err == fmt::format("DISK {} NOT FOUND\n", (scratch.path() / "none").string()));
+  CHECK(fs::is_empty(scratch.path()));
+}
+
+namespace {
+
+// A Context with no terminal: replies come from a list, what is said is collected.
+class ScriptedContext : public Context {
+ public:
+  ScriptedContext(const Disk& disk, Workspace ws, std::vector<std::vector<std::string>> replies)
+      : disk_(disk), ws_(std::move(ws)), replies_(std::move(replies)) {}
+  Workspace& workspace() override { return ws_; }
+  const Options& options() const override { return options_; }
+  const Disk& disk() const override { return disk_; }
+  std::vector<std::string> ask(const Prompt& prompt) override {
+    asked.emplace_back(prompt.text);
+    if (replies_.empty()) throw EndOfInput{};
+    auto words = replies_.front();
+    replies_.erase(replies_.begin());
+    return words;
+  }
+  void unread(std::vector<std::string> words) override {
+    replies_.insert(replies_.begin(), std::move(words));
+  }
+  bool has_pending() const override { return false; }
+  void say(std::string_view line) override { said.emplace_back(line); }
+  void report(std::string_view text) override { said.emplace_back(text); }
+  void show(const Image&) override {}
+  void erase() override {}
+  void send_to_terminal(std::string_view) override {}
+  void end_session(bool) override {}
+
+  std::vector<std::string> asked, said;
+
+ private:
+  const Disk& disk_;
+  Options options_;
+  Workspace ws_;
+  std::vector<std::vector<std::string>> replies_;
+};
+
+}  // namespace
+
+namespace igds {
+extern const Command restore_command, save_command, write_command;
+}  // namespace igds
+
+TEST_CASE("the commands through the Context alone") {
+  test::TempDir dir;
+  Disk disk(dir.path());
+  Workspace ws = test::make_workspace(2, 2, 1, 0, false);
+  for (double& v : ws.inppn.ravel) v = 1;
+  for (double& v : ws.inptg.ravel) v = 1;
+  for (double& v : ws.patches.ravel) v = 1;
+  for (double& v : ws.intpn.ravel) v = 1;
+  ws.intpn.ravel[4] = -123456.5;  // the only value too wide for F10.3
+
+  ScriptedContext write(disk, ws, {{}, {"one"}});
+  write_command.run(write, -1);
+  CHECK(write.asked == std::vector<std::string>{"FILE NAME?", "FILE NAME?"});
+  CHECK(write.said ==
+        std::vector<std::string>{"1 VALUE DOES NOT FIT F10.3: WRITTEN AS **********"});
+  CHECK(fs::exists(dir.path() / "ONE.IGDSCHAR"));
+
+  ScriptedContext save(disk, ws, {{"keep"}});
+  save_command.run(save, -1);
+  CHECK(save.said.empty());
+
+  ScriptedContext restore(disk, Workspace{}, {{"KEEP"}});
+  restore_command.run(restore, -1);
+  CHECK(restore.said == std::vector<std::string>{"NOCUR 2 NOSTR 2 INTCU 1 INTST 0"});
+  test::check_same_surface(restore.workspace(), ws);
+
+  ScriptedContext two(disk, ws, {{"A", "B"}});
+  CHECK_THROWS_WITH_AS(save_command.run(two, -1), "INCORRECT PARAMETER", Report);
+  ScriptedContext empty(disk, Workspace{}, {{"X"}});
+  CHECK_THROWS_WITH_AS(write_command.run(empty, -1), "INPUT NOT FOUND", Report);
+  CHECK(empty.asked.empty());
+  // Ctrl-D at the prompt: the command ends, nothing written.
+  ScriptedContext ended(disk, ws, {});
+  CHECK_THROWS_AS(save_command.run(ended, -1), EndOfInput);
+  CHECK(restore_command.short_help.size() < 160);
+  CHECK(!save_command.long_help.empty());
+}

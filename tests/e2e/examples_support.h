@@ -1,0 +1,61 @@
+// Support for the end-to-end tests of the examples, the README and the xterm session: the example
+// command files, expected transcripts, and a decoder of 4013 streams that says what igds drew.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace igds::test {
+
+// One command file of scripts/examples/.
+struct Example {
+  std::string name;            // "fig3-tangents"
+  std::filesystem::path file;  // .../scripts/examples/fig3-tangents.igds
+  int picture_page = -1;       // its header's "picture: page N" (tek2plot --page-number N)
+};
+
+// Every scripts/examples/*.igds, sorted by name.
+std::vector<Example> examples();
+
+// The lines of a command file as igds reads them: comment lines (first non-blank `*` or `⍝`)
+// dropped and the rest of a line after `⍝` cut off, trailing blanks removed.
+std::vector<std::string> command_lines(std::string_view file_text);
+
+// Compares `actual` with tests/e2e/expected/`file`. Returns "" when they are equal, else a short
+// account of the first difference. With IGDS_UPDATE_GOLDEN=1 in the environment the file is
+// rewritten instead, a diff summary is printed, and "" is returned.
+std::string compare_expected(const std::string& file, const std::string& actual);
+
+// `text` with every occurrence of the disk's path replaced by <DISK>.
+std::string without_disk(std::string text, const std::filesystem::path& disk);
+
+// What a 4013 stream draws, in 4013 points (10-bit addresses; 12-bit ones are divided by 4).
+struct TekPoint {
+  double x = 0, y = 0;
+};
+struct TekSegment {
+  TekPoint a, b;  // a == b: a point (FS point plot)
+};
+struct TekText {
+  TekPoint at;  // the baseline-left of the first character
+  std::string text;
+};
+struct TekPage {
+  std::vector<TekSegment> segments;
+  std::vector<TekText> texts;
+};
+struct TekDrawing {
+  std::vector<TekPage> pages;       // split at every ESC FF, as tek2plot --page-number counts
+  std::vector<std::string> errors;  // bytes a 4013 would not accept where they are
+};
+
+// Decodes a 4013 stream: GS/FS/US modes, shortened addresses (10 or 12 bits), ESC FF pages,
+// alpha text with CR/LF (4013 cell: 14 x 22 points, home at the top left).
+TekDrawing decode_tek(std::string_view stream);
+
+// The shortest distance from `p` to the segment.
+double distance(TekPoint p, const TekSegment& s);
+
+}  // namespace igds::test

@@ -1,0 +1,109 @@
+// igds at a terminal (a pseudo-terminal): Readline, abbreviations, HELP at an entry prompt,
+// INCORRECT ENTRY, Ctrl-C in the middle of BUILD, completion, the disk's lock, Ctrl-D, and the
+// session and history coming back at the next start.
+#include <doctest/doctest.h>
+
+#include "tests/e2e/e2e_support.h"
+#include "tests/support/process.h"
+#include "tests/support/pty.h"
+
+namespace igds::test {
+
+namespace {
+
+std::map<std::string, std::string> terminal_env(const TempDir& home) {
+  return {{"TERM", "dumb"},
+          {"INPUTRC", "/dev/null"},
+          {"HOME", home.path().string()},
+          {"XTERM_VERSION", ""},
+          {"IGDS_DISK", ""}};
+}
+
+}  // namespace
+
+TEST_CASE("an interactive session through a pseudo-terminal") {
+  TempDir disk, home;
+  const std::vector<std::string> argv{igds_binary().string(), "--term", "none", "--disk",
+                                      disk.path().string()};
+  {
+    PtySession igds(argv, terminal_env(home));
+    REQUIRE(igds.expect("READY"));
+    igds.send("b\r");  // BUILD
+    REQUIRE(igds.expect("NUMBER OF CURVES AND STRINGERS?"));
+    igds.send("2 2\r");
+    REQUIRE(igds.expect("POINTS?"));
+    igds.send("h s\r");  // HELP SHORT at a point entry, then the same prompt again
+    REQUIRE(igds.expect("A point number k and x y z"));
+    REQUIRE(igds.expect("POINTS?"));
+    igds.send("1 0 0\r");
+    REQUIRE(igds.expect("INCORRECT ENTRY"));
+    REQUIRE(igds.expect("POINTS?"));
+    igds.send("1 0 0 0  0 10 0  10 0 0  10 10 5\r");
+    REQUIRE(igds.expect("POINTS?"));
+    igds.send("\r");
+    REQUIRE(igds.expect("TANGENTS?"));
+    igds.send("\r");
+    REQUIRE(igds.expect("INTERPOLATED CURVES AND STRINGERS?"));
+    igds.send("3 3\r");
+    REQUIRE(igds.expect("READY"));
+
+    // Ctrl-C in the middle of a second BUILD: the first surface stays.
+    igds.send("BU\r");
+    REQUIRE(igds.expect("NUMBER OF CURVES AND STRINGERS?"));
+    igds.send("4 4\r");
+    REQUIRE(igds.expect("POINTS?"));
+    igds.send("1 1 1 1");
+    igds.send("\x03");
+    REQUIRE(igds.expect("READY"));
+
+    // TAB completes commands and options.
+    igds.send("DI\tSU\tO XY\r");
+    REQUIRE(igds.expect("DISPLAY SURFACE O XY"));
+    REQUIRE(igds.expect("IMAGE: SURFACE, ORTHOGONAL XY"));
+    REQUIRE(igds.expect("READY"));
+
+    // Only one igds per disk.
+    auto second =
+        run_igds({"--term", "none", "--disk", disk.path().string()}, with_input("END CMS\n"));
+    CHECK(second.status == 1);
+    CHECK_FALSE(second.err.empty());
+
+    igds.send("e c\r");  // END CMS
+    CHECK(igds.wait() == 0);
+  }
+  {
+    PtySession igds(argv, terminal_env(home));
+    REQUIRE(igds.expect("READY"));
+    // The history of the first session is there: Ctrl-P brings back its last line.
+    igds.send("\x10");
+    CHECK(igds.expect("e c"));
+    igds.send("\x15");  // Ctrl-U: forget it
+    igds.send("END APL\r");
+    REQUIRE(igds.expect("      "));
+    igds.send("NOCUR\r");
+    CHECK(igds.expect("\n2\r\n"));
+    igds.send("\xE2\x8D\xB4INTPN\r");  // ⍴INTPN
+    CHECK(igds.expect("\n5 5 3\r\n"));
+    igds.send("START\r");
+    REQUIRE(igds.expect("READY"));
+    igds.send("\x04");  // Ctrl-D at READY is END
+    CHECK(igds.wait() == 0);
+  }
+  const std::string history = read_file(disk.path() / "HISTORY.IGDSHIST");
+  CHECK(history.find("1 0 0 0  0 10 0  10 0 0  10 10 5") != std::string::npos);
+  CHECK(history.find("END APL") != std::string::npos);
+}
+
+TEST_CASE("Ctrl-D in the middle of a command abandons it and ends the session") {
+  TempDir disk, home;
+  PtySession igds({igds_binary().string(), "--term", "none", "--disk", disk.path().string()},
+                  terminal_env(home));
+  REQUIRE(igds.expect("READY"));
+  igds.send("BUILD\r");
+  REQUIRE(igds.expect("NUMBER OF CURVES AND STRINGERS?"));
+  igds.send("\x04");
+  CHECK(igds.expect("END OF INPUT: BUILD ABANDONED"));
+  CHECK(igds.wait() == 0);
+}
+
+}  // namespace igds::test

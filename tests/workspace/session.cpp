@@ -1,0 +1,479 @@
+// The session on the disk: BINSAVE.IGDSCONT saved after every change, loaded at start; never
+// half-loaded; only what changed is rewritten; one igds per disk.
+#include "workspace/disk/session.h"
+
+#include <doctest/doctest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "tests/support/process.h"
+#include "tests/workspace/disk_fixtures.h"
+#include "tests/workspace/small_disk.h"
+#include "workspace/disk/format.h"
+#include "workspace/report.h"
+
+using namespace igds;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::set<std::string> files_in(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+std::set<std::string> files_of_type(const fs::path& dir, std::string_view type) {
+  std::set<std::string> names;
+  for (const auto& n : files_in(dir))
+    if (n.ends_with(type)) names.insert(n);
+  return names;
+}
+
+// Inode numbers of the session's variable files: a file rewritten would get a new one.
+std::map<std::string, ino_t> variable_files(const fs::path& dir) {
+  std::map<std::string, ino_t> files;
+  for (const auto& n : files_of_type(dir, ".IGDSVARS")) {
+    struct stat st;
+    REQUIRE(::stat((dir / n).c_str(), &st) == 0);
+    files[n] = st.st_ino;
+  }
+  return files;
+}
+
+// Bytes this process has handed to write(2) so far (Linux /proc/self/io).
+std::size_t bytes_written_so_far() {
+  std::ifstream io("/proc/self/io");
+  std::string key;
+  std::size_t value = 0;
+  while (io >> key >> value)
+    if (key == "wchar:") return value;
+  return 0;
+}
+
+Workspace load_fresh(const Disk& disk, std::vector<std::string>* notices = nullptr) {
+  Session session(disk);
+  Workspace ws = session.load();
+  if (notices) *notices = session.notices();
+  return ws;
+}
+
+std::string report_of(auto&& f) {
+  try {
+    f();
+  } catch (const Report& r) {
+    return r.what();
+  }
+  return "(no report)";
+}
+
+struct Scratch {
+  test::TempDir dir;
+  Disk disk{dir.path()};
+  fs::path session() const { return disk.path("BINSAVE", "IGDSCONT"); }
+};
+
+}  // namespace
+
+TEST_CASE("the very first session starts empty and quietly") {
+  Scratch s;
+  std::vector<std::string> notices;
+  CHECK(load_fresh(s.disk, &notices) == Workspace{});
+  CHECK(notices.empty());
+  // A clean end leaves nothing behind when nothing was saved.
+  CHECK(fs::is_empty(s.dir.path()));
+}
+
+TEST_CASE("a saved session is loaded bit for bit, every variable") {
+  Scratch s;
+  Workspace ws = test::make_workspace(4, 5, 3, 2);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  std::vector<std::string> notices;
+  Workspace back = load_fresh(s.disk, &notices);
+  test::check_same_workspace(back, ws);
+  CHECK(notices.empty());
+  // The disk holds the session and the files of its large variables; no lock, no temporary.
+  for (const auto& n : files_in(s.dir.path()))
+    CHECK((n == "BINSAVE.IGDSCONT" || n.ends_with(".IGDSVARS")));
+
+  SUBCASE("and the empty session after it too") {
+    {
+      Session session(s.disk);
+      session.load();
+      session.save(Workspace{});
+    }
+    test::check_same_workspace(load_fresh(s.disk), Workspace{});
+    CHECK(files_in(s.dir.path()) == std::set<std::string>{"BINSAVE.IGDSCONT"});
+  }
+}
+
+TEST_CASE("a save rewrites only what changed") {
+  Scratch s;
+  Workspace ws = test::make_workspace(10, 10, 10, 10);  // INTPN 100 x 100 x 3, three images
+  ws.intpn.ravel[17] = 0.0;
+  std::optional<Session> open(std::in_place, s.disk);
+  Session& session = *open;
+  session.load();
+  session.save(ws);
+  auto before = variable_files(s.dir.path());
+  CHECK(before.size() == 6);  // all but TEMP2, which is small
+
+  SUBCASE("STATUS only: the small session file alone") {
+    ws.status[0] = 0;
+    std::size_t w0 = bytes_written_so_far();
+    session.save(ws);
+    std::size_t written = bytes_written_so_far() - w0;
+    CHECK(written < 4096);
+    CHECK(variable_files(s.dir.path()) == before);
+    CHECK(fs::file_size(s.session()) < 4096);
+  }
+  SUBCASE("nothing: nothing written at all") {
+    std::size_t w0 = bytes_written_so_far();
+    session.save(ws);
+    CHECK(bytes_written_so_far() - w0 == 0);
+  }
+  SUBCASE("INTPN: one new file, the old one gone, the others untouched") {
+    ws.intpn.ravel[17] = -0.0;  // was 0.0: only the bits tell
+    REQUIRE(ws.intpn.ravel[17] == 0.0);
+    session.save(ws);
+    auto after = variable_files(s.dir.path());
+    CHECK(after.size() == 6);
+    std::size_t same = 0;
+    for (const auto& [name, inode] : after) same += before.count(name) && before[name] == inode;
+    CHECK(same == 5);
+  }
+  SUBCASE("an image removed") {
+    ws.temp1.reset();
+    session.save(ws);
+    CHECK(variable_files(s.dir.path()).size() == 5);
+  }
+  open.reset();  // a second look at the disk needs the lock
+  std::vector<std::string> notices;
+  test::check_same_workspace(load_fresh(s.disk, &notices), ws);
+  CHECK_MESSAGE(notices.empty(), fmt::format("{}", fmt::join(notices, "\n")));
+}
+
+TEST_CASE("a damaged session is never half-loaded: kept aside, empty start, notice") {
+  Scratch s;
+  Workspace big = test::make_workspace(5, 5, 4, 4);  // INTPN, PATCHES, IMAGE in files
+  Workspace small = test::make_workspace(2, 2, 0, 0, false);
+  auto save = [&](const Workspace& ws) {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  };
+  auto expect_empty_start = [&](const std::string& reason, const std::string& kept) {
+    std::vector<std::string> notices;
+    Workspace ws = load_fresh(s.disk, &notices);
+    CHECK(ws == Workspace{});
+    REQUIRE(notices.size() == 1);
+    CHECK(notices[0] == fmt::format("SESSION FILE BINSAVE.IGDSCONT {}: KEPT AS {}; THE WORKSPACE "
+                                    "STARTS EMPTY",
+                                    reason, kept));
+    CHECK(!fs::exists(s.session()));
+    CHECK(files_of_type(s.dir.path(), ".IGDSVARS").empty());
+  };
+
+  SUBCASE("truncated at every length, with the bad file kept each time") {
+    save(small);
+    const std::string good = test::read_file(s.session());
+    CHECK(files_of_type(s.dir.path(), ".IGDSVARS").empty());  // all in the session file
+    for (std::size_t n = 0; n < good.size(); ++n) {
+      CAPTURE(n);
+      test::rewrite_file(s.session(), good.substr(0, n));
+      std::vector<std::string> notices;
+      CHECK(load_fresh(s.disk, &notices) == Workspace{});
+      REQUIRE(notices.size() == 1);
+      CHECK(notices[0].starts_with(n == 0 ? "SESSION FILE BINSAVE.IGDSCONT DAMAGED (EMPTY FILE)"
+                                          : "SESSION FILE BINSAVE.IGDSCONT DAMAGED (TRUNCATED)"));
+      CHECK(!fs::exists(s.session()));
+      if (n >= 2) fs::remove(s.disk.path("BINSAVE2", "IGDSBAD"));
+    }
+    // None overwritten: the first bad file, the second under the next free name.
+    CHECK(test::read_file(s.disk.path("BINSAVE", "IGDSBAD")) == "");
+    CHECK(test::read_file(s.disk.path("BINSAVE1", "IGDSBAD")) == good.substr(0, 1));
+    CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 2);
+  }
+  SUBCASE("every byte changed") {
+    save(small);
+    const std::string good = test::read_file(s.session());
+    for (std::size_t i = 0; i < good.size(); ++i) {
+      std::string b = good;
+      b[i] = static_cast<char>(b[i] ^ 0x20);
+      test::rewrite_file(s.session(), b);
+      std::vector<std::string> notices;
+      CHECK(load_fresh(s.disk, &notices) == Workspace{});
+      CHECK(notices.size() == 1);
+      for (const auto& bad : files_of_type(s.dir.path(), ".IGDSBAD"))
+        fs::remove(s.dir.path() / bad);
+    }
+  }
+  SUBCASE("the reasons") {
+    save(small);
+    std::string good = test::read_file(s.session());
+    std::string b = good;
+    b[good.size() - 12] ^= 1;
+    test::rewrite_file(s.session(), b);
+    expect_empty_start("DAMAGED (CHECKSUM)", "BINSAVE.IGDSBAD");
+    CHECK(test::read_file(s.disk.path("BINSAVE", "IGDSBAD")) == b);
+
+    test::rewrite_file(s.session(), "READY\n");
+    expect_empty_start("DAMAGED (NOT AN IGDSCONT FILE)", "BINSAVE1.IGDSBAD");
+    b = good;
+    b[8] = 7;  // version 7
+    test::rewrite_file(s.session(), b);
+    expect_empty_start("DAMAGED (FORMAT VERSION 7 OF A NEWER IGDS)", "BINSAVE2.IGDSBAD");
+    fs::create_directory(s.session());
+    expect_empty_start("CANNOT BE READ (IS A DIRECTORY)", "BINSAVE3.IGDSBAD");
+    CHECK(fs::is_directory(s.disk.path("BINSAVE3", "IGDSBAD")));
+  }
+  SUBCASE("a variable file missing or damaged: the files go aside together") {
+    save(big);
+    auto vars = files_of_type(s.dir.path(), ".IGDSVARS");
+    REQUIRE(vars.size() == 3);
+    std::string first = *vars.begin();
+    SUBCASE("missing") {
+      fs::remove(s.dir.path() / first);
+      expect_empty_start(fmt::format("DAMAGED ({} MISSING)", first), "BINSAVE.IGDSBAD");
+      CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 3);
+    }
+    SUBCASE("damaged") {
+      std::string b = test::read_file(s.dir.path() / first);
+      b[100] ^= 8;
+      test::rewrite_file(s.dir.path() / first, b);
+      expect_empty_start(fmt::format("DAMAGED ({}: CHECKSUM)", first), "BINSAVE.IGDSBAD");
+      CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 4);
+      CHECK(test::read_file(s.dir.path() / (first.substr(0, 8) + ".IGDSBAD")) == b);
+    }
+    SUBCASE("another good one in its place") {
+      std::string other = *std::next(vars.begin());
+      fs::copy_file(s.dir.path() / other, s.dir.path() / first,
+                    fs::copy_options::overwrite_existing);
+      expect_empty_start(fmt::format("DAMAGED ({}: NOT THE ONE SAVED)", first), "BINSAVE.IGDSBAD");
+    }
+  }
+  // Whatever happened, the next session saves and loads normally.
+  save(big);
+  test::check_same_workspace(load_fresh(s.disk), big);
+}
+
+TEST_CASE("a disk that refuses the session: report, and the last saved session stays") {
+  Scratch s;
+  Workspace first = test::make_workspace(3, 3, 4, 4);
+  Workspace second = test::make_workspace(6, 6, 6, 6);
+  second.status[3] = 3;
+  std::size_t total = 0;  // what saving `second` writes over `first`
+  {
+    Scratch dry;
+    Session session(dry.disk);
+    session.save(first);
+    std::size_t w0 = bytes_written_so_far();
+    session.save(second);
+    total = bytes_written_so_far() - w0;
+  }
+  REQUIRE(total > 50000);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(first);
+    const auto files = files_in(s.dir.path());
+    for (std::size_t limit :
+         {std::size_t(0), std::size_t(1), total / 4, total / 2, total - 200, total - 1}) {
+      CAPTURE(limit);
+      disk::set_write_limit_for_testing(limit);
+      std::string r = report_of([&] { session.save(second); });
+      disk::set_write_limit_for_testing(std::nullopt);
+      CHECK(r ==
+            "CANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON DEVICE); THE LAST "
+            "SAVED SESSION IS KEPT");
+      CHECK(files_in(s.dir.path()) == files);
+    }
+    // A STATUS-only change after the failures is still saved completely.
+    second.status[4] = 4;
+    session.save(second);
+  }
+  test::check_same_workspace(load_fresh(s.disk), second);
+}
+
+TEST_CASE("a really full disk (tmpfs; needs the right to mount)") {
+  test::TempDir dir;
+  test::SmallDisk small(dir.path() / "disk", 200);
+  if (!small.mounted()) {
+    MESSAGE("cannot mount a tmpfs here (not root?): the simulated full disk above stands in");
+    return;
+  }
+  Disk disk(small.path());
+  Workspace first = test::make_workspace(3, 3, 4, 4);
+  Workspace big = test::make_workspace(10, 10, 10, 10);  // about 500 KB in all
+  {
+    Session session(disk);
+    session.load();
+    session.save(first);
+    CHECK(report_of([&] { session.save(big); }) ==
+          "CANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON DEVICE); THE LAST "
+          "SAVED SESSION IS KEPT");
+  }
+  test::check_same_workspace(load_fresh(disk), first);
+  for (const auto& n : files_in(small.path()))
+    CHECK((n == "BINSAVE.IGDSCONT" || n.ends_with(".IGDSVARS")));
+}
+
+TEST_CASE("what a crash leaves behind is cleared at start, and nothing else") {
+  Scratch s;
+  Workspace ws = test::make_workspace(3, 3, 4, 4);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  auto kept = files_in(s.dir.path());
+  test::rewrite_file(s.dir.path() / "BINSAVE.IGDSCONT.IGDSTEMP", "half");
+  test::rewrite_file(s.dir.path() / "B0000FFF.IGDSVARS", "written before a crash");
+  test::rewrite_file(s.dir.path() / "HULL.IGDSDATA", "a user's file");
+  test::rewrite_file(s.dir.path() / "notes.txt", "not ours");
+  test::check_same_workspace(load_fresh(s.disk), ws);
+  kept.insert("HULL.IGDSDATA");
+  kept.insert("notes.txt");
+  CHECK(files_in(s.dir.path()) == kept);
+}
+
+TEST_CASE("one session per disk") {
+  Scratch s;
+  auto in_use_by = [&](pid_t pid) {
+    return fmt::format("DISK {} IN USE BY IGDS PROCESS {}", s.dir.path().string(), pid);
+  };
+  SUBCASE("two in one process") {
+    Session first(s.disk);
+    CHECK_THROWS_WITH_AS(Session{s.disk}, in_use_by(::getpid()).c_str(), Report);
+    CHECK(first.notices().empty());
+  }
+  SUBCASE("after a clean end the next one starts quietly") {
+    { Session first(s.disk); }
+    Session second(s.disk);
+    CHECK(second.notices().empty());
+  }
+  SUBCASE("another process holds it, then is killed -9: taken over with a notice") {
+    int ready[2];
+    REQUIRE(::pipe(ready) == 0);
+    pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+      try {
+        Session session(s.disk);
+        session.save(test::make_workspace(2, 2, 1, 1));
+        char c = 'y';
+        if (::write(ready[1], &c, 1) != 1) ::_exit(2);
+        for (;;) ::pause();
+      } catch (...) {
+        ::_exit(1);
+      }
+    }
+    ::close(ready[1]);
+    char c = 0;
+    REQUIRE(::read(ready[0], &c, 1) == 1);
+    ::close(ready[0]);
+    auto files = files_in(s.dir.path());
+    CHECK_THROWS_WITH_AS(Session{s.disk}, in_use_by(child).c_str(), Report);
+    CHECK(files_in(s.dir.path()) == files);  // the refused one touched nothing
+    ::kill(child, SIGKILL);
+    ::waitpid(child, nullptr, 0);
+    Session taken(s.disk);
+    REQUIRE(taken.notices().size() == 1);
+    CHECK(taken.notices()[0] ==
+          fmt::format("DISK LOCK LEFT BY IGDS PROCESS {}, WHICH HAS ENDED, TAKEN OVER", child));
+    test::check_same_workspace(taken.load(), test::make_workspace(2, 2, 1, 1));
+  }
+  SUBCASE("a disk where no lock can be made") {
+    fs::create_directory(s.disk.path("BINSAVE", "IGDSLOCK"));
+    CHECK_THROWS_WITH_AS(
+        Session{s.disk},
+        fmt::format("DISK {} CANNOT BE LOCKED (IS A DIRECTORY)", s.dir.path().string()).c_str(),
+        Report);
+  }
+}
+
+TEST_CASE("the session holds whatever the workspace held, even what RESTORE would refuse") {
+  Scratch s;
+  Workspace odd = test::make_workspace(2, 2, 1, 1);
+  odd.nocur = 7;  // shapes that do not agree with NOCUR
+  odd.image->desim.what = 5;
+  odd.temp1->desim.projection = static_cast<Projection>(0);
+  {
+    Session session(s.disk);
+    session.save(odd);
+  }
+  std::vector<std::string> notices;
+  test::check_same_workspace(load_fresh(s.disk, &notices), odd);
+  CHECK(notices.empty());
+}
+
+TEST_CASE("a read-only disk cannot hold a session: said at once (tmpfs; needs mount)") {
+  test::TempDir dir;
+  test::SmallDisk small(dir.path() / "disk", 64);
+  if (!small.mounted() || !small.make_read_only()) {
+    MESSAGE("cannot mount a read-only tmpfs here: skipped");
+    return;
+  }
+  Disk disk(small.path());
+  CHECK_THROWS_WITH_AS(
+      Session{disk},
+      fmt::format("DISK {} CANNOT BE LOCKED (READ-ONLY FILE SYSTEM)", small.path().string())
+          .c_str(),
+      Report);
+}
+
+TEST_CASE("lock files that say nothing useful") {
+  Scratch s;
+  const fs::path lock = s.disk.path("BINSAVE", "IGDSLOCK");
+  SUBCASE("left with something that is not a process number") {
+    test::write_file(lock, "garbage\n");
+    Session session(s.disk);
+    REQUIRE(session.notices().size() == 1);
+    CHECK(session.notices()[0] == "DISK LOCK LEFT BY AN IGDS THAT HAS ENDED, TAKEN OVER");
+  }
+  SUBCASE("held, but without a process number in it") {
+    test::write_file(lock, "");
+    int fd = ::open(lock.c_str(), O_RDWR);
+    REQUIRE(fd >= 0);
+    REQUIRE(::flock(fd, LOCK_EX) == 0);
+    CHECK_THROWS_WITH_AS(
+        Session{s.disk},
+        fmt::format("DISK {} IN USE BY ANOTHER IGDS PROCESS", s.dir.path().string()).c_str(),
+        Report);
+    ::close(fd);
+  }
+}
+
+TEST_CASE("a bad session that cannot even be put aside stays where it is (needs mount)") {
+  Scratch s;
+  // A mount point cannot be renamed: the session "file" is a folder with a tmpfs on it.
+  test::SmallDisk in_the_way(s.session(), 16);
+  if (!in_the_way.mounted()) {
+    MESSAGE("cannot mount a tmpfs here: skipped");
+    return;
+  }
+  test::write_file(s.dir.path() / "B0000001.IGDSVARS", "a variable of the bad session");
+  std::vector<std::string> notices;
+  CHECK(load_fresh(s.disk, &notices) == Workspace{});
+  REQUIRE(notices.size() == 1);
+  CHECK(notices[0] ==
+        "SESSION FILE BINSAVE.IGDSCONT CANNOT BE READ (IS A DIRECTORY): NOT KEPT ASIDE (DEVICE OR "
+        "RESOURCE BUSY); THE WORKSPACE STARTS EMPTY");
+  CHECK(fs::exists(s.dir.path() / "B0000001.IGDSVARS"));
+}

@@ -1,0 +1,35 @@
+// An APL array: a ravel of doubles in row-major order and its shape (IGDS manual, section 7).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace igds {
+
+struct Array {
+  std::vector<std::size_t> shape;
+  std::vector<double> ravel;
+
+  Array() = default;
+  // A zero-filled array of the given shape.
+  explicit Array(std::vector<std::size_t> s) : shape(std::move(s)), ravel(count(shape), 0.0) {}
+
+  static std::size_t count(const std::vector<std::size_t>& s) {
+    std::size_t n = 1;
+    for (auto d : s) n *= d;
+    return s.empty() ? 0 : n;
+  }
+  std::size_t rank() const { return shape.size(); }
+  std::size_t size() const { return ravel.size(); }
+  bool empty() const { return ravel.empty(); }
+  double* data() { return ravel.data(); }
+  const double* data() const { return ravel.data(); }
+  std::span<double> span() { return ravel; }
+  std::span<const double> span() const { return ravel; }
+
+  friend bool operator==(const Array&, const Array&) = default;
+};
+
+}  // namespace igds

@@ -1,0 +1,83 @@
+#include "workspace/kernels/coons.h"
+
+#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
+#include "workspace/kernels/spline.h"
+
+namespace igds {
+
+Vec3 border_tangent(const Array& inptg, std::size_t row) {
+  const double* r = inptg.data() + 4 * row;
+  return {r[0], r[1], r[2]};
+}
+
+GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, const Array& inptg) {
+  const std::size_t nc = nocur, ns = nostr;
+  GridTangents t;
+  t.along_curves.resize(nc * ns);
+  t.along_stringers.resize(nc * ns);
+  // INPTG rows (workspace/state.h): curve i's ends at 2i and 2i+1.
+  auto curves = [&] {
+    SplineScratch scratch;
+    for (std::size_t i = 0; i < nc; ++i) {
+      spline_tangents(points.subspan(i * ns, ns), border_tangent(inptg, 2 * i),
+                      border_tangent(inptg, 2 * i + 1),
+                      std::span<Vec3>(t.along_curves).subspan(i * ns, ns), scratch);
+    }
+  };
+  // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1.
+  auto stringers = [&] {
+    SplineScratch scratch;
+    std::vector<Vec3> column(nc), column_tangents(nc);
+    for (std::size_t j = 0; j < ns; ++j) {
+      for (std::size_t i = 0; i < nc; ++i) column[i] = points[i * ns + j];
+      spline_tangents(column, border_tangent(inptg, 2 * nc + 2 * j),
+                      border_tangent(inptg, 2 * nc + 2 * j + 1), column_tangents, scratch);
+      for (std::size_t i = 0; i < nc; ++i) t.along_stringers[i * ns + j] = column_tangents[i];
+    }
+  };
+  // The two families are independent: one thread each when the grid is large.
+  parallel_for(2, threads_for(nc * ns * 12) > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t task = first; task < last; ++task) task == 0 ? curves() : stringers();
+  });
+  return t;
+}
+
+void coons_patches(int nocur, int nostr, std::span<const Vec3> points, const GridTangents& tangents,
+                   Array& patches) {
+  const std::size_t nc = nocur, ns = nostr;
+  const std::size_t count = (nc - 1) * (ns - 1) * 48;
+  reuse_for_output(patches, {nc - 1, ns - 1, 3, 4, 4}, threads_for(count));
+  const auto& tu = tangents.along_curves;
+  const auto& tv = tangents.along_stringers;
+  auto patch_rows = [&](std::size_t first, std::size_t last) {
+    double* m = patches.data() + first * (ns - 1) * 48;
+    for (std::size_t i = first; i < last; ++i) {
+      for (std::size_t j = 0; j + 1 < ns; ++j, m += 48) {
+        const std::size_t k00 = i * ns + j, k10 = k00 + 1, k01 = k00 + ns, k11 = k01 + 1;
+        // P(a,b) = P[i+b][j+a]; Pu(a,b) is scaled by the chord of curve i+b's arc j, Pv(a,b) by
+        // the chord of stringer j+a's arc i (math.md), the same chords the splines used.
+        const double lu0 = chord_length(points[k00], points[k10]);
+        const double lu1 = chord_length(points[k01], points[k11]);
+        const double lv0 = chord_length(points[k00], points[k01]);
+        const double lv1 = chord_length(points[k10], points[k11]);
+        const Vec3 rows[4][4] = {
+            {points[k00], points[k01], lv0 * tv[k00], lv0 * tv[k01]},
+            {points[k10], points[k11], lv1 * tv[k10], lv1 * tv[k11]},
+            {lu0 * tu[k00], lu1 * tu[k01], Vec3{}, Vec3{}},
+            {lu0 * tu[k10], lu1 * tu[k11], Vec3{}, Vec3{}},
+        };
+        for (int r = 0; r < 4; ++r) {
+          for (int c = 0; c < 4; ++c) {
+            m[0 * 16 + r * 4 + c] = rows[r][c].x;
+            m[1 * 16 + r * 4 + c] = rows[r][c].y;
+            m[2 * 16 + r * 4 + c] = rows[r][c].z;
+          }
+        }
+      }
+    }
+  };
+  parallel_for(nc - 1, threads_for(count), patch_rows);
+}
+
+}  // namespace igds

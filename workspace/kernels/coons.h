@@ -1,0 +1,34 @@
+// COONS: the tangents at every grid point and the patch matrices PATCHES (IGDS manual 3.2 and
+// Appendix III; spec math.md "Patches").
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "workspace/kernels/array.h"
+#include "workspace/kernels/vec3.h"
+
+namespace igds {
+
+// Tangents per unit of chord length at every input point, NOCUR x NOSTR in point-number order:
+// along the curves (the rows) and along the stringers (the columns).
+struct GridTangents {
+  std::vector<Vec3> along_curves;
+  std::vector<Vec3> along_stringers;
+};
+
+// The border tangent of INPTG row `row` (x y z; column 4, the point number, is not used: the
+// row's place in the order of workspace/state.h says which point it belongs to).
+Vec3 border_tangent(const Array& inptg, std::size_t row);
+
+// Splines (CURVILINEO) along every curve and every stringer of the NOCUR x NOSTR points, clamped
+// by the border tangents of INPTG (2(NOCUR+NOSTR) x 4, row order as in workspace/state.h).
+GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, const Array& inptg);
+
+// PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of math.md,
+// corners, then tangents scaled by the chord length of their arc, zero twists. Written into
+// `patches`, whose memory is reused when it is large enough (large_array.h).
+void coons_patches(int nocur, int nostr, std::span<const Vec3> points, const GridTangents& tangents,
+                   Array& patches);
+
+}  // namespace igds

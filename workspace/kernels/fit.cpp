@@ -1,0 +1,282 @@
+#include "workspace/kernels/fit.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
+#include "workspace/kernels/project.h"
+#include "workspace/kernels/spline.h"
+
+// On x86-64 the hot loops also exist compiled for AVX2 with FMA, chosen at run time, and very
+// large grids are written with streaming stores.
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define IGDS_X86 1
+#else
+#define IGDS_X86 0
+#endif
+
+namespace igds {
+
+GridShape intpn_shape(int nocur, int nostr, int intcu, int intst) {
+  const std::size_t nc = nocur, ns = nostr, ic = intcu, is = intst;
+  return {nc + ic * (nc - 1), ns + is * (ns - 1)};
+}
+
+namespace {
+
+// The blending weights of the int+2 parameter values a/(int+1), a = 0..int+1, as an
+// (int+2) x 4 matrix W (math.md); the parameters are computed as a/(int+1), never accumulated.
+std::vector<double> weights(int inserted) {
+  const int n = inserted + 2;
+  std::vector<double> w(4 * std::size_t(n));
+  for (int a = 0; a < n; ++a) {
+    Hermite h = hermite(double(a) / double(inserted + 1));
+    w[4 * a + 0] = h.f0;
+    w[4 * a + 1] = h.f1;
+    w[4 * a + 2] = h.g0;
+    w[4 * a + 3] = h.g1;
+  }
+  return w;
+}
+
+// Output columns handled at a time: the four curve polynomials of a chunk stay in the L2 cache.
+constexpr std::size_t chunk = 2048;
+
+// Outputs of at least this many doubles (32 MB) are written with streaming stores.
+constexpr std::size_t streaming = std::size_t(1) << 22;
+
+struct FitJob;
+using CurvePolynomials = void (*)(const FitJob&, std::size_t, std::size_t, std::size_t, double*,
+                                  double*, double*, double*);
+using Combine = void (*)(const double*, std::size_t, const double*, const double*, const double*,
+                         const double*, const double*, double*);
+
+struct FitJob {
+  std::size_t nc, ns, ic, is, rows, cols;
+  const double* patches;
+  const double* wv;  // (ic+2) x 4
+  const double* wu;  // (is+2) x 4
+  double centre[3];
+  double* intpn;
+  CurvePolynomials polynomials;
+  Combine combine;
+};
+
+// The four curve polynomials of patch row i over output columns [j0, j1): q[c] holds, point by
+// point (x y z), W_u M[.][c] with M's corners relative to the local origin. Row b of the patch
+// row is then sum_c W_v[b][c] q[c]: a 4-term combination of contiguous memory.
+template <class = void>
+[[gnu::always_inline]] inline void curve_polynomials_body(
+    const FitJob& job, std::size_t i, std::size_t j0, std::size_t j1, double* __restrict q0,
+    double* __restrict q1, double* __restrict q2, double* __restrict q3) {
+  // One vector holds a row of M (its 4 columns c), so each output column costs 12 FMAs.
+  typedef double v4 __attribute__((vector_size(32)));
+  for (std::size_t col = j0; col < j1;) {
+    const std::size_t j = std::min(col / (job.is + 1), job.ns - 2);
+    const std::size_t first = col - j * (job.is + 1);
+    const std::size_t count = j + 2 == job.ns ? job.is + 2 : job.is + 1;
+    const std::size_t last = std::min(count, first + (j1 - col));
+    const double* src = job.patches + (i * (job.ns - 1) + j) * 48;
+    v4 m[3][4];
+    for (int k = 0; k < 3; ++k) {
+      for (int r = 0; r < 4; ++r) std::memcpy(&m[k][r], src + 16 * k + 4 * r, sizeof(v4));
+      // Corners relative to the local origin: large offsets cost no precision (math.md).
+      const v4 shift = {job.centre[k], job.centre[k], 0, 0};
+      m[k][0] -= shift;
+      m[k][1] -= shift;
+    }
+    const std::size_t o = 3 * (col - j0);
+    double *o0 = q0 + o, *o1 = q1 + o, *o2 = q2 + o, *o3 = q3 + o;
+    for (std::size_t a = first; a < last; ++a, o0 += 3, o1 += 3, o2 += 3, o3 += 3) {
+      const double* fu = job.wu + 4 * a;
+      for (int k = 0; k < 3; ++k) {
+        const v4 s = fu[0] * m[k][0] + fu[1] * m[k][1] + fu[2] * m[k][2] + fu[3] * m[k][3];
+        o0[k] = s[0];
+        o1[k] = s[1];
+        o2[k] = s[2];
+        o3[k] = s[3];
+      }
+    }
+    col += last - first;
+  }
+}
+
+// One stretch of an output row: out = origin + fv . q, a 4-term FMA over contiguous memory.
+template <class = void>
+[[gnu::always_inline]] inline void combine_body(
+    const double* fv, std::size_t n, const double* __restrict origin, const double* __restrict q0,
+    const double* __restrict q1, const double* __restrict q2, const double* __restrict q3,
+    double* __restrict out) {
+  const double w0 = fv[0], w1 = fv[1], w2 = fv[2], w3 = fv[3];
+  for (std::size_t k = 0; k < n; ++k)
+    out[k] = origin[k] + (w0 * q0[k] + w1 * q1[k] + w2 * q2[k] + w3 * q3[k]);
+}
+
+void curve_polynomials_base(const FitJob& job, std::size_t i, std::size_t j0, std::size_t j1,
+                            double* q0, double* q1, double* q2, double* q3) {
+  curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
+}
+
+void combine_base(const double* fv, std::size_t n, const double* origin, const double* q0,
+                  const double* q1, const double* q2, const double* q3, double* out) {
+  combine_body(fv, n, origin, q0, q1, q2, q3, out);
+}
+
+#if IGDS_X86
+__attribute__((target("avx2,fma"))) void curve_polynomials_avx2(const FitJob& job, std::size_t i,
+                                                                std::size_t j0, std::size_t j1,
+                                                                double* q0, double* q1, double* q2,
+                                                                double* q3) {
+  curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
+}
+
+__attribute__((target("avx2,fma"))) void combine_avx2(const double* fv, std::size_t n,
+                                                      const double* origin, const double* q0,
+                                                      const double* q1, const double* q2,
+                                                      const double* q3, double* out) {
+  combine_body(fv, n, origin, q0, q1, q2, q3, out);
+}
+
+// The same with streaming stores, for grids much larger than the caches: the output goes to
+// memory without first being read into the cache, which halves the memory traffic.
+void combine_stream_sse2(const double* fv, std::size_t n, const double* __restrict origin,
+                         const double* __restrict q0, const double* __restrict q1,
+                         const double* __restrict q2, const double* __restrict q3,
+                         double* __restrict out) {
+  std::size_t k = 0;
+  if (reinterpret_cast<std::uintptr_t>(out) % 16 != 0 && n > 0) {
+    combine_base(fv, 1, origin, q0, q1, q2, q3, out);
+    k = 1;
+  }
+  const __m128d w0 = _mm_set1_pd(fv[0]), w1 = _mm_set1_pd(fv[1]), w2 = _mm_set1_pd(fv[2]),
+                w3 = _mm_set1_pd(fv[3]);
+  for (; k + 2 <= n; k += 2) {
+    __m128d v = _mm_mul_pd(w0, _mm_loadu_pd(q0 + k));
+    v = _mm_add_pd(v, _mm_mul_pd(w1, _mm_loadu_pd(q1 + k)));
+    v = _mm_add_pd(v, _mm_mul_pd(w2, _mm_loadu_pd(q2 + k)));
+    v = _mm_add_pd(v, _mm_mul_pd(w3, _mm_loadu_pd(q3 + k)));
+    _mm_stream_pd(out + k, _mm_add_pd(_mm_loadu_pd(origin + k), v));
+  }
+  combine_base(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k);
+}
+
+__attribute__((target("avx2,fma"))) void combine_stream_avx2(
+    const double* fv, std::size_t n, const double* __restrict origin, const double* __restrict q0,
+    const double* __restrict q1, const double* __restrict q2, const double* __restrict q3,
+    double* __restrict out) {
+  std::size_t k = 0;
+  const std::size_t head = (32 - reinterpret_cast<std::uintptr_t>(out) % 32) % 32 / 8;
+  if (head > 0) {
+    k = std::min(head, n);
+    combine_body(fv, k, origin, q0, q1, q2, q3, out);
+  }
+  const __m256d w0 = _mm256_set1_pd(fv[0]), w1 = _mm256_set1_pd(fv[1]), w2 = _mm256_set1_pd(fv[2]),
+                w3 = _mm256_set1_pd(fv[3]);
+  for (; k + 4 <= n; k += 4) {
+    __m256d v = _mm256_mul_pd(w0, _mm256_loadu_pd(q0 + k));
+    v = _mm256_fmadd_pd(w1, _mm256_loadu_pd(q1 + k), v);
+    v = _mm256_fmadd_pd(w2, _mm256_loadu_pd(q2 + k), v);
+    v = _mm256_fmadd_pd(w3, _mm256_loadu_pd(q3 + k), v);
+    _mm256_stream_pd(out + k, _mm256_add_pd(_mm256_loadu_pd(origin + k), v));
+  }
+  combine_body(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k);
+}
+
+bool has_avx2_fma() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
+#endif
+
+std::atomic<FitCode> fit_code{FitCode::best};
+
+// AVX2 with FMA when the processor has it (and the best code is wanted); streaming stores for
+// outputs far larger than the caches, ordinary stores otherwise so that a small grid stays in the
+// cache for its display.
+void choose_kernels(FitJob& job, std::size_t doubles) {
+  job.polynomials = curve_polynomials_base;
+  job.combine = combine_base;
+#if IGDS_X86
+  const bool avx2 = fit_code.load() == FitCode::best && has_avx2_fma();
+  if (avx2) {
+    job.polynomials = curve_polynomials_avx2;
+    job.combine = combine_avx2;
+  }
+  if (doubles >= streaming) job.combine = avx2 ? combine_stream_avx2 : combine_stream_sse2;
+#else
+  (void)doubles;
+#endif
+}
+
+// Output rows [first, last): for each patch row and chunk of columns, the curve polynomials
+// once, then every output row of that patch row in the chunk.
+void fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
+  const std::size_t width = std::min(chunk, job.cols);
+  std::vector<double> buffer(5 * 3 * width);
+  double* q[4] = {buffer.data(), buffer.data() + 3 * width, buffer.data() + 6 * width,
+                  buffer.data() + 9 * width};
+  double* origin = buffer.data() + 12 * width;
+  for (std::size_t k = 0; k < 3 * width; ++k) origin[k] = job.centre[k % 3];
+  for (std::size_t row = first; row < last;) {
+    const std::size_t i = std::min(row / (job.ic + 1), job.nc - 2);
+    const std::size_t end = std::min(last, i + 2 == job.nc ? job.rows : (i + 1) * (job.ic + 1));
+    for (std::size_t j0 = 0; j0 < job.cols; j0 += width) {
+      const std::size_t j1 = std::min(job.cols, j0 + width);
+      job.polynomials(job, i, j0, j1, q[0], q[1], q[2], q[3]);
+      for (std::size_t r = row; r < end; ++r) {
+        job.combine(job.wv + 4 * (r - i * (job.ic + 1)), 3 * (j1 - j0), origin, q[0], q[1], q[2],
+                    q[3], job.intpn + 3 * (r * job.cols + j0));
+      }
+    }
+    row = end;
+  }
+#if IGDS_X86
+  // Streaming stores are weakly ordered: make them visible before the thread reports done.
+  _mm_sfence();
+#endif
+}
+
+}  // namespace
+
+void use_fit_code(FitCode code) {
+  fit_code.store(code);
+}
+
+void fit(int nocur, int nostr, int intcu, int intst, const Array& patches,
+         std::span<const Vec3> points, Array& intpn) {
+  const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);
+  const unsigned threads = threads_for(shape.rows * shape.cols * 3);
+  reuse_for_output(intpn, {shape.rows, shape.cols, 3}, threads);
+  const std::vector<double> wv = weights(intcu), wu = weights(intst);
+  const Vec3 c = bounding_box_centre(points);
+  FitJob job{std::size_t(nocur),
+             std::size_t(nostr),
+             std::size_t(intcu),
+             std::size_t(intst),
+             shape.rows,
+             shape.cols,
+             patches.data(),
+             wv.data(),
+             wu.data(),
+             {c.x, c.y, c.z},
+             intpn.data(),
+             nullptr,
+             nullptr};
+  choose_kernels(job, intpn.size());
+  parallel_for(shape.rows, threads,
+               [&job](std::size_t first, std::size_t last) { fit_rows(job, first, last); });
+  // The input points come out bit-exact (math.md).
+  Vec3* grid = as_vec3(intpn).data();
+  for (std::size_t i = 0; i < std::size_t(nocur); ++i) {
+    for (std::size_t j = 0; j < std::size_t(nostr); ++j) {
+      grid[i * (intcu + 1) * shape.cols + j * (intst + 1)] = points[i * nostr + j];
+    }
+  }
+}
+
+}  // namespace igds

@@ -1,0 +1,32 @@
+// FIT: the interpolated grid INTPN from the patch matrices (IGDS manual 3.3 and Appendix III;
+// spec math.md "Interpolated grid INTPN").
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+#include "workspace/kernels/array.h"
+#include "workspace/kernels/vec3.h"
+
+namespace igds {
+
+// Rows and columns of INTPN: NOCUR + INTCU(NOCUR-1) by NOSTR + INTST(NOSTR-1).
+struct GridShape {
+  std::size_t rows = 0, cols = 0;
+};
+GridShape intpn_shape(int nocur, int nostr, int intcu, int intst);
+
+// INTPN from PATCHES ((NOCUR-1) x (NOSTR-1) x 3 x 4 x 4): output row I lies in patch row
+// min(I div (INTCU+1), NOCUR-2) at v = b/(INTCU+1), likewise columns with u; every patch block
+// is W M W^T per coordinate, evaluated relative to the centre of the input points' bounding box.
+// The NOCUR x NOSTR input `points` are then copied bit-exactly to their places. Written into
+// `intpn`, whose memory is reused when it is large enough (large_array.h).
+void fit(int nocur, int nostr, int intcu, int intst, const Array& patches,
+         std::span<const Vec3> points, Array& intpn);
+
+// Which compiled form of the FIT loops runs: the best the processor allows (the default), or the
+// baseline one everywhere (so that tests exercise both on a machine that has AVX2).
+enum class FitCode { best, baseline };
+void use_fit_code(FitCode code);
+
+}  // namespace igds

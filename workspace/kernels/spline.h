@@ -1,0 +1,53 @@
+// CURVILINEO: the clamped chord-length cubic spline through one grid line (IGDS manual 3.1 and
+// Appendix III; spec math.md "Splines along every curve and every stringer").
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "workspace/kernels/vec3.h"
+
+namespace igds {
+
+// The cubic Hermite blending functions at s in [0, 1] (math.md): the manual's A0, A1, B0, B1.
+struct Hermite {
+  double f0, f1, g0, g1;
+};
+inline Hermite hermite(double s) {
+  double s2 = s * s, s3 = s2 * s;
+  return {2 * s3 - 3 * s2 + 1, -2 * s3 + 3 * s2, s3 - 2 * s2 + s, s3 - s2};
+}
+
+// The chord |p1 - p0| without overflow or underflow (math.md: hypot style): the plain square
+// root while the squares are safely representable, std::hypot beyond.
+inline double chord_length(Vec3 p0, Vec3 p1) {
+  const Vec3 d = p1 - p0;
+  const double s = d.x * d.x + d.y * d.y + d.z * d.z;
+  if (s > 0x1p-900 && s < 0x1p900) return std::sqrt(s);
+  return norm(d);
+}
+
+// Reusable work space of spline_tangents, so that a loop over many grid lines allocates nothing.
+struct SplineScratch {
+  std::vector<Vec3> distinct;          // the line's points with runs of equal points merged
+  std::vector<std::size_t> merged_to;  // for each point, the index of its merged point
+  std::vector<double> upper;           // Thomas algorithm: the modified upper diagonal
+  std::vector<Vec3> rhs;               // Thomas algorithm: the modified right-hand side
+};
+
+// Tangents (per unit of chord length) at every point of one grid line, given the end tangents
+// `first` and `last`: the C2 system of math.md with the crossed coefficients, solved by the Thomas
+// algorithm in O(n). Runs of equal consecutive points are merged, the spline is solved on the
+// distinct points and every duplicate gets its merged point's tangent; a line whose points all
+// coincide gets zero tangents. `out` has the size of `points`.
+void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out,
+                     SplineScratch& scratch);
+void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out);
+
+// The point at s in [0, 1] of the arc from p0 to p1 with tangents t0, t1 per unit of length: the
+// tangents are scaled by the chord length |p1 - p0| (math.md), so a zero-length arc is its point.
+Vec3 spline_arc_point(Vec3 p0, Vec3 p1, Vec3 t0, Vec3 t1, double s);
+
+}  // namespace igds

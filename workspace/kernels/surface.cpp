@@ -1,0 +1,131 @@
+#include "workspace/kernels/surface.h"
+
+#include <cmath>
+#include <string>
+
+#include "workspace/kernels/coons.h"
+#include "workspace/kernels/data_error.h"
+#include "workspace/kernels/fit.h"
+
+namespace igds {
+
+namespace {
+
+// The largest INTPN accepted, in points (2.4 GB of doubles): beyond it the grid is refused
+// rather than failing half-way for lack of memory.
+constexpr double max_grid_points = 1e8;
+
+std::string shape_text(const std::vector<std::size_t>& shape) {
+  std::string s;
+  for (auto d : shape) s += (s.empty() ? "" : " ") + std::to_string(d);
+  return s.empty() ? "EMPTY" : s;
+}
+
+void check_shape(const char* name, const Array* a, std::vector<std::size_t> expected) {
+  if (a == nullptr) throw DataError(std::string("INCORRECT ENTRY: ") + name + " NOT FOUND");
+  if (a->shape != expected || a->size() != Array::count(expected)) {
+    throw DataError(std::string("INCORRECT ENTRY: ") + name + " HAS SHAPE " + shape_text(a->shape) +
+                    ", NOT " + shape_text(expected));
+  }
+}
+
+bool finite(const double* v, int n) {
+  for (int k = 0; k < n; ++k)
+    if (!std::isfinite(v[k])) return false;
+  return true;
+}
+
+// Point number of INPTG row `row` (workspace/state.h order), 1-based.
+std::size_t tangent_point(const SurfaceInput& in, std::size_t row) {
+  const std::size_t nc = in.nocur, ns = in.nostr;
+  if (row < 2 * nc) return (row / 2) * ns + (row % 2 == 0 ? 0 : ns - 1) + 1;
+  const std::size_t j = (row - 2 * nc) / 2;
+  return (row % 2 == 0 ? 0 : nc - 1) * ns + j + 1;
+}
+
+// What every interpolation needs: sizes, shapes, finite points (math.md, bad data).
+void check_grid(const SurfaceInput& in) {
+  if (in.nocur < 2 || in.nostr < 2) {
+    throw DataError("INCORRECT PARAMETER: NOCUR AND NOSTR MUST BE AT LEAST 2");
+  }
+  if (in.intcu < 0 || in.intst < 0) {
+    throw DataError("INCORRECT PARAMETER: INTCU AND INTST MUST NOT BE NEGATIVE");
+  }
+  const double rows = in.nocur + double(in.intcu) * (in.nocur - 1);
+  const double cols = in.nostr + double(in.intst) * (in.nostr - 1);
+  if (rows * cols > max_grid_points || double(in.nocur) * in.nostr > max_grid_points) {
+    throw DataError("INCORRECT PARAMETER: THE GRID WOULD HAVE MORE THAN 100000000 POINTS");
+  }
+  const std::size_t n = std::size_t(in.nocur) * std::size_t(in.nostr);
+  check_shape("INPPN", in.inppn, {n, 3});
+  for (std::size_t k = 0; k < n; ++k) {
+    if (!finite(in.inppn->data() + 3 * k, 3)) {
+      throw DataError("INCORRECT ENTRY: POINT " + std::to_string(k + 1) +
+                      " IS NOT A FINITE NUMBER");
+    }
+  }
+}
+
+// Everything interpolate needs beyond check_grid: INPTG's shape and finite tangents.
+void check_tangents(const SurfaceInput& in) {
+  const std::size_t rows = 2 * (std::size_t(in.nocur) + std::size_t(in.nostr));
+  check_shape("INPTG", in.inptg, {rows, 4});
+  for (std::size_t r = 0; r < rows; ++r) {
+    if (!finite(in.inptg->data() + 4 * r, 3)) {
+      throw DataError("INCORRECT ENTRY: TANGENT AT POINT " + std::to_string(tangent_point(in, r)) +
+                      " IS NOT A FINITE NUMBER");
+    }
+  }
+}
+
+void check_patches(const SurfaceInput& in, const Array& patches) {
+  const std::size_t pr = in.nocur - 1, pc = in.nostr - 1;
+  check_shape("PATCHES", &patches, {pr, pc, 3, 4, 4});
+  for (std::size_t p = 0; p < pr * pc; ++p) {
+    if (!finite(patches.data() + 48 * p, 48)) {
+      throw DataError("INCORRECT ENTRY: PATCH " + std::to_string(p + 1) +
+                      " IS NOT A FINITE NUMBER");
+    }
+  }
+}
+
+}  // namespace
+
+Surface interpolate(const SurfaceInput& input) {
+  Surface s;
+  interpolate_into(input, s);
+  return s;
+}
+
+void interpolate_into(const SurfaceInput& input, Surface& out) {
+  check_grid(input);
+  check_tangents(input);
+  if (&out.patches == input.inppn || &out.patches == input.inptg || &out.intpn == input.inppn ||
+      &out.intpn == input.inptg) {
+    // The output would overwrite the input while it is read: compute apart.
+    out = interpolate(input);
+    return;
+  }
+  const auto points = as_vec3(*input.inppn);
+  coons_patches(input.nocur, input.nostr, points,
+                grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches);
+  fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
+}
+
+Array refit(const SurfaceInput& input, const Array& patches) {
+  Array intpn;
+  refit_into(input, patches, intpn);
+  return intpn;
+}
+
+void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
+  check_grid(input);
+  check_patches(input, patches);
+  if (&intpn == input.inppn || &intpn == &patches) {
+    intpn = refit(input, patches);
+    return;
+  }
+  fit(input.nocur, input.nostr, input.intcu, input.intst, patches, as_vec3(*input.inppn), intpn);
+}
+
+}  // namespace igds

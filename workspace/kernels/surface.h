@@ -1,0 +1,35 @@
+// The whole interpolation of a surface: COONS (tangents and patch matrices) then FIT (the grid).
+#pragma once
+
+#include "workspace/kernels/array.h"
+
+namespace igds {
+
+struct SurfaceInput {
+  int nocur = 0, nostr = 0, intcu = 0, intst = 0;
+  const Array* inppn = nullptr;  // (NOCUR*NOSTR) x 3
+  const Array* inptg = nullptr;  // 2(NOCUR+NOSTR) x 4, row order as in workspace/state.h
+};
+
+struct Surface {
+  Array patches;  // PATCHES: (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4
+  Array intpn;    // INTPN: (NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3
+  friend bool operator==(const Surface&, const Surface&) = default;
+};
+
+// COONS then FIT. Throws DataError (workspace/kernels/data_error.h) for data that cannot be
+// interpolated: a non-finite coordinate or tangent (naming the point), shapes that do not match.
+Surface interpolate(const SurfaceInput& input);
+
+// FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
+// points are copied bit-exactly to their places in the grid.
+Array refit(const SurfaceInput& input, const Array& patches);
+
+// The same, written into arrays the caller already holds: their memory is reused when it is large
+// enough (a recompute of a surface of the same size then writes no fresh pages, which on a large
+// grid costs more than the interpolation itself). All checks come first: on DataError the output
+// is unchanged.
+void interpolate_into(const SurfaceInput& input, Surface& out);
+void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn);
+
+}  // namespace igds

@@ -1,0 +1,60 @@
+// The IGDS workspace variables (manual section 7, spec igds.md section 4): the whole session.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "workspace/kernels/array.h"
+
+namespace igds {
+
+// DESIM[2]: the projection codes of the manual.
+enum class Projection : int { conic = 1, assonometric = 2, isometric = 3, orthogonal = 4 };
+
+// DESIM[3] for ORTHOGONAL: the plane of projection, as the manual numbers them.
+enum class Plane : int { xy = 1, xz = 2, yz = 3 };
+
+// DESIM: what an image shows and how it was projected.
+struct Description {
+  int what = 0;                                    // DESIM[1]: 0 input points, 1 surface
+  Projection projection = Projection::orthogonal;  // DESIM[2]
+  std::array<double, 3> parameters{};  // DESIM[3 4 5]: view point, angles, axis+angle, plane
+  friend bool operator==(const Description&, const Description&) = default;
+};
+
+// A projected image: IMAGE with its DESIM (or TEMP1/DEST1, TEMP2/DEST2).
+struct Image {
+  Description desim;
+  // IMAGE: planes x rows x 2, one plane per curve: NOCUR x NOSTR x 2 for an input image, the
+  // shape of INTPN with 2 columns for a surface image.
+  Array points;
+  // Input images only: one row per non-zero border tangent, k x 4: the projected base point (x y)
+  // and the projected tangent vector (dx dy), in the units of `points`. Drawn as arrows.
+  Array arrows;
+  friend bool operator==(const Image&, const Image&) = default;
+};
+
+struct Workspace {
+  int nocur = 0, nostr = 0;  // NOCUR, NOSTR: input curves and stringers (0: no input yet)
+  int intcu = 0, intst = 0;  // INTCU, INTST: curves/stringers interpolated between input ones
+  Array inppn;               // INPPN: (NOCUR*NOSTR) x 3, in point-number order
+  // INPTG: 2(NOCUR+NOSTR) x 4 border tangents x y z and point number. Rows in this order: the
+  // tangents along the curves at the ends of each curve (curve 1 place 1, curve 1 place NOSTR,
+  // curve 2 place 1, ...), then the tangents along the stringers at the ends of each stringer
+  // (stringer 1 curve 1, stringer 1 curve NOCUR, stringer 2 curve 1, ...). Corners appear twice.
+  Array inptg;
+  Array patches;               // PATCHES: (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4
+  Array intpn;                 // INTPN: (NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3
+  std::optional<Image> image;  // IMAGE / DESIM: the current image
+  std::optional<Image> temp1;  // TEMP1 / DEST1: STORE FIRST
+  std::optional<Image> temp2;  // TEMP2 / DEST2: STORE SECOND
+  // STATUS[1] = 1 for HELP LONG, 0 for SHORT; STATUS[2] = keyboard of the last PLOT
+  // (0 none yet, 1 SELECTRIC, 2 EBCDIC); the others are reserved.
+  std::array<int, 10> status{1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+
+  bool has_input() const { return nocur > 0; }
+  bool has_surface() const { return !intpn.empty(); }
+  friend bool operator==(const Workspace&, const Workspace&) = default;
+};
+
+}  // namespace igds
