@@ -67,7 +67,10 @@ struct Xvfb {
     int p[2];
     if (pipe(p) != 0) return;
     process.emplace(std::vector<std::string>{"Xvfb", "-displayfd", "3", "-screen", "0",
-                                             "1280x1024x24", "-nolisten", "tcp"},
+                                             "1280x1024x24", "-nolisten", "tcp",
+                                             // Without it the server resets when its last
+                                             // client leaves, and the next xterm can miss it.
+                                             "-noreset"},
                     std::map<std::string, std::string>{}, p[1]);
     close(p[1]);
     std::string number;

@@ -360,7 +360,8 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
   if (S_ISDIR(st.st_mode)) throw IoError{EISDIR};
   if (!S_ISREG(st.st_mode)) throw IoError{EINVAL, "NOT A REGULAR FILE"};
   std::string data;
-  data.resize(static_cast<std::size_t>(st.st_size));
+  // One byte more than the file: the read that finds its end needs no second, copying buffer.
+  data.resize(static_cast<std::size_t>(st.st_size) + 1);
   std::size_t got = 0;
   for (;;) {
     if (got == data.size()) data.resize(data.size() + 4096);  // the file grew meanwhile
