@@ -31,15 +31,8 @@ void run_build(Context& ctx, int) {
   Surface surface = interpolate_surface(size.nocur, size.nostr, density, inppn, inptg);
 
   // Only now, with everything asked and interpolated, does the workspace change.
-  Workspace& ws = ctx.workspace();
-  ws.nocur = size.nocur;
-  ws.nostr = size.nostr;
-  ws.intcu = density.intcu;
-  ws.intst = density.intst;
-  ws.inppn = std::move(inppn);
-  ws.inptg = std::move(inptg);
-  ws.patches = std::move(surface.patches);
-  ws.intpn = std::move(surface.intpn);
+  make_current(ctx.workspace(), size.nocur, size.nostr, density, std::move(inppn), std::move(inptg),
+               std::move(surface));
 }
 
 }  // namespace

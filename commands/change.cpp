@@ -93,12 +93,8 @@ void run_change(Context& ctx, int option) {
     give_back();
     throw;
   }
-  ws.intcu = density.intcu;
-  ws.intst = density.intst;
-  ws.inppn = std::move(inppn);
-  ws.inptg = std::move(inptg);
-  ws.patches = std::move(surface.patches);
-  ws.intpn = std::move(surface.intpn);
+  make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
+               std::move(surface));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // DISPLAY FIRST | SECOND | FILE | INPUT | SURFACE (manual 4.4): a new current image, drawn.
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/file_name.h"
 #include "commands/view.h"
 #include "workspace/report.h"
 
@@ -78,10 +79,7 @@ void run_display(Context& ctx, int option) {
       return;
     }
     case file: {
-      auto words = ask_words(ctx, file_prompt);
-      auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-      if (!name) throw Report(reports::incorrect_parameter);
-      show(ctx, load_image(ctx.disk(), *name));
+      show(ctx, load_image(ctx.disk(), ask_file_name(ctx, file_prompt)));
       return;
     }
     case input: {

@@ -207,4 +207,16 @@ void expect_no_more_words(Context& ctx) {
   if (ctx.has_pending()) throw Report(reports::incorrect_command);
 }
 
+void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
+                  Surface surface) {
+  ws.nocur = nocur;
+  ws.nostr = nostr;
+  ws.intcu = density.intcu;
+  ws.intst = density.intst;
+  ws.inppn = std::move(inppn);
+  ws.inptg = std::move(inptg);
+  ws.patches = std::move(surface.patches);
+  ws.intpn = std::move(surface.intpn);
+}
+
 }  // namespace igds

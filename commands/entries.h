@@ -14,6 +14,7 @@
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
+#include "workspace/state.h"
 
 namespace igds {
 
@@ -75,6 +76,11 @@ extern const Prompt density_prompt;
 // COONS then FIT; a kernel's DataError becomes a Report (the surface in the workspace is kept).
 Surface interpolate_surface(int nocur, int nostr, Density density, const Array& inppn,
                             const Array& inptg);
+
+// Makes an interpolated surface the current one: the only change BUILD and CHANGE make to the
+// workspace, once everything has been asked and computed.
+void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
+                  Surface surface);
 
 // Throws INCORRECT COMMAND OR PARAMETERS when words are left on the command line.
 void expect_no_more_words(Context& ctx);

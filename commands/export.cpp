@@ -3,6 +3,7 @@
 
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/file_name.h"
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "workspace/disk/format.h"
@@ -22,20 +23,17 @@ const Prompt file_prompt{"FILE NAME?",
 void run_export(Context& ctx, int option) {
   const Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
-  std::vector<std::string> words;
-  while (words.empty()) words = ctx.ask(file_prompt);
-  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-  if (!name) throw Report(reports::incorrect_parameter);
+  const std::string name = ask_file_name(ctx, file_prompt);
   std::string_view type = file_types[option];
   std::string bytes = option == svg   ? svg_of(*ws.image)
                       : option == tek ? tek_stream(*ws.image, ctx.options().tek)
                                       : plot_hpgl(*ws.image, ctx.options().plot).hpgl;
   try {
-    disk::replace_file(ctx.disk().path(*name, type), bytes);
+    disk::replace_file(ctx.disk().path(name, type), bytes);
   } catch (const disk::IoError& e) {
-    throw Report(fmt::format("CANNOT WRITE {}.{} ({}); NO FILE CHANGED", *name, type, e.reason()));
+    throw Report(fmt::format("CANNOT WRITE {}.{} ({}); NO FILE CHANGED", name, type, e.reason()));
   }
-  ctx.say(fmt::format("{}.{}: {} BYTES", *name, type, bytes.size()));
+  ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
 }
 
 }  // namespace

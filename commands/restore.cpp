@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "commands/command.h"
+#include "commands/file_name.h"
 #include "workspace/report.h"
 
 namespace igds {
@@ -13,12 +14,9 @@ const Prompt file_prompt{"FILE NAME?",
                          "$ # @ + - _ (type IGDSDATA)."};
 
 void run_restore(Context& ctx, int) {
-  std::vector<std::string> words;
-  while (words.empty()) words = ctx.ask(file_prompt);
-  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-  if (!name) throw Report(reports::incorrect_parameter);
+  const std::string name = ask_file_name(ctx, file_prompt);
   Workspace& ws = ctx.workspace();
-  restore_surface(ctx.disk(), *name, ws);
+  restore_surface(ctx.disk(), name, ws);
   ctx.say(
       fmt::format("NOCUR {} NOSTR {} INTCU {} INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst));
 }

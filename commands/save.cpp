@@ -1,5 +1,6 @@
 // SAVE [name] (manual 4.6): the current surface in the binary file NAME IGDSDATA.
 #include "commands/command.h"
+#include "commands/file_name.h"
 #include "workspace/report.h"
 
 namespace igds {
@@ -13,11 +14,7 @@ const Prompt file_prompt{"FILE NAME?",
 void run_save(Context& ctx, int) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
-  std::vector<std::string> words;
-  while (words.empty()) words = ctx.ask(file_prompt);
-  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-  if (!name) throw Report(reports::incorrect_parameter);
-  save_surface(ctx.disk(), *name, ws);
+  save_surface(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
 }
 
 }  // namespace

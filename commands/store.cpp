@@ -1,6 +1,7 @@
 // STORE FIRST | SECOND | FILE (manual 4.8): a copy of the current image, in memory or on disk.
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/file_name.h"
 #include "workspace/report.h"
 
 namespace igds {
@@ -17,11 +18,7 @@ void run_store(Context& ctx, int option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   if (option == file) {
-    std::vector<std::string> words;
-    while (words.empty()) words = ctx.ask(file_prompt);
-    auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-    if (!name) throw Report(reports::incorrect_parameter);
-    store_image(ctx.disk(), *name, *ws.image);
+    store_image(ctx.disk(), ask_file_name(ctx, file_prompt), *ws.image);
     return;
   }
   expect_no_more_words(ctx);

@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include "commands/command.h"
+#include "commands/file_name.h"
 #include "workspace/report.h"
 
 namespace igds {
@@ -15,11 +16,7 @@ const Prompt file_prompt{"FILE NAME?",
 void run_write(Context& ctx, int) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
-  std::vector<std::string> words;
-  while (words.empty()) words = ctx.ask(file_prompt);
-  auto name = words.size() == 1 ? cms_name(words[0]) : std::nullopt;
-  if (!name) throw Report(reports::incorrect_parameter);
-  std::size_t overflow = write_char(ctx.disk(), *name, ws);
+  std::size_t overflow = write_char(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
   if (overflow == 1) ctx.say("1 VALUE DOES NOT FIT F10.3: WRITTEN AS **********");
   if (overflow > 1)
     ctx.say(fmt::format("{} VALUES DO NOT FIT F10.3: WRITTEN AS **********", overflow));

@@ -1,5 +1,6 @@
 #include "interp/input.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <pthread.h>
 #include <readline/history.h>
@@ -183,6 +184,55 @@ namespace {
 
 bool line_done = false;
 std::optional<std::string> line_read;
+
+// The keys read from the terminal that readline has not taken yet. igds reads the terminal
+// itself: Ctrl-C flushes the terminal's input queue, and readline's own read, waiting for keys
+// that are gone, would never see the interrupt.
+std::string keys;
+int key_fd = 0;
+
+// Reads what the terminal holds, without waiting: false when nothing was there.
+bool read_keys() {
+  const int flags = fcntl(key_fd, F_GETFL);
+  fcntl(key_fd, F_SETFL, flags | O_NONBLOCK);
+  char chunk[256];
+  ssize_t n = ::read(key_fd, chunk, sizeof chunk);
+  fcntl(key_fd, F_SETFL, flags);
+  if (n > 0) keys.append(chunk, static_cast<std::size_t>(n));
+  if (n == 0) keys += '\x04';  // the terminal is gone: as Ctrl-D
+  return n != -1;
+}
+
+// readline's getc: the next key, waiting for one only when a multi-byte key is incomplete. EOF
+// when Ctrl-C comes meanwhile: read() sees `interrupted` when readline returns.
+int take_key(FILE*) {
+  while (keys.empty()) {
+    if (!wait_for_input(key_fd)) return EOF;
+    read_keys();
+  }
+  const auto key = static_cast<unsigned char>(keys.front());
+  keys.erase(0, 1);
+  return key;
+}
+
+// Ctrl-C: the line being typed is dropped, the terminal is as before, the command abandoned.
+[[noreturn]] void abandon_line() {
+  keys.clear();
+  interrupted = 0;
+  rl_free_line_state();
+  rl_callback_sigcleanup();
+  rl_cleanup_after_signal();
+  rl_callback_handler_remove();
+  write_out("\n");
+  throw Abandon{};
+}
+
+// Whether a key is waiting (for readline's escape-sequence timeout).
+int keys_waiting() {
+  if (!keys.empty()) return 1;
+  pollfd in{key_fd, POLLIN, 0};
+  return poll(&in, 1, 0) > 0 ? 1 : 0;
+}
 ReadlineInput::Candidates* completion_source = nullptr;
 std::vector<std::string> completion_words;
 std::size_t completion_next = 0;
@@ -235,6 +285,9 @@ ReadlineInput::ReadlineInput(std::filesystem::path history, Candidates candidate
   rl_variable_bind("output-meta", "on");
   rl_variable_bind("convert-meta", "off");
   rl_catch_signals = 0;  // igds handles Ctrl-C itself (catch_interrupts)
+  key_fd = fileno(rl_instream ? rl_instream : stdin);
+  rl_getc_function = take_key;
+  rl_input_available_hook = keys_waiting;
   rl_attempted_completion_function = complete;
   rl_basic_word_break_characters = const_cast<char*>(" \t,");
   using_history();
@@ -255,17 +308,15 @@ std::optional<std::string> ReadlineInput::read(std::string_view prompt) {
     line_read.reset();
     rl_callback_handler_install(shown.c_str(), on_line);
     while (!line_done) {
-      if (!wait_for_input(fileno(rl_instream ? rl_instream : stdin))) {
-        interrupted = 0;
-        rl_free_line_state();
-        rl_callback_sigcleanup();
-        rl_cleanup_after_signal();
-        rl_callback_handler_remove();
-        write_out("\n");
-        throw Abandon{};
+      while (keys.empty() && !interrupted) {
+        if (!wait_for_input(key_fd)) break;
+        read_keys();  // nothing there after all when Ctrl-C flushed it: wait again
       }
+      if (interrupted) abandon_line();
       rl_callback_read_char();
     }
+    // Ctrl-C while readline waited for the rest of a key: its EOF is no end of input.
+    if (interrupted) abandon_line();
     if (!line_read) {
       write_out("\n");
       return std::nullopt;

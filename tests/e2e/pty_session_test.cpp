@@ -54,7 +54,7 @@ TEST_CASE("an interactive session through a pseudo-terminal") {
     REQUIRE(igds.expect("POINTS?"));
     igds.send("1 1 1 1");
     igds.send("\x03");
-    REQUIRE(igds.expect("READY"));
+    if (!igds.expect("READY")) FAIL(igds.output() << "\nstatus " << igds.wait(1));
 
     // TAB completes commands and options.
     igds.send("DI\tSU\tO XY\r");
