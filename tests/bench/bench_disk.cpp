@@ -1,6 +1,6 @@
 // Speed of the disk: the autosave after a CHANGE GRID and after a STATUS-only change (HELP
 // SHORT), the bytes that one writes, and RESTORE, on a surface of 100 x 100 input points with
-// INTCU = INTST = 10 (INTPN 991 x 991 x 3, 23.6 MB), in a scratch folder of the system's
+// INTCU = INTST = 10 (INTPN 1090 x 1090 x 3, 28.5 MB), in a scratch folder of the system's
 // temporary disk (fsync included).
 #include <fmt/core.h>
 #include <stdlib.h>
@@ -77,7 +77,7 @@ Image view(const Workspace& ws) {
 IGDS_BENCH("disk") {
   Folder folder;
   Disk disk(folder.path);
-  Workspace fine = surface(10, 10);  // INTPN 991 x 991 x 3
+  Workspace fine = surface(10, 10);  // INTPN 1090 x 1090 x 3
   Workspace coarse = surface(9, 9);
   {
     Session session(disk);

@@ -33,6 +33,7 @@ std::uint64_t step(std::uint64_t h, std::uint64_t w) {
 }
 
 std::optional<std::size_t> write_limit;
+std::size_t bytes_written = 0;  // by this process's disk writes, for the tests
 
 // write(2) that honours the test hook's limit.
 ssize_t limited_write(int fd, const char* p, std::size_t n) {
@@ -44,6 +45,7 @@ ssize_t limited_write(int fd, const char* p, std::size_t n) {
     n = std::min(n, *write_limit);
   }
   ssize_t done = ::write(fd, p, n);
+  if (done > 0) bytes_written += static_cast<std::size_t>(done);
   if (done > 0 && write_limit) *write_limit -= static_cast<std::size_t>(done);
   return done;
 }
@@ -375,6 +377,10 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
   }
   data.resize(got);
   return data;
+}
+
+std::size_t bytes_written_for_testing() {
+  return bytes_written;
 }
 
 void set_write_limit_for_testing(std::optional<std::size_t> limit) {

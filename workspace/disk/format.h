@@ -115,5 +115,8 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path);
 // been written (nullopt: no limit). Simulates a full disk where no small file system can be
 // mounted.
 void set_write_limit_for_testing(std::optional<std::size_t> limit);
+// Test hook: the bytes this process's disk writes have written so far (the files only, not the
+// terminal: what the limit above counts).
+std::size_t bytes_written_for_testing();
 
 }  // namespace igds::disk
