@@ -1,6 +1,7 @@
 #include "workspace/disk/format.h"
 
 #include <fcntl.h>
+#include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -377,6 +378,32 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
   }
   data.resize(got);
   return data;
+}
+
+MappedFile::MappedFile(const std::filesystem::path& path) {
+  // O_NONBLOCK: a FIFO put where a file should be must not hang igds.
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+  if (fd.get() < 0) {
+    if (errno == ENOENT) return;
+    throw IoError{errno};
+  }
+  struct stat st;
+  if (::fstat(fd.get(), &st) != 0) throw IoError{errno};
+  if (S_ISDIR(st.st_mode)) throw IoError{EISDIR};
+  if (!S_ISREG(st.st_mode)) throw IoError{EINVAL, "NOT A REGULAR FILE"};
+  exists_ = true;
+  size_ = static_cast<std::size_t>(st.st_size);
+  if (size_ == 0) return;
+  data_ = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
+  if (data_ == MAP_FAILED) {
+    data_ = nullptr;
+    size_ = 0;
+    throw IoError{errno};
+  }
+}
+
+MappedFile::~MappedFile() {
+  if (data_) ::munmap(data_, size_);
 }
 
 std::size_t bytes_written_for_testing() {

@@ -111,6 +111,24 @@ void sync_folder(const std::filesystem::path& dir);
 // where the file should be, no permission).
 std::optional<std::string> read_whole_file(const std::filesystem::path& path);
 
+// A file mapped read-only into memory: its bytes without copying them (the session's large
+// variables are read this way at start). Same refusals as read_whole_file.
+class MappedFile {
+ public:
+  // nullopt-like: exists() is false when there is no such file.
+  explicit MappedFile(const std::filesystem::path& path);
+  ~MappedFile();
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  bool exists() const { return exists_; }
+  std::string_view bytes() const { return {static_cast<const char*>(data_), size_}; }
+
+ private:
+  bool exists_ = false;
+  void* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
 // Test hook: the write calls of this process fail with ENOSPC once `limit` more bytes have
 // been written (nullopt: no limit). Simulates a full disk where no small file system can be
 // mounted.

@@ -328,20 +328,20 @@ Workspace Session::State::read_session() {
       s.length = r.u64();
       s.sum = r.u64();
       std::string file = fmt::format("{}.{}", blob_name(s.number), variable_type);
-      std::optional<std::string> blob;
+      std::optional<disk::MappedFile> mapped;
       try {
-        blob = disk::read_whole_file(blob_path(s.number));
+        mapped.emplace(blob_path(s.number));
       } catch (const disk::IoError& e) {
         throw disk::Damage{fmt::format("{}: {}", file, e.reason())};
       }
-      if (!blob) throw disk::Damage{fmt::format("{} MISSING", file)};
+      if (!mapped->exists()) throw disk::Damage{fmt::format("{} MISSING", file)};
+      const std::string_view blob = mapped->bytes();
       try {
-        auto payload = disk::unframe(variable_magic, *blob);
+        auto payload = disk::unframe(variable_magic, blob);
         std::uint64_t sum = 0;
         for (int k = 0; k < 8; ++k)
-          sum |= std::uint64_t(static_cast<unsigned char>((*blob)[blob->size() - 8 + k]))
-                 << (8 * k);
-        if (blob->size() != s.length || sum != s.sum) throw disk::Damage{"NOT THE ONE SAVED"};
+          sum |= std::uint64_t(static_cast<unsigned char>(blob[blob.size() - 8 + k])) << (8 * k);
+        if (blob.size() != s.length || sum != s.sum) throw disk::Damage{"NOT THE ONE SAVED"};
         decode_slot(payload, ws, i);
       } catch (const disk::Damage& d) {
         throw disk::Damage{fmt::format("{}: {}", file, d.reason)};
