@@ -257,6 +257,22 @@ TEST_CASE("a damaged session is never half-loaded: kept aside, empty start, noti
       CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 4);
       CHECK(test::read_file(s.dir.path() / (first.substr(0, 8) + ".IGDSBAD")) == b);
     }
+    SUBCASE("empty, truncated, or a folder in its place") {
+      std::string b = test::read_file(s.dir.path() / first);
+      SUBCASE("empty") {
+        test::rewrite_file(s.dir.path() / first, "");
+        expect_empty_start(fmt::format("DAMAGED ({}: EMPTY FILE)", first), "BINSAVE.IGDSBAD");
+      }
+      SUBCASE("truncated") {
+        test::rewrite_file(s.dir.path() / first, b.substr(0, b.size() / 2));
+        expect_empty_start(fmt::format("DAMAGED ({}: TRUNCATED)", first), "BINSAVE.IGDSBAD");
+      }
+      SUBCASE("a folder") {
+        fs::remove(s.dir.path() / first);
+        fs::create_directory(s.dir.path() / first);
+        expect_empty_start(fmt::format("DAMAGED ({}: IS A DIRECTORY)", first), "BINSAVE.IGDSBAD");
+      }
+    }
     SUBCASE("another good one in its place") {
       std::string other = *std::next(vars.begin());
       fs::copy_file(s.dir.path() / other, s.dir.path() / first,
