@@ -49,6 +49,48 @@ std::string home_bytes(TermMode mode, TekOptions tek) {
   return encoder.take();
 }
 
+std::string TekDialogue::home() {
+  baseline_ = tek_screen::text_top;
+  x_ = 0;
+  column_ = 0;
+  return home_bytes(TermMode::tek, tek_);
+}
+
+void TekDialogue::new_line(std::string& out) {
+  // The lowest baseline whose characters are still on the screen.
+  constexpr int bottom = tek_screen::text_top % tek_screen::line_height;
+  if (baseline_ - tek_screen::line_height >= bottom) {
+    out += "\r\n";
+    baseline_ -= tek_screen::line_height;
+    x_ = 0;
+    column_ = 0;
+  } else {
+    out += home();
+  }
+}
+
+std::string TekDialogue::text(std::string_view text) {
+  std::string out;
+  out.reserve(text.size() + 16);
+  for (char c : text) {
+    if (c == '\n') {
+      new_line(out);
+      continue;
+    }
+    if (x_ + (column_ + 1) * tek_screen::char_width > tek_screen::width) new_line(out);
+    out += c;
+    ++column_;
+  }
+  return out;
+}
+
+void TekDialogue::displayed(const Image& image) {
+  const auto lines = describe(image.desim, description_width).size();
+  baseline_ = tek_screen::text_top - static_cast<int>(lines) * tek_screen::line_height;
+  x_ = tek_screen::text_x;
+  column_ = 0;
+}
+
 std::string tek_stream(const Image& image, TekOptions tek) {
   TekEncoder encoder(tek.bits);
   encoder.page();

@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "commands/context.h"
+#include "devices/terminal.h"
 #include "interp/words.h"
 
 namespace igds {
@@ -45,9 +46,10 @@ void catch_interrupts() {
 
 namespace {
 
-bool seven_bit = false;
+// tek mode: the dialogue's place on the Tek screen (a 4013 is also a 7-bit terminal).
+std::optional<TekDialogue> tek_dialogue;
 
-// What a 7-bit terminal can show of the APL characters igds writes or echoes, with CR LF line ends.
+// What a 7-bit terminal can show of the APL characters igds writes or echoes.
 std::string transliterated(std::string_view text) {
   static constexpr std::pair<std::string_view, std::string_view> apl[] = {
       {"\xC2\xAF", "-"},         // ¯ high minus: the same number
@@ -58,12 +60,6 @@ std::string transliterated(std::string_view text) {
   out.reserve(text.size());
   for (std::size_t i = 0; i < text.size();) {
     const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte == '\n') {
-      // A 4013 needs CR LF to start a line at the left margin; graph data never holds a LF.
-      out += "\r\n";
-      ++i;
-      continue;
-    }
     if (byte < 0x80) {
       out += text[i++];
       continue;
@@ -108,17 +104,28 @@ bool wait_for_input(int fd) {
 
 }  // namespace
 
-void set_seven_bit_output(bool on) {
-  seven_bit = on;
+void set_tek_dialogue(std::optional<TekOptions> tek) {
+  if (tek)
+    tek_dialogue.emplace(*tek);
+  else
+    tek_dialogue.reset();
+}
+
+TekDialogue* tek_dialogue_in_use() {
+  return tek_dialogue ? &*tek_dialogue : nullptr;
 }
 
 void write_out(std::string_view text) {
-  if (seven_bit) {
-    const std::string ascii = transliterated(text);
-    std::fwrite(ascii.data(), 1, ascii.size(), stdout);
+  if (tek_dialogue) {
+    const std::string shown = tek_dialogue->text(transliterated(text));
+    std::fwrite(shown.data(), 1, shown.size(), stdout);
     return;
   }
   std::fwrite(text.data(), 1, text.size(), stdout);
+}
+
+void write_raw(std::string_view bytes) {
+  std::fwrite(bytes.data(), 1, bytes.size(), stdout);
 }
 
 // ---- FdInput ---------------------------------------------------------------------------------

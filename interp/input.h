@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "devices/terminal.h"
+
 namespace igds {
 
 // Set by SIGINT while igds waits for a line on a terminal.
@@ -75,8 +77,13 @@ class ReadlineInput final : public LineInput {
   std::filesystem::path history_;
 };
 
-// tek mode: a 4013 is a 7-bit terminal, so APL characters are written in ASCII (¯ as -, ⍴ as
-// RHO, ⍝ as NB., any other as ?).
-void set_seven_bit_output(bool on);
+// tek mode (with the Tek options) or not: in tek mode the dialogue is on the Tek screen, written
+// in 7-bit ASCII (APL characters as ASCII: ¯ as -, ⍴ as RHO, ⍝ as NB., any other as ?) with
+// its lines kept on the screen (devices/terminal.h, TekDialogue).
+void set_tek_dialogue(std::optional<TekOptions> tek);
+// The dialogue on the Tek screen in tek mode, else nullptr.
+TekDialogue* tek_dialogue_in_use();
+// Bytes for the terminal as they are (graph data, escapes), not dialogue text.
+void write_raw(std::string_view bytes);
 
 }  // namespace igds

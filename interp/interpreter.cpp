@@ -231,7 +231,8 @@ void Interpreter::report(std::string_view text) {
 
 void Interpreter::show(const Image& image) {
   if (options_.term != TermMode::none) {
-    write_out(display_bytes(image, options_.term, options_.tek));
+    write_raw(display_bytes(image, options_.term, options_.tek));
+    if (TekDialogue* dialogue = tek_dialogue_in_use()) dialogue->displayed(image);
     return;
   }
   if (!told_how_to_see_) {
@@ -243,11 +244,12 @@ void Interpreter::show(const Image& image) {
 }
 
 void Interpreter::erase() {
-  write_out(erase_bytes(options_.term, options_.tek));
+  write_raw(erase_bytes(options_.term, options_.tek));
+  if (TekDialogue* dialogue = tek_dialogue_in_use()) write_raw(dialogue->home());
 }
 
 void Interpreter::send_to_terminal(std::string_view bytes) {
-  write_out(bytes);
+  write_raw(bytes);
 }
 
 void Interpreter::end_session(bool apl) {

@@ -61,7 +61,7 @@ int igds_main(int argc, char** argv) {
                            : choose_term(isatty(STDOUT_FILENO) == 1, std::getenv("TERM"),
                                          std::getenv("XTERM_VERSION"));
 
-  set_seven_bit_output(options.term == TermMode::tek);
+  set_tek_dialogue(options.term == TermMode::tek ? std::optional(options.tek) : std::nullopt);
 
   // Every command file is opened before anything starts: a missing one stops igds at once.
   std::vector<int> files;
@@ -86,7 +86,7 @@ int igds_main(int argc, char** argv) {
     Session session(disk);
     Workspace ws = session.load();
     Interpreter interpreter(options, disk, session, std::move(ws));
-    write_out(home_bytes(options.term, options.tek));
+    if (TekDialogue* dialogue = tek_dialogue_in_use()) write_raw(dialogue->home());
     for (const auto& notice : session.notices()) interpreter.say(notice);
 
     auto outcome = Interpreter::Outcome::input_ended;
