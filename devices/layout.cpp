@@ -14,7 +14,12 @@ DevicePoint draw_tek_display(const Image& image, Device& device, int unit) {
     device.text({unit * text_x, unit * y}, line);
     y -= line_height;
   }
-  return {unit * text_x, unit * y};
+  return below_description(pic.description.size(), unit);
+}
+
+DevicePoint below_description(std::size_t lines, int unit) {
+  using namespace tek_screen;
+  return {unit * text_x, unit * (text_top - static_cast<int>(lines) * line_height)};
 }
 
 }  // namespace igds

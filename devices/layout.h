@@ -21,6 +21,10 @@ inline constexpr int char_width = 14;    // 4013 alpha: 74 characters of 14 poin
 inline constexpr int text_columns = (width - text_x) / char_width;  // 17: never past x = 1023
 }  // namespace tek_screen
 
+// Where the dialogue goes on after a DISPLAY whose description has `lines` lines: the start of
+// the line below it, at x = 780 (in device units, `unit` times the 4013's).
+DevicePoint below_description(std::size_t lines, int unit);
+
 // Draws `image` in the left square of the screen and its description, one item per line, at
 // x = 780 on `device`, whose units are `unit` times the 4013's (1 for 10-bit, 4 for 12-bit).
 // Returns where the dialogue goes on: the start of the line below the description.

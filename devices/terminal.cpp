@@ -41,19 +41,13 @@ std::string erase_bytes(TermMode mode, TekOptions tek) {
   return encoder.take();
 }
 
-std::string home_bytes(TermMode mode, TekOptions tek) {
-  if (mode != TermMode::tek) return {};
-  TekEncoder encoder(tek.bits);
-  const int unit = unit_of(tek);
-  encoder.alpha_at({0, tek_screen::text_top * unit});
-  return encoder.take();
-}
-
 std::string TekDialogue::home() {
   baseline_ = tek_screen::text_top;
   x_ = 0;
   column_ = 0;
-  return home_bytes(TermMode::tek, tek_);
+  TekEncoder encoder(tek_.bits);
+  encoder.alpha_at({0, tek_screen::text_top * unit_of(tek_)});
+  return encoder.take();
 }
 
 void TekDialogue::new_line(std::string& out) {
@@ -85,9 +79,9 @@ std::string TekDialogue::text(std::string_view text) {
 }
 
 void TekDialogue::displayed(const Image& image) {
-  const auto lines = describe(image.desim, description_width).size();
-  baseline_ = tek_screen::text_top - static_cast<int>(lines) * tek_screen::line_height;
-  x_ = tek_screen::text_x;
+  const DevicePoint at = below_description(describe(image.desim, description_width).size(), 1);
+  baseline_ = at.y;
+  x_ = at.x;
   column_ = 0;
 }
 

@@ -24,11 +24,6 @@ std::string display_bytes(const Image& image, TermMode mode, TekOptions tek);
 // ERASE: a page (ESC FF), with its character size and line style sent again; wrapped for xterm.
 std::string erase_bytes(TermMode mode, TekOptions tek);
 
-// The start of a session in tek mode: the alpha cursor at the top left of the screen, where the
-// first line of the dialogue goes, without erasing (a storage tube keeps what it shows). Empty
-// in the other modes, where the dialogue is not on the Tek screen.
-std::string home_bytes(TermMode mode, TekOptions tek);
-
 // The dialogue on the Tek screen in tek mode: where its next line goes. Lines end in CR LF, a line
 // too long for the screen is broken at its right edge (as the terminal would, but counted), and a
 // line that would fall below the bottom of the screen goes back to the top left instead. (A 4013
@@ -37,8 +32,8 @@ std::string home_bytes(TermMode mode, TekOptions tek);
 class TekDialogue {
  public:
   explicit TekDialogue(TekOptions tek) : tek_(tek) {}
-  // The alpha cursor to the top left (as home_bytes), where the dialogue starts and goes on after
-  // a page.
+  // The alpha cursor to the top left, without erasing (a storage tube keeps what it shows): where
+  // the dialogue starts, and goes on after a page.
   std::string home();
   // `text` with each line end made CR LF, or a move back to the top left at the bottom.
   std::string text(std::string_view text);

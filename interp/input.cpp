@@ -198,8 +198,8 @@ std::optional<std::string> line_read;
 std::string keys;
 int key_fd = 0;
 
-// Reads what the terminal holds, without waiting: false when nothing was there.
-bool read_keys() {
+// Reads what the terminal holds, without waiting (nothing, when Ctrl-C has just flushed it).
+void read_keys() {
   const int flags = fcntl(key_fd, F_GETFL);
   fcntl(key_fd, F_SETFL, flags | O_NONBLOCK);
   char chunk[256];
@@ -207,7 +207,6 @@ bool read_keys() {
   fcntl(key_fd, F_SETFL, flags);
   if (n > 0) keys.append(chunk, static_cast<std::size_t>(n));
   if (n == 0) keys += '\x04';  // the terminal is gone: as Ctrl-D
-  return n != -1;
 }
 
 // readline's getc: the next key, waiting for one only when a multi-byte key is incomplete. EOF

@@ -27,7 +27,15 @@ TEST_CASE("the Tek dialogue: lines end in CR LF and go back to the top left at t
     CAPTURE(bits);
     TekDialogue dialogue({bits});
     const std::string home = dialogue.home();
-    CHECK(home == home_bytes(TermMode::tek, {bits}));
+    // A dark move to the top left, then alpha mode: nothing drawn, nothing erased.
+    const auto decoded = test::devices::decode_tek(home, bits);
+    CHECK(decoded.paths.empty());
+    CHECK(decoded.pages == 0);
+    CHECK(decoded.ends_in_alpha);
+    REQUIRE(decoded.beam);
+    const int unit = bits == 12 ? 4 : 1;
+    CHECK(decoded.beam->x == 0);
+    CHECK(decoded.beam->y == tek_screen::text_top * unit);
     std::string lines;
     for (int i = 0; i < 100; ++i) lines += "READY\n";
     const std::string out = dialogue.text(lines);
@@ -55,19 +63,26 @@ TEST_CASE("the Tek dialogue: a line too long for the screen is broken at its rig
   CHECK(dialogue.text(std::string(20, 'Y')) == std::string(17, 'Y') + "\r\nYYY");
 }
 
-TEST_CASE("the Tek dialogue after a DISPLAY starts below the description, as the stream says") {
-  const Image image = test::devices::surface_image(3, 4);
-  const auto lines = describe(image.desim, description_width).size();
-  REQUIRE(lines >= 2);
-  TekDialogue dialogue({10});
-  dialogue.home();
-  dialogue.displayed(image);
-  // From the line below the description, the lines left before the bottom are fewer by as many.
-  std::string many;
-  for (int i = 0; i < 40; ++i) many += "L\n";
-  const std::string out = dialogue.text(many);
-  const int below = static_cast<int>(tek_screen::text_top / tek_screen::line_height - lines);
-  CHECK(count(out.substr(0, out.find(dialogue.home())), "\r\n") == below);
+TEST_CASE("the Tek dialogue after a DISPLAY goes on where the stream leaves the alpha cursor") {
+  for (const Image& image :
+       {test::devices::surface_image(3, 4), test::devices::input_image(3, 4)}) {
+    // Where display_bytes really leaves the beam, decoded from the stream.
+    const auto decoded = test::devices::decode_tek(display_bytes(image, TermMode::tek, {10}), 10);
+    REQUIRE(decoded.ends_in_alpha);
+    REQUIRE(decoded.beam);
+    CHECK(decoded.beam->x == tek_screen::text_x);
+    TekDialogue dialogue({10});
+    dialogue.home();
+    dialogue.displayed(image);
+    // From there, the lines the dialogue writes before it goes back to the top are those left
+    // above the bottom baseline.
+    std::string many;
+    for (int i = 0; i < 40; ++i) many += "L\n";
+    const std::string out = dialogue.text(many);
+    const int bottom = tek_screen::text_top % tek_screen::line_height;
+    const int left = (decoded.beam->y - bottom) / tek_screen::line_height;
+    CHECK(count(out.substr(0, out.find(TekDialogue({10}).home())), "\r\n") == left);
+  }
 }
 
 }  // namespace igds

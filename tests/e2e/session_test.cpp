@@ -314,9 +314,10 @@ TEST_CASE("tek mode: the output is what a 4013 receives") {
   CHECK(r.out.find('\x1d') != std::string::npos);
   CHECK(r.out.find("NOT DRAWN") == std::string::npos);
   // The dialogue starts at the top left of the screen, without erasing it.
-  CHECK(r.out.starts_with(home_bytes(TermMode::tek, {}) + "READY\r\n"));
-  CHECK(home_bytes(TermMode::tek, {}).starts_with('\x1d'));
-  CHECK(home_bytes(TermMode::tek, {}).ends_with('\x1f'));
+  const std::string home = TekDialogue({}).home();
+  CHECK(r.out.starts_with(home + "READY\r\n"));
+  CHECK(home.starts_with('\x1d'));
+  CHECK(home.ends_with('\x1f'));
   // A 4013 starts a line at the left margin only after CR LF: no bare LF reaches it.
   for (std::size_t at = r.out.find('\n'); at != std::string::npos; at = r.out.find('\n', at + 1)) {
     REQUIRE(at > 0);

@@ -272,6 +272,12 @@ TEST_CASE("a damaged session is never half-loaded: kept aside, empty start, noti
         fs::create_directory(s.dir.path() / first);
         expect_empty_start(fmt::format("DAMAGED ({}: IS A DIRECTORY)", first), "BINSAVE.IGDSBAD");
       }
+      SUBCASE("a FIFO, which must not hang the start") {
+        fs::remove(s.dir.path() / first);
+        REQUIRE(::mkfifo((s.dir.path() / first).c_str(), 0600) == 0);
+        expect_empty_start(fmt::format("DAMAGED ({}: NOT A REGULAR FILE)", first),
+                           "BINSAVE.IGDSBAD");
+      }
     }
     SUBCASE("another good one in its place") {
       std::string other = *std::next(vars.begin());

@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -75,6 +76,7 @@ class Fd {
   Fd(const Fd&) = delete;
   Fd& operator=(const Fd&) = delete;
   int get() const { return fd_; }
+  int release() { return std::exchange(fd_, -1); }
   void finish() {
     int fd = fd_;
     fd_ = -1;
@@ -84,6 +86,23 @@ class Fd {
  private:
   int fd_;
 };
+
+// Opens a file to read it whole: -1 when there is no such file, IoError for a folder or
+// anything else that is not a regular file. O_NONBLOCK: a FIFO put where a file should be must
+// not hang igds.
+int open_regular(const std::filesystem::path& path, std::size_t& size) {
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+  if (fd.get() < 0) {
+    if (errno == ENOENT) return -1;
+    throw IoError{errno};
+  }
+  struct stat st;
+  if (::fstat(fd.get(), &st) != 0) throw IoError{errno};
+  if (S_ISDIR(st.st_mode)) throw IoError{EISDIR};
+  if (!S_ISREG(st.st_mode)) throw IoError{EINVAL, "NOT A REGULAR FILE"};
+  size = static_cast<std::size_t>(st.st_size);
+  return fd.release();
+}
 
 // Creates (or truncates) `path` without following a symbolic link, writes `bytes`, syncs.
 void write_and_sync(const std::filesystem::path& path, std::string_view bytes) {
@@ -352,19 +371,12 @@ void sync_folder(const std::filesystem::path& dir) {
 }
 
 std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
-  // O_NONBLOCK: a FIFO put where a file should be must not hang igds.
-  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-  if (fd.get() < 0) {
-    if (errno == ENOENT) return std::nullopt;
-    throw IoError{errno};
-  }
-  struct stat st;
-  if (::fstat(fd.get(), &st) != 0) throw IoError{errno};
-  if (S_ISDIR(st.st_mode)) throw IoError{EISDIR};
-  if (!S_ISREG(st.st_mode)) throw IoError{EINVAL, "NOT A REGULAR FILE"};
+  std::size_t size = 0;
+  Fd fd(open_regular(path, size));
+  if (fd.get() < 0) return std::nullopt;
   std::string data;
   // One byte more than the file: the read that finds its end needs no second, copying buffer.
-  data.resize(static_cast<std::size_t>(st.st_size) + 1);
+  data.resize(size + 1);
   std::size_t got = 0;
   for (;;) {
     if (got == data.size()) data.resize(data.size() + 4096);  // the file grew meanwhile
@@ -381,18 +393,9 @@ std::optional<std::string> read_whole_file(const std::filesystem::path& path) {
 }
 
 MappedFile::MappedFile(const std::filesystem::path& path) {
-  // O_NONBLOCK: a FIFO put where a file should be must not hang igds.
-  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-  if (fd.get() < 0) {
-    if (errno == ENOENT) return;
-    throw IoError{errno};
-  }
-  struct stat st;
-  if (::fstat(fd.get(), &st) != 0) throw IoError{errno};
-  if (S_ISDIR(st.st_mode)) throw IoError{EISDIR};
-  if (!S_ISREG(st.st_mode)) throw IoError{EINVAL, "NOT A REGULAR FILE"};
+  Fd fd(open_regular(path, size_));
+  if (fd.get() < 0) return;
   exists_ = true;
-  size_ = static_cast<std::size_t>(st.st_size);
   if (size_ == 0) return;
   data_ = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
   if (data_ == MAP_FAILED) {
