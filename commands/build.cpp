@@ -1,7 +1,7 @@
 // BUILD (manual 4.1): a new current surface from the keyboard.
 #include "commands/command.h"
 #include "commands/entries.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

@@ -3,8 +3,9 @@
 
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/reports.h"
+#include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/report.h"
 
 namespace igds {
 
@@ -88,7 +89,7 @@ void run_change(Context& ctx, int option) {
       interpolate_into(input, surface);
   } catch (const DataError& e) {
     give_back();
-    throw Report(fmt::format("{}; THE SURFACE IS NOT CHANGED", e.what()));
+    throw worded(e, "THE SURFACE IS NOT CHANGED");
   } catch (...) {
     give_back();
     throw;

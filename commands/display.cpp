@@ -3,7 +3,7 @@
 #include "commands/entries.h"
 #include "commands/file_name.h"
 #include "commands/view.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

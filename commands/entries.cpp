@@ -6,9 +6,10 @@
 #include <cmath>
 
 #include "commands/command.h"
+#include "commands/reports.h"
 #include "workspace/apl.h"
+#include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/report.h"
 
 namespace igds {
 
@@ -27,7 +28,7 @@ std::optional<long long> parse_integer(std::string_view word, long long low, lon
   return static_cast<long long>(*value);
 }
 
-EntryError apply_point_entry(std::span<const std::string> words, Array& inppn) {
+EntryOutcome apply_point_entry(std::span<const std::string> words, Array& inppn) {
   const long long count = static_cast<long long>(inppn.size() / 3);
   if (words.size() < 4 || (words.size() - 1) % 3 != 0) return reports::incorrect_entry;
   auto k = parse_integer(words[0], 1, count);
@@ -73,8 +74,8 @@ Array zero_tangents(int nocur, int nostr) {
   return inptg;
 }
 
-EntryError apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr,
-                               Array& inptg) {
+EntryOutcome apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr,
+                                 Array& inptg) {
   if (words.size() != 4 && words.size() != 5) return reports::incorrect_entry;
   const long long count = static_cast<long long>(nocur) * nostr;
   auto k = parse_integer(words[0], 1, count);
@@ -122,8 +123,8 @@ std::optional<GridSize> parse_grid_size(std::span<const std::string> words) {
   return GridSize{static_cast<int>(*nocur), static_cast<int>(*nostr)};
 }
 
-EntryError parse_density(std::span<const std::string> words, int nocur, int nostr,
-                         Density& density) {
+EntryOutcome parse_density(std::span<const std::string> words, int nocur, int nostr,
+                           Density& density) {
   if (words.size() != 2) return reports::incorrect_entry;
   const auto limit = static_cast<long long>(max_grid_points);
   auto intcu = parse_integer(words[0], 0, limit);
@@ -199,7 +200,7 @@ Surface interpolate_surface(int nocur, int nostr, Density density, const Array& 
   try {
     return interpolate(input);
   } catch (const DataError& e) {
-    throw Report(fmt::format("{}; THE SURFACE IS NOT CHANGED", e.what()));
+    throw worded(e, "THE SURFACE IS NOT CHANGED");
   }
 }
 

@@ -24,15 +24,15 @@ inline constexpr std::size_t max_grid_points = 4'000'000;
 
 // The outcome of parsing an entry: nullopt when it is fine, else the report to print (the
 // words of INCORRECT ENTRY, possibly followed by what is wrong).
-using EntryError = std::optional<std::string>;
+using EntryOutcome = std::optional<std::string>;
 
 // `k x y z [x y z ...]`: the triplets go to points k, k+1, ... of `inppn` ((NOCUR*NOSTR) x 3).
-EntryError apply_point_entry(std::span<const std::string> words, Array& inppn);
+EntryOutcome apply_point_entry(std::span<const std::string> words, Array& inppn);
 
 // `k tx ty tz` at a border point that is not a corner, `k tx ty tz f` at a corner (f = 1 along
 // the curve, 0 along the stringer): sets the matching row of `inptg` (spec igds.md section 3).
-EntryError apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr,
-                               Array& inptg);
+EntryOutcome apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr,
+                                 Array& inptg);
 
 // NOCUR NOSTR: two integers >= 2 (and not more than max_input_points points).
 struct GridSize {
@@ -44,8 +44,8 @@ std::optional<GridSize> parse_grid_size(std::span<const std::string> words);
 struct Density {
   int intcu = 0, intst = 0;
 };
-EntryError parse_density(std::span<const std::string> words, int nocur, int nostr,
-                         Density& density);
+EntryOutcome parse_density(std::span<const std::string> words, int nocur, int nostr,
+                           Density& density);
 
 // The INPTG row of the tangent at point k (1-based) along the curve (along_curve) or along the
 // stringer; -1 when k is not a border point of that kind.

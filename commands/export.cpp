@@ -7,7 +7,7 @@
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

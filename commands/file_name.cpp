@@ -1,7 +1,7 @@
 #include "commands/file_name.h"
 
 #include "workspace/disk/disk.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

@@ -10,7 +10,7 @@
 #include "commands/entries.h"
 #include "devices/plot.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

@@ -1,7 +1,7 @@
 // SAVE [name] (manual 4.6): the current surface in the binary file NAME IGDSDATA.
 #include "commands/command.h"
 #include "commands/file_name.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

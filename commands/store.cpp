@@ -2,7 +2,7 @@
 #include "commands/command.h"
 #include "commands/entries.h"
 #include "commands/file_name.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

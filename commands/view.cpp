@@ -7,9 +7,9 @@
 #include "commands/command.h"
 #include "commands/entries.h"
 #include "workspace/apl.h"
+#include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/project.h"
-#include "workspace/report.h"
 
 namespace igds {
 
@@ -25,41 +25,21 @@ std::optional<std::vector<double>> finite_numbers(std::span<const std::string> w
   return values;
 }
 
-// Projects `in` as the view says; CONIC looks at `centre`, the centre of the input points.
-void project(std::span<const Vec3> in, const View& view, Vec3 centre, std::span<Point2> out) {
-  const auto& p = view.parameters;
-  switch (view.projection) {
-    case Projection::conic:
-      conic(in, {p[0], p[1], p[2]}, centre, out);
-      break;
-    case Projection::isometric:
-      isom(in, static_cast<int>(p[0]), p[1], out);
-      break;
-    case Projection::assonometric:
-      asson(in, p, out);
-      break;
-    case Projection::orthogonal:
-      orthog(in, static_cast<int>(p[0]), out);
-      break;
-  }
-}
-
 Description describe(int what, const View& view) {
   return {what, view.projection, view.parameters};
 }
 
 // The view point of a conic projection must lie outside what is looked at.
-void check_view_point(const View& view, std::span<const Vec3> points) {
+void check_view_point(const View& view, Vec3View points) {
   if (view.projection != Projection::conic) return;
   Vec3 v{view.parameters[0], view.parameters[1], view.parameters[2]};
   if (inside_bounding_box(points, v)) throw Report(reports::incorrect_parameter);
 }
 
-Array projected(std::span<const Vec3> points, std::vector<std::size_t> shape, const View& view,
-                Vec3 centre) {
+Array projected(Vec3View points, std::vector<std::size_t> shape, const View& view, Vec3 centre) {
   Array out(std::move(shape));
   try {
-    project(points, view, centre, as_point2(out));
+    project(view, centre, points, as_point2(out));
   } catch (const DataError&) {
     throw Report(reports::incorrect_parameter);
   }
@@ -140,16 +120,16 @@ Image input_image(const Workspace& ws, const View& view) {
     // The projection's derivative along T: (proj(P + hT) - proj(P)) / h, with h|T| small
     // against the surface, so that CONIC arrows follow the perspective at their base.
     const double h = 1e-6 * size / length;
-    const Vec3 ends[2] = {points[k - 1], points[k - 1] + h * t};
-    Point2 projected_ends[2];
+    const Vec3 base = points[k - 1], tip = base + h * t;
+    const double ends[6] = {base.x, base.y, base.z, tip.x, tip.y, tip.z};
+    double projected[4];
     try {
-      project(ends, view, centre, projected_ends);
+      project(view, centre, Vec3View(ends, 2), MutablePoint2View(projected, 2));
     } catch (const DataError&) {
       throw Report(reports::incorrect_parameter);
     }
-    arrows.insert(arrows.end(), {projected_ends[0].x, projected_ends[0].y,
-                                 (projected_ends[1].x - projected_ends[0].x) / h,
-                                 (projected_ends[1].y - projected_ends[0].y) / h});
+    arrows.insert(arrows.end(), {projected[0], projected[1], (projected[2] - projected[0]) / h,
+                                 (projected[3] - projected[1]) / h});
   }
   if (!arrows.empty()) {
     image.arrows.shape = {arrows.size() / 4, 4};

@@ -10,13 +10,6 @@
 
 namespace igds {
 
-// A projection and its DESIM parameters: CONIC view point x y z; ISOMETRIC axis and angle;
-// ASSONOMETRIC three angles; ORTHOGONAL the plane code (1 XY, 2 XZ, 3 YZ).
-struct View {
-  Projection projection = Projection::orthogonal;
-  std::array<double, 3> parameters{};
-};
-
 // The projection named by `word` (first match in projection_words(), AXONOMETRIC included).
 std::optional<Projection> projection_named(std::string_view word);
 

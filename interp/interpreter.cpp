@@ -7,19 +7,17 @@
 #include <utility>
 
 #include "commands/entries.h"
+#include "commands/reports.h"
 #include "devices/terminal.h"
 #include "interp/apl_env.h"
 #include "interp/words.h"
 #include "workspace/apl.h"
+#include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/report.h"
 
 namespace igds {
 
 namespace {
-
-// --strict: the first error report in a command file abandons the command in progress.
-struct StrictStop {};
 
 constexpr std::array<std::string_view, 1> help_words{"HELP"};
 constexpr std::array<std::string_view, 2> help_lengths{"SHORT", "LONG"};  // STATUS[1] 0 and 1
@@ -136,7 +134,7 @@ void Interpreter::execute(const std::vector<std::string>& words) {
     report(r.what());
   } catch (const DataError& e) {
     running_ = false;
-    report(e.what());
+    report(worded(e).what());
   } catch (const Abandon&) {
     // Ctrl-C: nothing of the command was kept; READY follows.
   } catch (const EndOfInput&) {

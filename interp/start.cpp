@@ -17,7 +17,7 @@
 #include "interp/input.h"
 #include "interp/interpreter.h"
 #include "workspace/disk/session.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

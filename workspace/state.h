@@ -5,14 +5,9 @@
 #include <optional>
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/project.h"
 
 namespace igds {
-
-// DESIM[2]: the projection codes of the manual.
-enum class Projection : int { conic = 1, assonometric = 2, isometric = 3, orthogonal = 4 };
-
-// DESIM[3] for ORTHOGONAL: the plane of projection, as the manual numbers them.
-enum class Plane : int { xy = 1, xz = 2, yz = 3 };
 
 // DESIM: what an image shows and how it was projected.
 struct Description {

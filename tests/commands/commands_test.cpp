@@ -7,7 +7,7 @@
 #include "commands/view.h"
 #include "tests/commands/fake_context.h"
 #include "tests/support/process.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 extern const Command build_command;

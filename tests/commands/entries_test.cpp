@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds::test {
 

@@ -16,7 +16,7 @@
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 extern const Command plot_command;

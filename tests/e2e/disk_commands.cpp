@@ -12,7 +12,7 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/session.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 using namespace igds;
 namespace fs = std::filesystem;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "workspace/kernels/array.h"
@@ -23,6 +24,36 @@ struct Random {
     return lo + (hi - lo) * double(z >> 11) * 0x1.0p-53;
   }
   Vec3 vec(double lo, double hi) { return {uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)}; }
+};
+
+// Points kept as doubles, as the kernels' views want them, made from a list of points.
+template <class P>
+struct Flat {
+  std::vector<double> d;
+  Flat() = default;
+  Flat(std::initializer_list<P> points) { assign(std::vector<P>(points)); }
+  explicit Flat(const std::vector<P>& points) { assign(points); }
+  explicit Flat(std::size_t n, P fill = {}) { assign(std::vector<P>(n, fill)); }
+  void assign(const std::vector<P>& points) {
+    d.assign(P::dimension * points.size(), 0.0);
+    for (std::size_t i = 0; i < points.size(); ++i) points[i].store(&d[P::dimension * i]);
+  }
+  Flat& operator=(std::initializer_list<P> points) {
+    assign(std::vector<P>(points));
+    return *this;
+  }
+  std::size_t size() const { return d.size() / P::dimension; }
+  void resize(std::size_t n) { d.resize(P::dimension * n); }
+  P operator[](std::size_t i) const { return P::load(&d[P::dimension * i]); }
+  void set(std::size_t i, P p) { p.store(&d[P::dimension * i]); }
+  P back() const { return (*this)[size() - 1]; }
+  operator PointsView<P, const double>() const { return {d.data(), size()}; }
+  operator PointsView<P, double>() { return {d.data(), size()}; }
+  std::vector<P> points() const {
+    std::vector<P> out(size());
+    for (std::size_t i = 0; i < size(); ++i) out[i] = (*this)[i];
+    return out;
+  }
 };
 
 inline double distance(Vec3 a, Vec3 b) {

@@ -12,6 +12,7 @@
 #include "workspace/kernels/data_error.h"
 
 using namespace igds;
+using igds::test::Flat;
 using igds::test::Random;
 
 namespace {
@@ -24,10 +25,22 @@ constexpr double degree = std::numbers::pi / 180;
 
 // The images of the unit axes under ASSON: the columns of its 2 x 3 matrix.
 std::vector<Point2> asson_axes(std::array<double, 3> angles) {
-  std::vector<Vec3> axes = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-  std::vector<Point2> out(3);
+  Flat<Vec3> axes = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  Flat<Point2> out(3);
   asson(axes, angles, out);
-  return out;
+  return out.points();
+}
+
+// The problem a kernel call refuses with.
+template <class F>
+DataError::Problem problem_of(F f) {
+  try {
+    f();
+  } catch (const DataError& e) {
+    return e.problem;
+  }
+  FAIL("no DataError");
+  throw;
 }
 
 double angle_between(Point2 a, Point2 b) {
@@ -38,16 +51,16 @@ double angle_between(Point2 a, Point2 b) {
 }  // namespace
 
 TEST_CASE("ORTHOG drops a coordinate, planes numbered as DESIM[3]") {
-  std::vector<Vec3> in = {{1, 2, 3}, {-4, 5, -6}};
-  std::vector<Point2> out(2);
+  Flat<Vec3> in = {{1, 2, 3}, {-4, 5, -6}};
+  Flat<Point2> out(2);
   orthog(in, 1, out);
-  CHECK(out == std::vector<Point2>{{1, 2}, {-4, 5}});
+  CHECK(out.points() == std::vector<Point2>{{1, 2}, {-4, 5}});
   orthog(in, 2, out);
-  CHECK(out == std::vector<Point2>{{1, 3}, {-4, -6}});
+  CHECK(out.points() == std::vector<Point2>{{1, 3}, {-4, -6}});
   orthog(in, 3, out);
-  CHECK(out == std::vector<Point2>{{2, 3}, {5, -6}});
-  CHECK_THROWS_WITH_AS(orthog(in, 4, out), "INCORRECT PARAMETER", DataError);
-  CHECK_THROWS_WITH_AS(orthog(in, 0, out), "INCORRECT PARAMETER", DataError);
+  CHECK(out.points() == std::vector<Point2>{{2, 3}, {5, -6}});
+  CHECK(problem_of([&] { orthog(in, 4, out); }) == DataError::Problem::projection_parameters);
+  CHECK(problem_of([&] { orthog(in, 0, out); }) == DataError::Problem::projection_parameters);
 }
 
 TEST_CASE("ISOM: a worked example") {
@@ -55,8 +68,8 @@ TEST_CASE("ISOM: a worked example") {
   // Y = 2 + 4 sin 30 = 4. Axis 1 (x dropped), 45 degrees: P = (2, 3, 5) keeps (y, z) = (3, 5)
   // and adds 2 (cos 45, sin 45) = (√2, √2): (4.4142136, 6.4142136). Axis 2 at 0 degrees: (x + y,
   // z).
-  std::vector<Vec3> in = {{1, 2, 4}};
-  std::vector<Point2> out(1);
+  Flat<Vec3> in = {{1, 2, 4}};
+  Flat<Point2> out(1);
   isom(in, 3, 30, out);
   CHECK(out[0].x == doctest::Approx(4.4641016).epsilon(1e-8));
   CHECK(out[0].y == doctest::Approx(4.0).epsilon(1e-12));
@@ -71,8 +84,8 @@ TEST_CASE("ISOM: a worked example") {
 }
 
 TEST_CASE("ISOM refuses an axis other than 1 2 3 and an angle outside 0..90") {
-  std::vector<Vec3> in = {{1, 2, 3}};
-  std::vector<Point2> out(1);
+  Flat<Vec3> in = {{1, 2, 3}};
+  Flat<Point2> out(1);
   CHECK(isom_parameters_valid(1, 0));
   CHECK(isom_parameters_valid(3, 90));
   CHECK_FALSE(isom_parameters_valid(0, 45));
@@ -81,8 +94,8 @@ TEST_CASE("ISOM refuses an axis other than 1 2 3 and an angle outside 0..90") {
   CHECK_FALSE(isom_parameters_valid(2, -1));
   CHECK_FALSE(isom_parameters_valid(2, 90.5));
   CHECK_FALSE(isom_parameters_valid(2, NAN));
-  CHECK_THROWS_WITH_AS(isom(in, 4, 30, out), "INCORRECT PARAMETER", DataError);
-  CHECK_THROWS_WITH_AS(isom(in, 1, 91, out), "INCORRECT PARAMETER", DataError);
+  CHECK(problem_of([&] { isom(in, 4, 30, out); }) == DataError::Problem::projection_parameters);
+  CHECK(problem_of([&] { isom(in, 1, 91, out); }) == DataError::Problem::projection_parameters);
 }
 
 TEST_CASE("CONIC maps the centre to the origin and keeps sizes in the plane through the centre") {
@@ -93,8 +106,8 @@ TEST_CASE("CONIC maps the centre to the origin and keeps sizes in the plane thro
     const Vec3 w = (1 / norm(centre - view)) * (centre - view);
     // Two points in the plane through the centre, perpendicular to the line of sight.
     Vec3 a = cross(w, rnd.vec(-1, 1)), b = cross(w, rnd.vec(-1, 1));
-    std::vector<Vec3> in = {centre, centre + 3 * a, centre + 2 * b};
-    std::vector<Point2> out(3);
+    Flat<Vec3> in = {centre, centre + 3 * a, centre + 2 * b};
+    Flat<Point2> out(3);
     conic(in, view, centre, out);
     CHECK(dist2(out[0], {0, 0}) < 1e-12);
     CHECK(dist2(out[1], out[2]) == doctest::Approx(norm(3 * a - 2 * b)).epsilon(1e-12));
@@ -104,8 +117,8 @@ TEST_CASE("CONIC maps the centre to the origin and keeps sizes in the plane thro
 
 TEST_CASE("CONIC keeps z vertical and puts nearer things larger") {
   // Looking along +y from (0, -10, 0): x to the right, z up.
-  std::vector<Vec3> in = {{1, 0, 0}, {0, 0, 1}, {1, -5, 0}, {1, 10, 0}};
-  std::vector<Point2> out(4);
+  Flat<Vec3> in = {{1, 0, 0}, {0, 0, 1}, {1, -5, 0}, {1, 10, 0}};
+  Flat<Point2> out(4);
   conic(in, {0, -10, 0}, {0, 0, 0}, out);
   CHECK(dist2(out[0], {1, 0}) < 1e-15);
   CHECK(dist2(out[1], {0, 1}) < 1e-15);
@@ -120,14 +133,20 @@ TEST_CASE("CONIC keeps z vertical and puts nearer things larger") {
 }
 
 TEST_CASE("CONIC refuses a point behind the eye and a view point at the centre") {
-  std::vector<Vec3> in = {{0, 0, 0}, {0, -20, 0}};
-  std::vector<Point2> out(2, Point2{7, 7});
-  CHECK_THROWS_WITH_AS(conic(in, {0, -10, 0}, {0, 0, 0}, out), "INCORRECT PARAMETER", DataError);
+  Flat<Vec3> in = {{0, 0, 0}, {0, -20, 0}};
+  Flat<Point2> out(2, Point2{7, 7});
+  CHECK(problem_of([&] {
+          conic(in, {0, -10, 0}, {0, 0, 0}, out);
+        }) == DataError::Problem::behind_eye);
   // Nothing was written.
   CHECK(out[0] == Point2{7, 7});
   in = {{0, 0, 0}, {1, -10, 0}};  // beside the eye, in its own plane: still no image
-  CHECK_THROWS_WITH_AS(conic(in, {0, -10, 0}, {0, 0, 0}, out), "INCORRECT PARAMETER", DataError);
-  CHECK_THROWS_WITH_AS(conic(in, {1, 2, 3}, {1, 2, 3}, out), "INCORRECT PARAMETER", DataError);
+  CHECK(problem_of([&] {
+          conic(in, {0, -10, 0}, {0, 0, 0}, out);
+        }) == DataError::Problem::behind_eye);
+  CHECK(problem_of([&] {
+          conic(in, {1, 2, 3}, {1, 2, 3}, out);
+        }) == DataError::Problem::view_at_centre);
 }
 
 TEST_CASE("ASSON 120 120 120 foreshortens every axis by sqrt(2/3)") {
@@ -170,15 +189,19 @@ TEST_CASE("ASSON refuses angles out of range and sums other than 360") {
   CHECK_FALSE(asson_parameters_valid({110, 130, 121}));
   CHECK_FALSE(asson_parameters_valid({100, 100, 100}));
   CHECK_FALSE(asson_parameters_valid({NAN, 130, 120}));
-  std::vector<Vec3> in = {{1, 2, 3}};
-  std::vector<Point2> out(1);
-  CHECK_THROWS_WITH_AS(asson(in, {110, 130, 121}, out), "INCORRECT PARAMETER", DataError);
-  CHECK_THROWS_WITH_AS(asson(in, {200, 80, 80}, out), "INCORRECT PARAMETER", DataError);
+  Flat<Vec3> in = {{1, 2, 3}};
+  Flat<Point2> out(1);
+  CHECK(problem_of([&] {
+          asson(in, {110, 130, 121}, out);
+        }) == DataError::Problem::projection_parameters);
+  CHECK(problem_of([&] {
+          asson(in, {200, 80, 80}, out);
+        }) == DataError::Problem::projection_parameters);
 }
 
 TEST_CASE("projections want an output as long as the input") {
-  std::vector<Vec3> in(3);
-  std::vector<Point2> out(2);
+  Flat<Vec3> in(3);
+  Flat<Point2> out(2);
   CHECK_THROWS_AS(orthog(in, 1, out), std::length_error);
   CHECK_THROWS_AS(isom(in, 1, 30, out), std::length_error);
   CHECK_THROWS_AS(conic(in, {0, -1, 0}, {0, 0, 0}, out), std::length_error);
@@ -186,45 +209,55 @@ TEST_CASE("projections want an output as long as the input") {
 }
 
 TEST_CASE("the bounding box: its centre, and whether a point lies inside") {
-  std::vector<Vec3> pts = {{0, 0, 0}, {4, -2, 1}, {1, 6, -3}};
+  Flat<Vec3> pts = {{0, 0, 0}, {4, -2, 1}, {1, 6, -3}};
   CHECK(bounding_box_centre(pts) == Vec3{2, 2, -1});
-  CHECK(bounding_box_centre({}) == Vec3{});
-  std::vector<Vec3> huge = {{1.5e308, -1.5e308, 0}, {1.7e308, 1.5e308, 0}};
+  CHECK(bounding_box_centre(Vec3View{}) == Vec3{});
+  Flat<Vec3> huge = {{1.5e308, -1.5e308, 0}, {1.7e308, 1.5e308, 0}};
   CHECK(bounding_box_centre(huge) == Vec3{1.6e308, 0, 0});
   CHECK(inside_bounding_box(pts, {2, 2, -1}));
   CHECK(inside_bounding_box(pts, {4, 6, 1}));
   CHECK_FALSE(inside_bounding_box(pts, {4.01, 2, 0}));
   CHECK_FALSE(inside_bounding_box(pts, {2, 2, -3.5}));
-  CHECK_FALSE(inside_bounding_box({}, {0, 0, 0}));
+  CHECK_FALSE(inside_bounding_box(Vec3View{}, {0, 0, 0}));
 }
 
-TEST_CASE("SCALE: uniform scale, aspect kept, centred, with a margin") {
-  // A 2 x 1 image into 1000 x 800 with a 5% margin of the smaller side (40): room 920 x 720, so
-  // the width limits the scale to 460 and the image is 920 x 460, centred at (500, 400).
-  std::vector<Point2> pts = {{-1, 3}, {1, 4}, {0, 3.5}};
-  Scaling s = scale_into(pts, {0, 0, 1000, 800}, 0.05);
-  CHECK(s.scale == doctest::Approx(460));
-  CHECK(dist2(s.apply({-1, 3}), {40, 170}) < 1e-9);
-  CHECK(dist2(s.apply({1, 4}), {960, 630}) < 1e-9);
-  // A tall image is limited by the height.
-  std::vector<Point2> tall = {{0, 0}, {1, 10}};
-  Scaling t = scale_into(tall, {100, 100, 300, 300}, 0);
-  CHECK(t.scale == doctest::Approx(20));
-  CHECK(dist2(t.apply({0.5, 5}), {200, 200}) < 1e-12);
-}
-
-TEST_CASE("SCALE of a single point, a line, nothing and non-finite points") {
-  std::vector<Point2> one = {{5, 5}};
-  Scaling s = scale_into(one, {0, 0, 100, 50}, 0.1);
-  CHECK(dist2(s.apply({5, 5}), {50, 25}) < 1e-12);
-  std::vector<Point2> line = {{0, 2}, {10, 2}};
-  Scaling l = scale_into(line, {0, 0, 100, 50}, 0.1);
-  CHECK(l.scale == doctest::Approx(9));
-  CHECK(dist2(l.apply({0, 2}), {5, 25}) < 1e-12);
-  Scaling none = scale_into({}, {0, 0, 100, 50}, 0.1);
-  CHECK(dist2(none.apply({0, 0}), {50, 25}) < 1e-12);
-  std::vector<Point2> mixed = {{0, 0}, {NAN, 1}, {2, INFINITY}, {4, 4}};
-  Scaling m = scale_into(mixed, {0, 0, 8, 8}, 0);
-  CHECK(m.scale == doctest::Approx(2));
-  CHECK(std::isfinite(m.offset_x + m.offset_y));
+TEST_CASE("project() is the four projections, and projection_map() the same as a matrix") {
+  Random rnd(32);
+  Flat<Vec3> in;
+  std::vector<Vec3> list;
+  for (int k = 0; k < 20; ++k) list.push_back(rnd.vec(-10, 10));
+  in.assign(list);
+  const Vec3 centre = bounding_box_centre(in);
+  const View views[] = {
+      {Projection::conic, {40, -30, 25}},  {Projection::assonometric, {110, 130, 120}},
+      {Projection::isometric, {1, 30, 0}}, {Projection::isometric, {2, 45, 0}},
+      {Projection::isometric, {3, 90, 0}}, {Projection::orthogonal, {1, 0, 0}},
+      {Projection::orthogonal, {2, 0, 0}}, {Projection::orthogonal, {3, 0, 0}},
+  };
+  for (const View& view : views) {
+    CAPTURE(static_cast<int>(view.projection));
+    CAPTURE(view.parameters[0]);
+    REQUIRE(view_parameters_valid(view));
+    Flat<Point2> out(in.size());
+    project(view, centre, in, out);
+    const ProjectiveMap map = projection_map(view, centre);
+    CHECK(map.perspective == (view.projection == Projection::conic));
+    for (std::size_t k = 0; k < in.size(); ++k) {
+      auto h = map.apply(in[k]);
+      CHECK(h[2] > 0);
+      CHECK(dist2(out[k], {h[0] / h[2], h[1] / h[2]}) <
+            1e-12 * (1 + std::hypot(out[k].x, out[k].y)));
+    }
+  }
+  // The same checks as the functions the entry point dispatches to.
+  Flat<Point2> out(in.size());
+  CHECK(problem_of([&] {
+          project({Projection::orthogonal, {4, 0, 0}}, centre, in, out);
+        }) == DataError::Problem::projection_parameters);
+  CHECK(problem_of([&] {
+          projection_map({Projection::assonometric, {100, 100, 100}}, centre);
+        }) == DataError::Problem::projection_parameters);
+  CHECK(problem_of([&] {
+          project({Projection::conic, {0, 0, 0}}, centre, in, out);
+        }) == DataError::Problem::behind_eye);
 }

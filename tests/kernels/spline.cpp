@@ -14,6 +14,16 @@ using igds::test::Random;
 
 namespace {
 
+// spline_tangents on points kept as objects (the kernel takes a view of doubles).
+void spline_of(const std::vector<Vec3>& points, Vec3 first, Vec3 last, std::vector<Vec3>& out,
+               SplineScratch* scratch = nullptr) {
+  igds::test::Flat<Vec3> flat(points);
+  if (scratch)
+    spline_tangents(flat, first, last, out, *scratch);
+  else
+    spline_tangents(flat, first, last, out);
+}
+
 // First and second derivatives with respect to the arc length t = s·L of the Hermite arc, from
 // the derivatives of F0 F1 G0 G1 (math.md), written out independently of the kernel.
 Vec3 first_derivative(Vec3 p0, Vec3 p1, Vec3 t0, Vec3 t1, double s) {
@@ -77,7 +87,7 @@ TEST_CASE("the spline passes through its points and keeps the given end tangents
   auto p = random_line(rnd, 9);
   Vec3 first = rnd.vec(-2, 2), last = rnd.vec(-2, 2);
   std::vector<Vec3> t(p.size());
-  spline_tangents(p, first, last, t);
+  spline_of(p, first, last, t);
   CHECK(t.front() == first);
   CHECK(t.back() == last);
   for (std::size_t k = 0; k + 1 < p.size(); ++k) {
@@ -94,7 +104,7 @@ TEST_CASE("first and second derivatives are continuous at interior points") {
   for (int trial = 0; trial < 20; ++trial) {
     auto p = random_line(rnd, 3 + trial);
     std::vector<Vec3> t(p.size());
-    spline_tangents(p, rnd.vec(-2, 2), rnd.vec(-2, 2), t);
+    spline_of(p, rnd.vec(-2, 2), rnd.vec(-2, 2), t);
     for (std::size_t k = 1; k + 1 < p.size(); ++k) {
       Vec3 d1_left = first_derivative(p[k - 1], p[k], t[k - 1], t[k], 1);
       Vec3 d1_right = first_derivative(p[k], p[k + 1], t[k], t[k + 1], 0);
@@ -112,7 +122,7 @@ TEST_CASE("the Thomas algorithm agrees with a dense solve of the same system") {
     auto p = random_line(rnd, n);
     Vec3 first = rnd.vec(-2, 2), last = rnd.vec(-2, 2);
     std::vector<Vec3> t(n);
-    spline_tangents(p, first, last, t);
+    spline_of(p, first, last, t);
     auto reference = dense_solve(p, first, last);
     for (std::size_t k = 0; k < n; ++k) CHECK(distance(t[k], reference[k]) < 1e-12);
   }
@@ -121,7 +131,7 @@ TEST_CASE("the Thomas algorithm agrees with a dense solve of the same system") {
 TEST_CASE("a straight line with unit end tangents has unit tangents everywhere") {
   std::vector<Vec3> p = {{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {3.5, 0, 0}, {7, 0, 0}};
   std::vector<Vec3> t(p.size());
-  spline_tangents(p, {1, 0, 0}, {1, 0, 0}, t);
+  spline_of(p, {1, 0, 0}, {1, 0, 0}, t);
   for (auto v : t) CHECK(distance(v, {1, 0, 0}) < 1e-14);
   // ... and the arc is then traversed at unit speed: the point at s is at s·L along the line.
   CHECK(distance(spline_arc_point(p[3], p[4], t[3], t[4], 0.25), {3.5 + 0.25 * 3.5, 0, 0}) < 1e-14);
@@ -132,13 +142,13 @@ TEST_CASE("equal consecutive points are merged and share their merged point's ta
   auto distinct = random_line(rnd, 5);
   Vec3 first = rnd.vec(-1, 1), last = rnd.vec(-1, 1);
   std::vector<Vec3> expected(5);
-  spline_tangents(distinct, first, last, expected);
+  spline_of(distinct, first, last, expected);
   // Points 0 and 2 doubled, point 4 tripled.
   std::vector<Vec3> p = {distinct[0], distinct[0], distinct[1], distinct[2], distinct[2],
                          distinct[3], distinct[4], distinct[4], distinct[4]};
   std::vector<std::size_t> merged = {0, 0, 1, 2, 2, 3, 4, 4, 4};
   std::vector<Vec3> t(p.size());
-  spline_tangents(p, first, last, t);
+  spline_of(p, first, last, t);
   for (std::size_t k = 0; k < p.size(); ++k) {
     CAPTURE(k);
     CHECK(t[k] == expected[merged[k]]);
@@ -150,17 +160,17 @@ TEST_CASE("equal consecutive points are merged and share their merged point's ta
 TEST_CASE("a line whose points all coincide gets zero tangents") {
   std::vector<Vec3> p(4, Vec3{1, 2, 3});
   std::vector<Vec3> t(4, Vec3{9, 9, 9});
-  spline_tangents(p, {1, 0, 0}, {0, 1, 0}, t);
+  spline_of(p, {1, 0, 0}, {0, 1, 0}, t);
   for (auto v : t) CHECK(v == Vec3{});
   std::vector<Vec3> single = {{4, 5, 6}}, single_t(1);
-  spline_tangents(single, {1, 0, 0}, {0, 1, 0}, single_t);
+  spline_of(single, {1, 0, 0}, {0, 1, 0}, single_t);
   CHECK(single_t[0] == Vec3{});
 }
 
 TEST_CASE("two distinct points keep the given tangents") {
   std::vector<Vec3> p = {{0, 0, 0}, {0, 0, 0}, {1, 1, 1}};
   std::vector<Vec3> t(3);
-  spline_tangents(p, {1, 2, 3}, {4, 5, 6}, t);
+  spline_of(p, {1, 2, 3}, {4, 5, 6}, t);
   CHECK(t[0] == Vec3{1, 2, 3});
   CHECK(t[1] == Vec3{1, 2, 3});
   CHECK(t[2] == Vec3{4, 5, 6});
@@ -171,12 +181,12 @@ TEST_CASE("chord lengths do not overflow: tangents are the same at any scale") {
   auto p = random_line(rnd, 8);
   Vec3 first = rnd.vec(-1, 1), last = rnd.vec(-1, 1);
   std::vector<Vec3> t(8), huge_t(8), tiny_t(8);
-  spline_tangents(p, first, last, t);
+  spline_of(p, first, last, t);
   std::vector<Vec3> huge(p), tiny(p);
   for (auto& q : huge) q = 1e200 * q;
   for (auto& q : tiny) q = 1e-200 * q;
-  spline_tangents(huge, first, last, huge_t);
-  spline_tangents(tiny, first, last, tiny_t);
+  spline_of(huge, first, last, huge_t);
+  spline_of(tiny, first, last, tiny_t);
   for (std::size_t k = 0; k < 8; ++k) {
     CHECK(distance(huge_t[k], t[k]) < 1e-12);
     CHECK(distance(tiny_t[k], t[k]) < 1e-12);
@@ -190,8 +200,8 @@ TEST_CASE("the scratch space can be reused across lines of different lengths") {
     auto p = random_line(rnd, n);
     Vec3 first = rnd.vec(-1, 1), last = rnd.vec(-1, 1);
     std::vector<Vec3> with(n), without(n);
-    spline_tangents(p, first, last, with, scratch);
-    spline_tangents(p, first, last, without);
+    spline_of(p, first, last, with, &scratch);
+    spline_of(p, first, last, without);
     CHECK(with == without);
   }
 }

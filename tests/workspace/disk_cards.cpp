@@ -11,7 +11,7 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "workspace/disk/cards.h"
 #include "workspace/disk/disk.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 using namespace igds;
 

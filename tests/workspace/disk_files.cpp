@@ -10,7 +10,7 @@
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/disk.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 using namespace igds;
 namespace fs = std::filesystem;

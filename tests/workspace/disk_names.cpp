@@ -6,7 +6,7 @@
 #include "tests/support/process.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "workspace/disk/disk.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 using namespace igds;
 namespace fs = std::filesystem;

@@ -22,7 +22,7 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 using namespace igds;
 namespace fs = std::filesystem;

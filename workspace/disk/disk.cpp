@@ -6,7 +6,7 @@
 
 #include "workspace/disk/cards.h"
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

@@ -18,7 +18,7 @@
 #include <fmt/format.h>
 
 #include "workspace/disk/format.h"
-#include "workspace/report.h"
+#include "workspace/error.h"
 
 namespace igds {
 

@@ -11,7 +11,7 @@ Vec3 border_tangent(const Array& inptg, std::size_t row) {
   return {r[0], r[1], r[2]};
 }
 
-GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, const Array& inptg) {
+GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg) {
   const std::size_t nc = nocur, ns = nostr;
   GridTangents t;
   t.along_curves.resize(nc * ns);
@@ -28,10 +28,11 @@ GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, c
   // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1.
   auto stringers = [&] {
     SplineScratch scratch;
-    std::vector<Vec3> column(nc), column_tangents(nc);
+    std::vector<double> column(3 * nc);
+    std::vector<Vec3> column_tangents(nc);
     for (std::size_t j = 0; j < ns; ++j) {
-      for (std::size_t i = 0; i < nc; ++i) column[i] = points[i * ns + j];
-      spline_tangents(column, border_tangent(inptg, 2 * nc + 2 * j),
+      for (std::size_t i = 0; i < nc; ++i) Vec3(points[i * ns + j]).store(&column[3 * i]);
+      spline_tangents(Vec3View(column.data(), nc), border_tangent(inptg, 2 * nc + 2 * j),
                       border_tangent(inptg, 2 * nc + 2 * j + 1), column_tangents, scratch);
       for (std::size_t i = 0; i < nc; ++i) t.along_stringers[i * ns + j] = column_tangents[i];
     }
@@ -43,7 +44,7 @@ GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, c
   return t;
 }
 
-void coons_patches(int nocur, int nostr, std::span<const Vec3> points, const GridTangents& tangents,
+void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
                    Array& patches) {
   const std::size_t nc = nocur, ns = nostr;
   const std::size_t count = (nc - 1) * (ns - 1) * 48;

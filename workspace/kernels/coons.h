@@ -23,12 +23,12 @@ Vec3 border_tangent(const Array& inptg, std::size_t row);
 
 // Splines (CURVILINEO) along every curve and every stringer of the NOCUR x NOSTR points, clamped
 // by the border tangents of INPTG (2(NOCUR+NOSTR) x 4, row order as in workspace/state.h).
-GridTangents grid_tangents(int nocur, int nostr, std::span<const Vec3> points, const Array& inptg);
+GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg);
 
 // PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of math.md,
 // corners, then tangents scaled by the chord length of their arc, zero twists. Written into
 // `patches`, whose memory is reused when it is large enough (large_array.h).
-void coons_patches(int nocur, int nostr, std::span<const Vec3> points, const GridTangents& tangents,
+void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
                    Array& patches);
 
 }  // namespace igds

@@ -1,13 +1,42 @@
-// Data a kernel cannot work with. what() is a report in IGDS style, in capitals, naming the
-// point, e.g. "INCORRECT ENTRY: POINT 5 IS NOT A FINITE NUMBER".
+// Data a kernel cannot work with. Kernels say what is wrong with typed fields, never in words
+// meant for the user: the commands layer words the report (commands/reports.h).
 #pragma once
 
-#include <stdexcept>
+#include <cstddef>
+#include <exception>
+#include <string>
+#include <vector>
 
 namespace igds {
 
-struct DataError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct DataError : std::exception {
+  enum class Problem {
+    point_not_finite,       // `number`: the point (1-based)
+    tangent_not_finite,     // `number`: the border point of the tangent
+    patch_not_finite,       // `number`: the patch, row by row from 1
+    twist_not_finite,       // `number`: the point
+    shape,                  // `variable` has `shape`, not `expected`
+    missing,                // `variable` is not there
+    grid_too_small,         // NOCUR or NOSTR below 1, or a grid of one point
+    negative_density,       // INTCU or INTST below 0
+    too_many_points,        // `count` points, more than `limit`
+    projection_parameters,  // parameters out of range for the projection
+    behind_eye,             // CONIC: a point behind (or beside) the eye
+    view_at_centre,         // CONIC: the view point is the centre
+  };
+
+  Problem problem;
+  std::size_t number = 0;
+  std::string variable;
+  std::vector<std::size_t> shape, expected;
+  double count = 0, limit = 0;
+
+  explicit DataError(Problem p) : problem(p) {}
+  // A developer's account of the problem, in English (not a report).
+  const char* what() const noexcept override;
+
+ private:
+  mutable std::string text_;
 };
 
 }  // namespace igds

@@ -247,8 +247,8 @@ void use_fit_code(FitCode code) {
   fit_code.store(code);
 }
 
-void fit(int nocur, int nostr, int intcu, int intst, const Array& patches,
-         std::span<const Vec3> points, Array& intpn) {
+void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
+         Array& intpn) {
   const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);
   const unsigned threads = threads_for(shape.rows * shape.cols * 3);
   reuse_for_output(intpn, {shape.rows, shape.cols, 3}, threads);
@@ -271,7 +271,7 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches,
   parallel_for(shape.rows, threads,
                [&job](std::size_t first, std::size_t last) { fit_rows(job, first, last); });
   // The input points come out bit-exact (math.md).
-  Vec3* grid = as_vec3(intpn).data();
+  MutableVec3View grid = as_vec3(intpn);
   for (std::size_t i = 0; i < std::size_t(nocur); ++i) {
     for (std::size_t j = 0; j < std::size_t(nostr); ++j) {
       grid[i * (intcu + 1) * shape.cols + j * (intst + 1)] = points[i * nostr + j];

@@ -21,8 +21,8 @@ GridShape intpn_shape(int nocur, int nostr, int intcu, int intst);
 // is W M W^T per coordinate, evaluated relative to the centre of the input points' bounding box.
 // The NOCUR x NOSTR input `points` are then copied bit-exactly to their places. Written into
 // `intpn`, whose memory is reused when it is large enough (large_array.h).
-void fit(int nocur, int nostr, int intcu, int intst, const Array& patches,
-         std::span<const Vec3> points, Array& intpn);
+void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
+         Array& intpn);
 
 // Which compiled form of the FIT loops runs: the best the processor allows (the default), or the
 // baseline one everywhere (so that tests exercise both on a machine that has AVX2).

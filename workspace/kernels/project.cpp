@@ -13,45 +13,184 @@ namespace {
 
 constexpr double degree = std::numbers::pi / 180;
 
-void check_sizes(std::span<const Vec3> in, std::span<Point2> out) {
+void check_sizes(Vec3View in, MutablePoint2View out) {
   if (out.size() != in.size()) throw std::length_error("projection: output size differs");
 }
 
-[[noreturn]] void incorrect_parameter() {
-  throw DataError("INCORRECT PARAMETER");
+[[noreturn]] void refuse(DataError::Problem problem) {
+  throw DataError(problem);
 }
 
 Vec3 unit(Vec3 v) {
   return (1 / norm(v)) * v;
 }
 
-}  // namespace
+// CONIC's frame (math.md): w towards the centre, r to the right of it, t up, z vertical on the
+// screen; D the distance from the eye to the centre.
+struct ConicFrame {
+  Vec3 w, r, t;
+  double distance;
+};
 
-void orthog(std::span<const Vec3> in, int plane, std::span<Point2> out) {
-  check_sizes(in, out);
-  // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
-  switch (plane) {
-    case 1:
-      for (std::size_t k = 0; k < in.size(); ++k) out[k] = {in[k].x, in[k].y};
-      return;
-    case 2:
-      for (std::size_t k = 0; k < in.size(); ++k) out[k] = {in[k].x, in[k].z};
-      return;
-    case 3:
-      for (std::size_t k = 0; k < in.size(); ++k) out[k] = {in[k].y, in[k].z};
-      return;
-    default:
-      incorrect_parameter();
-  }
+ConicFrame conic_frame(Vec3 view, Vec3 centre) {
+  const Vec3 axis = centre - view;
+  const double distance = norm(axis);
+  if (!std::isfinite(distance)) refuse(DataError::Problem::projection_parameters);
+  if (!(distance > 0)) refuse(DataError::Problem::view_at_centre);
+  const Vec3 w = unit(axis);
+  Vec3 side = cross(w, Vec3{0, 0, 1});
+  if (norm(side) < 1e-6) side = cross(w, Vec3{0, 1, 0});
+  const Vec3 r = unit(side);
+  return {w, r, cross(r, w), distance};
 }
+
+// ASSON's 2 x 3 matrix (math.md): foreshortenings of a true orthographic axonometric view.
+struct AssonMatrix {
+  double xx, xy, yx, yy, yz;
+};
+
+AssonMatrix asson_matrix(std::array<double, 3> angles_degrees) {
+  const double xy = angles_degrees[0] * degree, yz = angles_degrees[1] * degree,
+               zx = angles_degrees[2] * degree;
+  const double kx = std::sqrt(-std::cos(yz) / (std::sin(xy) * std::sin(zx)));
+  const double ky = std::sqrt(-std::cos(zx) / (std::sin(yz) * std::sin(xy)));
+  const double kz = std::sqrt(-std::cos(xy) / (std::sin(zx) * std::sin(yz)));
+  return {-kx * std::sin(zx), ky * std::sin(yz), kx * std::cos(zx), ky * std::cos(yz), kz};
+}
+
+bool finite(Vec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
 
 bool isom_parameters_valid(double axis, double angle_degrees) {
   return (axis == 1 || axis == 2 || axis == 3) && angle_degrees >= 0 && angle_degrees <= 90;
 }
 
-void isom(std::span<const Vec3> in, int axis, double angle_degrees, std::span<Point2> out) {
+bool asson_parameters_valid(std::array<double, 3> a) {
+  for (double angle : a) {
+    if (!(angle > 90 && angle < 180)) return false;
+  }
+  return std::abs(a[0] + a[1] + a[2] - 360) <= 1e-9;
+}
+
+bool view_parameters_valid(const View& view) {
+  const auto& p = view.parameters;
+  switch (view.projection) {
+    case Projection::conic:
+      return finite({p[0], p[1], p[2]});
+    case Projection::assonometric:
+      return asson_parameters_valid(p);
+    case Projection::isometric:
+      return isom_parameters_valid(p[0], p[1]);
+    case Projection::orthogonal:
+      return p[0] == 1 || p[0] == 2 || p[0] == 3;
+  }
+  return false;
+}
+
+void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+  const auto& p = view.parameters;
+  switch (view.projection) {
+    case Projection::conic:
+      conic(in, {p[0], p[1], p[2]}, centre, out);
+      return;
+    case Projection::isometric:
+      isom(in, static_cast<int>(p[0]), p[1], out);
+      return;
+    case Projection::assonometric:
+      asson(in, p, out);
+      return;
+    case Projection::orthogonal:
+      orthog(in, static_cast<int>(p[0]), out);
+      return;
+  }
+  refuse(DataError::Problem::projection_parameters);
+}
+
+std::array<double, 3> ProjectiveMap::apply(Vec3 p) const {
+  std::array<double, 3> out;
+  for (int i = 0; i < 3; ++i) out[i] = m[i][0] * p.x + m[i][1] * p.y + m[i][2] * p.z + m[i][3];
+  return out;
+}
+
+ProjectiveMap projection_map(const View& view, Vec3 centre) {
+  if (!view_parameters_valid(view)) refuse(DataError::Problem::projection_parameters);
+  ProjectiveMap map;
+  map.m[2][3] = 1;  // h = 1 for the parallel projections
+  const auto& p = view.parameters;
+  auto row = [&map](int i, double x, double y, double z, double c) {
+    map.m[i][0] = x, map.m[i][1] = y, map.m[i][2] = z, map.m[i][3] = c;
+  };
+  switch (view.projection) {
+    case Projection::orthogonal: {
+      const int plane = static_cast<int>(p[0]);
+      row(0, plane == 3 ? 0 : 1, plane == 3 ? 1 : 0, 0, 0);
+      row(1, 0, plane == 1 ? 1 : 0, plane == 1 ? 0 : 1, 0);
+      break;
+    }
+    case Projection::isometric: {
+      const int axis = static_cast<int>(p[0]);
+      const double c = std::cos(p[1] * degree), s = std::sin(p[1] * degree);
+      // X = r1 + d cos a, Y = r2 + d sin a, r1 r2 the kept coordinates in x y z order.
+      if (axis == 1) row(0, c, 1, 0, 0), row(1, s, 0, 1, 0);
+      if (axis == 2) row(0, 1, c, 0, 0), row(1, 0, s, 1, 0);
+      if (axis == 3) row(0, 1, 0, c, 0), row(1, 0, 1, s, 0);
+      break;
+    }
+    case Projection::assonometric: {
+      const AssonMatrix a = asson_matrix(p);
+      row(0, a.xx, a.xy, 0, 0);
+      row(1, a.yx, a.yy, a.yz, 0);
+      break;
+    }
+    case Projection::conic: {
+      const Vec3 eye{p[0], p[1], p[2]};
+      const ConicFrame f = conic_frame(eye, centre);
+      // X = D (P-V).r / (P-V).w: with h = (P-V).w / D, X h = (P-V).r and Y h = (P-V).t.
+      row(0, f.r.x, f.r.y, f.r.z, -dot(eye, f.r));
+      row(1, f.t.x, f.t.y, f.t.z, -dot(eye, f.t));
+      const double d = 1 / f.distance;
+      row(2, d * f.w.x, d * f.w.y, d * f.w.z, -d * dot(eye, f.w));
+      map.perspective = true;
+      break;
+    }
+  }
+  return map;
+}
+
+void orthog(Vec3View in, int plane, MutablePoint2View out) {
   check_sizes(in, out);
-  if (!isom_parameters_valid(axis, angle_degrees)) incorrect_parameter();
+  // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
+  switch (plane) {
+    case 1:
+      for (std::size_t k = 0; k < in.size(); ++k) {
+        const Vec3 p = in[k];
+        out[k] = Point2{p.x, p.y};
+      }
+      return;
+    case 2:
+      for (std::size_t k = 0; k < in.size(); ++k) {
+        const Vec3 p = in[k];
+        out[k] = Point2{p.x, p.z};
+      }
+      return;
+    case 3:
+      for (std::size_t k = 0; k < in.size(); ++k) {
+        const Vec3 p = in[k];
+        out[k] = Point2{p.y, p.z};
+      }
+      return;
+    default:
+      refuse(DataError::Problem::projection_parameters);
+  }
+}
+
+void isom(Vec3View in, int axis, double angle_degrees, MutablePoint2View out) {
+  check_sizes(in, out);
+  if (!isom_parameters_valid(axis, angle_degrees))
+    refuse(DataError::Problem::projection_parameters);
   // math.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn obliquely.
   const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
   for (std::size_t k = 0; k < in.size(); ++k) {
@@ -64,57 +203,36 @@ void isom(std::span<const Vec3> in, int axis, double angle_degrees, std::span<Po
     } else {
       r1 = p.x, r2 = p.y, d = p.z;
     }
-    out[k] = {r1 + d * c, r2 + d * s};
+    out[k] = Point2{r1 + d * c, r2 + d * s};
   }
 }
 
-void conic(std::span<const Vec3> in, Vec3 view, Vec3 centre, std::span<Point2> out) {
+void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
   check_sizes(in, out);
-  const Vec3 axis = centre - view;
-  const double distance = norm(axis);
-  if (!(distance > 0) || !std::isfinite(distance)) incorrect_parameter();
-  // math.md: w towards the centre, r to the right of it, t up, z vertical on the screen.
-  const Vec3 w = unit(axis);
-  Vec3 side = cross(w, Vec3{0, 0, 1});
-  if (norm(side) < 1e-6) side = cross(w, Vec3{0, 1, 0});
-  const Vec3 r = unit(side);
-  const Vec3 t = cross(r, w);
+  if (!finite(view)) refuse(DataError::Problem::projection_parameters);
+  const ConicFrame f = conic_frame(view, centre);
   // Refuse before writing anything: a point behind the eye has no image.
   for (const Vec3& p : in) {
-    if (!(dot(p - view, w) > 0)) incorrect_parameter();
+    if (!(dot(p - view, f.w) > 0)) refuse(DataError::Problem::behind_eye);
   }
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3 q = in[k] - view;
-    const double depth = dot(q, w);
-    out[k] = {distance * dot(q, r) / depth, distance * dot(q, t) / depth};
+    const double depth = dot(q, f.w);
+    out[k] = Point2{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
   }
 }
 
-bool asson_parameters_valid(std::array<double, 3> a) {
-  for (double angle : a) {
-    if (!(angle > 90 && angle < 180)) return false;
-  }
-  return std::abs(a[0] + a[1] + a[2] - 360) <= 1e-9;
-}
-
-void asson(std::span<const Vec3> in, std::array<double, 3> angles_degrees, std::span<Point2> out) {
+void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out) {
   check_sizes(in, out);
-  if (!asson_parameters_valid(angles_degrees)) incorrect_parameter();
-  const double xy = angles_degrees[0] * degree, yz = angles_degrees[1] * degree,
-               zx = angles_degrees[2] * degree;
-  // math.md: foreshortenings of a true orthographic axonometric view, cyclic in x y z.
-  const double kx = std::sqrt(-std::cos(yz) / (std::sin(xy) * std::sin(zx)));
-  const double ky = std::sqrt(-std::cos(zx) / (std::sin(yz) * std::sin(xy)));
-  const double kz = std::sqrt(-std::cos(xy) / (std::sin(zx) * std::sin(yz)));
-  const double xx = -kx * std::sin(zx), xy_ = ky * std::sin(yz);
-  const double yx = kx * std::cos(zx), yy = ky * std::cos(yz), yz_ = kz;
+  if (!asson_parameters_valid(angles_degrees)) refuse(DataError::Problem::projection_parameters);
+  const AssonMatrix a = asson_matrix(angles_degrees);
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3 p = in[k];
-    out[k] = {xx * p.x + xy_ * p.y, yx * p.x + yy * p.y + yz_ * p.z};
+    out[k] = Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
   }
 }
 
-Vec3 bounding_box_centre(std::span<const Vec3> points) {
+Vec3 bounding_box_centre(Vec3View points) {
   if (points.empty()) return {};
   Vec3 lo = points[0], hi = points[0];
   for (const Vec3& p : points) {
@@ -125,7 +243,7 @@ Vec3 bounding_box_centre(std::span<const Vec3> points) {
   return {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2};
 }
 
-bool inside_bounding_box(std::span<const Vec3> points, Vec3 p) {
+bool inside_bounding_box(Vec3View points, Vec3 p) {
   if (points.empty()) return false;
   Vec3 lo = points[0], hi = points[0];
   for (const Vec3& q : points) {
@@ -133,36 +251,6 @@ bool inside_bounding_box(std::span<const Vec3> points, Vec3 p) {
     hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
   }
   return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
-}
-
-Scaling scale_into(std::span<const Point2> points, Rect target, double margin) {
-  // The manual's SCALE: one factor for both axes (shapes are not distorted), image centred.
-  double lo_x = INFINITY, lo_y = INFINITY, hi_x = -INFINITY, hi_y = -INFINITY;
-  for (const Point2& p : points) {
-    if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-    lo_x = std::min(lo_x, p.x), hi_x = std::max(hi_x, p.x);
-    lo_y = std::min(lo_y, p.y), hi_y = std::max(hi_y, p.y);
-  }
-  const double width = target.x1 - target.x0, height = target.y1 - target.y0;
-  const double inset =
-      std::clamp(std::isfinite(margin) ? margin : 0.0, 0.0, 0.45) * std::min(width, height);
-  const double room_x = width - 2 * inset, room_y = height - 2 * inset;
-  const double mid_x = target.x0 + width / 2, mid_y = target.y0 + height / 2;
-  Scaling s;
-  if (!(lo_x <= hi_x)) {
-    // Nothing finite to show: the origin goes to the middle.
-    s.offset_x = mid_x, s.offset_y = mid_y;
-    return s;
-  }
-  const double span_x = hi_x - lo_x, span_y = hi_y - lo_y;
-  double scale = INFINITY;
-  if (span_x > 0) scale = std::min(scale, room_x / span_x);
-  if (span_y > 0) scale = std::min(scale, room_y / span_y);
-  if (!std::isfinite(scale)) scale = 1;  // a single point: any scale puts it in the middle
-  s.scale = scale;
-  s.offset_x = mid_x - scale * (lo_x / 2 + hi_x / 2);
-  s.offset_y = mid_y - scale * (lo_y / 2 + hi_y / 2);
-  return s;
 }
 
 }  // namespace igds

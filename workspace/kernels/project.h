@@ -1,46 +1,69 @@
-// The projections of DISPLAY (manual section 4.4 and 7: ORTHOG, ISOM, CONIC, ASSON) and SCALE.
+// The projections of DISPLAY (manual section 4.4 and 7: ORTHOG, ISOM, CONIC, ASSON), behind one
+// entry point: a View (DESIM[2] and its parameters) applied to points, or as a projective map for
+// the curves of a drawing (workspace/drawing/project.h).
 #pragma once
 
 #include <array>
-#include <span>
 
 #include "workspace/kernels/vec3.h"
 
 namespace igds {
 
+// DESIM[2]: the projection codes of the manual.
+enum class Projection : int { conic = 1, assonometric = 2, isometric = 3, orthogonal = 4 };
+
+// DESIM[3] for ORTHOGONAL: the plane of projection, as the manual numbers them.
+enum class Plane : int { xy = 1, xz = 2, yz = 3 };
+
+// A projection and its parameters as DESIM[3 4 5] holds them: CONIC the view point x y z;
+// ASSONOMETRIC the three angles; ISOMETRIC the axis (1 2 3) and the angle; ORTHOGONAL the plane
+// code.
+struct View {
+  Projection projection = Projection::orthogonal;
+  std::array<double, 3> parameters{1, 0, 0};
+  friend bool operator==(const View&, const View&) = default;
+};
+
+// True when the parameters are in range for the projection (CONIC: finite numbers; the eye's
+// place against the points is checked when projecting).
+bool view_parameters_valid(const View& view);
+
+// The entry point: `in` projected as `view` says into `out` (as long as `in`). CONIC looks from
+// the view point at `centre`, the centre of the input points' bounding box; the other projections
+// ignore it. Throws DataError (projection_parameters, behind_eye, view_at_centre) before writing
+// anything.
+void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
+
+// The same projection as a map of homogeneous coordinates: (X h, Y h, h) = M (x, y, z, 1). The
+// parallel projections have h = 1; CONIC has h the depth along the line of sight divided by D,
+// positive in front of the eye. A rational curve maps to a rational curve of the same degree with
+// its weights multiplied by h (the drawing's projection uses this to keep curves exact).
+struct ProjectiveMap {
+  double m[3][4] = {};
+  bool perspective = false;
+  // X, Y and h of a point.
+  std::array<double, 3> apply(Vec3 p) const;
+};
+ProjectiveMap projection_map(const View& view, Vec3 centre);
+
+// The manual's four functions, which project() dispatches to.
 // ORTHOGONAL plane: 1 XY -> (x, y), 2 XZ -> (x, z), 3 YZ -> (y, z) (DESIM[3] of the manual).
-void orthog(std::span<const Vec3> in, int plane, std::span<Point2> out);
-
+void orthog(Vec3View in, int plane, MutablePoint2View out);
 // ISOMETRIC: axis 1, 2, 3 (x, y, z) dropped, angle in degrees, 0..90 (math.md).
-void isom(std::span<const Vec3> in, int axis, double angle_degrees, std::span<Point2> out);
-
-// CONIC from view point V towards the centre C of the input's bounding box (math.md). Throws
-// DataError("INCORRECT PARAMETER") when a point is behind the eye or V equals C.
-void conic(std::span<const Vec3> in, Vec3 view, Vec3 centre, std::span<Point2> out);
-
+void isom(Vec3View in, int axis, double angle_degrees, MutablePoint2View out);
+// CONIC from view point V towards the centre C of the input's bounding box (math.md).
+void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out);
 // ASSONOMETRIC (axonometric) with the angles between the projected x-y, y-z, z-x axes, each
-// strictly between 90 and 180 degrees, summing to 360 (math.md). Throws DataError otherwise.
-void asson(std::span<const Vec3> in, std::array<double, 3> angles_degrees, std::span<Point2> out);
+// strictly between 90 and 180 degrees, summing to 360 (math.md).
+void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out);
 
 // Parameter checks, shared by the kernels and by the prompts that ask for them.
 bool isom_parameters_valid(double axis, double angle_degrees);
 bool asson_parameters_valid(std::array<double, 3> angles_degrees);
 
 // Centre of the bounding box of a set of points (the CONIC centre, the local origin).
-Vec3 bounding_box_centre(std::span<const Vec3> points);
+Vec3 bounding_box_centre(Vec3View points);
 // True when `p` lies inside (or on) the bounding box of `points`.
-bool inside_bounding_box(std::span<const Vec3> points, Vec3 p);
-
-// SCALE: the uniform scale and offset that fit the points' bounding box into the rectangle
-// [x0, x1] x [y0, y1], aspect kept, centred, after removing `margin` (a fraction of the
-// rectangle's smaller side) on every side. A single point or a line still maps inside.
-struct Scaling {
-  double scale = 1, offset_x = 0, offset_y = 0;
-  Point2 apply(Point2 p) const { return {offset_x + scale * p.x, offset_y + scale * p.y}; }
-};
-struct Rect {
-  double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
-};
-Scaling scale_into(std::span<const Point2> points, Rect target, double margin);
+bool inside_bounding_box(Vec3View points, Vec3 p);
 
 }  // namespace igds

@@ -13,7 +13,8 @@ namespace {
 // L_i = |q_(i+1) - q_i| (math.md, coefficients crossed on purpose):
 //   L_i TG_(i-1) + 2(L_i + L_(i-1)) TG_i + L_(i-1) TG_(i+1)
 //     = 3((L_(i-1)/L_i)(q_(i+1) - q_i) + (L_i/L_(i-1))(q_i - q_(i-1)))
-void solve(std::span<const Vec3> q, Vec3 first, Vec3 last, std::span<Vec3> tg, double* cp) {
+template <class Points>
+void solve(const Points& q, Vec3 first, Vec3 last, std::span<Vec3> tg, double* cp) {
   const std::size_t m = q.size();
   cp[0] = 0;
   tg[0] = first;
@@ -42,13 +43,13 @@ void solve(std::span<const Vec3> q, Vec3 first, Vec3 last, std::span<Vec3> tg, d
 
 }  // namespace
 
-void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out,
+void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out,
                      SplineScratch& scratch) {
   assert(out.size() == points.size());
   const std::size_t n = points.size();
   if (n == 0) return;
   bool repeated = false;
-  for (std::size_t k = 1; k < n && !repeated; ++k) repeated = points[k] == points[k - 1];
+  for (std::size_t k = 1; k < n && !repeated; ++k) repeated = Vec3(points[k]) == points[k - 1];
   if (!repeated) {
     if (n == 1) {
       out[0] = Vec3{};  // a single point has no direction
@@ -76,11 +77,11 @@ void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::s
   }
   scratch.upper.resize(m);
   scratch.rhs.resize(m);
-  solve(q, first, last, scratch.rhs, scratch.upper.data());
+  solve(std::span<const Vec3>(q), first, last, scratch.rhs, scratch.upper.data());
   for (std::size_t k = 0; k < n; ++k) out[k] = scratch.rhs[to[k]];
 }
 
-void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out) {
+void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out) {
   SplineScratch scratch;
   spline_tangents(points, first, last, out, scratch);
 }

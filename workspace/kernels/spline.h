@@ -42,9 +42,9 @@ struct SplineScratch {
 // algorithm in O(n). Runs of equal consecutive points are merged, the spline is solved on the
 // distinct points and every duplicate gets its merged point's tangent; a line whose points all
 // coincide gets zero tangents. `out` has the size of `points`.
-void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out,
+void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out,
                      SplineScratch& scratch);
-void spline_tangents(std::span<const Vec3> points, Vec3 first, Vec3 last, std::span<Vec3> out);
+void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out);
 
 // The point at s in [0, 1] of the arc from p0 to p1 with tangents t0, t1 per unit of length: the
 // tangents are scaled by the chord length |p1 - p0| (math.md), so a zero-length arc is its point.

@@ -6,27 +6,31 @@
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
+#include "workspace/kernels/limits.h"
 
 namespace igds {
 
 namespace {
 
-// The largest INTPN accepted, in points (2.4 GB of doubles): beyond it the grid is refused
-// rather than failing half-way for lack of memory.
-constexpr double max_grid_points = 1e8;
-
-std::string shape_text(const std::vector<std::size_t>& shape) {
-  std::string s;
-  for (auto d : shape) s += (s.empty() ? "" : " ") + std::to_string(d);
-  return s.empty() ? "EMPTY" : s;
+void check_shape(const char* name, const Array* a, std::vector<std::size_t> expected) {
+  if (a == nullptr) {
+    DataError e(DataError::Problem::missing);
+    e.variable = name;
+    throw e;
+  }
+  if (a->shape != expected || a->size() != Array::count(expected)) {
+    DataError e(DataError::Problem::shape);
+    e.variable = name;
+    e.shape = a->shape;
+    e.expected = std::move(expected);
+    throw e;
+  }
 }
 
-void check_shape(const char* name, const Array* a, std::vector<std::size_t> expected) {
-  if (a == nullptr) throw DataError(std::string("INCORRECT ENTRY: ") + name + " NOT FOUND");
-  if (a->shape != expected || a->size() != Array::count(expected)) {
-    throw DataError(std::string("INCORRECT ENTRY: ") + name + " HAS SHAPE " + shape_text(a->shape) +
-                    ", NOT " + shape_text(expected));
-  }
+[[noreturn]] void refuse(DataError::Problem problem, std::size_t number) {
+  DataError e(problem);
+  e.number = number;
+  throw e;
 }
 
 bool finite(const double* v, int n) {
@@ -45,24 +49,20 @@ std::size_t tangent_point(const SurfaceInput& in, std::size_t row) {
 
 // What every interpolation needs: sizes, shapes, finite points (math.md, bad data).
 void check_grid(const SurfaceInput& in) {
-  if (in.nocur < 2 || in.nostr < 2) {
-    throw DataError("INCORRECT PARAMETER: NOCUR AND NOSTR MUST BE AT LEAST 2");
-  }
-  if (in.intcu < 0 || in.intst < 0) {
-    throw DataError("INCORRECT PARAMETER: INTCU AND INTST MUST NOT BE NEGATIVE");
-  }
-  const double rows = in.nocur + double(in.intcu) * (in.nocur - 1);
-  const double cols = in.nostr + double(in.intst) * (in.nostr - 1);
-  if (rows * cols > max_grid_points || double(in.nocur) * in.nostr > max_grid_points) {
-    throw DataError("INCORRECT PARAMETER: THE GRID WOULD HAVE MORE THAN 100000000 POINTS");
+  if (in.nocur < 2 || in.nostr < 2) throw DataError(DataError::Problem::grid_too_small);
+  if (in.intcu < 0 || in.intst < 0) throw DataError(DataError::Problem::negative_density);
+  const double inputs = double(in.nocur) * in.nostr;
+  const double points = grid_points(in.nocur, in.nostr, in.intcu, in.intst);
+  if (inputs > double(max_input_points) || points > double(max_grid_points)) {
+    DataError e(DataError::Problem::too_many_points);
+    e.count = inputs > double(max_input_points) ? inputs : points;
+    e.limit = double(inputs > double(max_input_points) ? max_input_points : max_grid_points);
+    throw e;
   }
   const std::size_t n = std::size_t(in.nocur) * std::size_t(in.nostr);
   check_shape("INPPN", in.inppn, {n, 3});
   for (std::size_t k = 0; k < n; ++k) {
-    if (!finite(in.inppn->data() + 3 * k, 3)) {
-      throw DataError("INCORRECT ENTRY: POINT " + std::to_string(k + 1) +
-                      " IS NOT A FINITE NUMBER");
-    }
+    if (!finite(in.inppn->data() + 3 * k, 3)) refuse(DataError::Problem::point_not_finite, k + 1);
   }
 }
 
@@ -71,10 +71,8 @@ void check_tangents(const SurfaceInput& in) {
   const std::size_t rows = 2 * (std::size_t(in.nocur) + std::size_t(in.nostr));
   check_shape("INPTG", in.inptg, {rows, 4});
   for (std::size_t r = 0; r < rows; ++r) {
-    if (!finite(in.inptg->data() + 4 * r, 3)) {
-      throw DataError("INCORRECT ENTRY: TANGENT AT POINT " + std::to_string(tangent_point(in, r)) +
-                      " IS NOT A FINITE NUMBER");
-    }
+    if (!finite(in.inptg->data() + 4 * r, 3))
+      refuse(DataError::Problem::tangent_not_finite, tangent_point(in, r));
   }
 }
 
@@ -82,10 +80,7 @@ void check_patches(const SurfaceInput& in, const Array& patches) {
   const std::size_t pr = in.nocur - 1, pc = in.nostr - 1;
   check_shape("PATCHES", &patches, {pr, pc, 3, 4, 4});
   for (std::size_t p = 0; p < pr * pc; ++p) {
-    if (!finite(patches.data() + 48 * p, 48)) {
-      throw DataError("INCORRECT ENTRY: PATCH " + std::to_string(p + 1) +
-                      " IS NOT A FINITE NUMBER");
-    }
+    if (!finite(patches.data() + 48 * p, 48)) refuse(DataError::Problem::patch_not_finite, p + 1);
   }
 }
 

@@ -1,19 +1,26 @@
-// Small value types of the kernels: a point or vector in space, a point of an image.
+// Small value types of the kernels: a point or vector in space, a point of an image, and views
+// of the arrays of doubles that hold them (x y z, x y z, ...).
 #pragma once
 
 #include <cmath>
+#include <cstddef>
+#include <iterator>
 #include <span>
+#include <type_traits>
 
 #include "workspace/kernels/array.h"
 
 namespace igds {
 
 struct Vec3 {
+  static constexpr std::size_t dimension = 3;
   double x = 0, y = 0, z = 0;
   friend Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
   friend Vec3 operator-(Vec3 a, Vec3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
   friend Vec3 operator*(double s, Vec3 a) { return {s * a.x, s * a.y, s * a.z}; }
   friend bool operator==(Vec3, Vec3) = default;
+  static Vec3 load(const double* d) { return {d[0], d[1], d[2]}; }
+  void store(double* d) const { d[0] = x, d[1] = y, d[2] = z; }
 };
 
 inline double dot(Vec3 a, Vec3 b) {
@@ -28,25 +35,110 @@ inline double norm(Vec3 a) {
 }
 
 struct Point2 {
+  static constexpr std::size_t dimension = 2;
   double x = 0, y = 0;
   friend bool operator==(Point2, Point2) = default;
+  static Point2 load(const double* d) { return {d[0], d[1]}; }
+  void store(double* d) const { d[0] = x, d[1] = y; }
 };
 
-static_assert(sizeof(Vec3) == 3 * sizeof(double));
-static_assert(sizeof(Point2) == 2 * sizeof(double));
+// A view of `size()` points kept as consecutive doubles (the last axis of an APL array). Points
+// are read and written by value through the doubles, never as Vec3 or Point2 objects laid over
+// them: the language allows only that (strict aliasing).
+template <class P, class Double>
+class PointsView {
+ public:
+  static constexpr std::size_t n = P::dimension;
+
+  // Reading yields a P; writing through a non-const view stores one.
+  class Ref {
+   public:
+    explicit Ref(Double* d) : d_(d) {}
+    operator P() const { return P::load(d_); }
+    Ref& operator=(P v) {
+      v.store(d_);
+      return *this;
+    }
+    Ref& operator=(const Ref& other) { return *this = P(other); }
+    Ref(const Ref&) = default;
+
+   private:
+    Double* d_;
+  };
+
+  class iterator {
+   public:
+    using iterator_category = std::random_access_iterator_tag;
+    using value_type = P;
+    using difference_type = std::ptrdiff_t;
+    iterator() = default;
+    explicit iterator(Double* d) : d_(d) {}
+    auto operator*() const {
+      if constexpr (std::is_const_v<Double>)
+        return P::load(d_);
+      else
+        return Ref(d_);
+    }
+    iterator& operator++() {
+      d_ += n;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      d_ += n;
+      return old;
+    }
+    friend bool operator==(iterator a, iterator b) { return a.d_ == b.d_; }
+    friend difference_type operator-(iterator a, iterator b) {
+      return static_cast<difference_type>(a.d_ - b.d_) / static_cast<difference_type>(n);
+    }
+
+   private:
+    Double* d_ = nullptr;
+  };
+
+  PointsView() = default;
+  PointsView(Double* data, std::size_t count) : data_(data), count_(count) {}
+  // A const view of a mutable one.
+  template <class Other>
+  requires(std::is_const_v<Double> && !std::is_const_v<Other>)
+      PointsView(PointsView<P, Other> other)
+      : data_(other.data()), count_(other.size()) {}
+
+  std::size_t size() const { return count_; }
+  bool empty() const { return count_ == 0; }
+  Double* data() const { return data_; }
+  auto operator[](std::size_t i) const { return *iterator(data_ + n * i); }
+  P front() const { return P::load(data_); }
+  P back() const { return P::load(data_ + n * (count_ - 1)); }
+  PointsView subspan(std::size_t first, std::size_t count) const {
+    return {data_ + n * first, count};
+  }
+  iterator begin() const { return iterator(data_); }
+  iterator end() const { return iterator(data_ + n * count_); }
+
+ private:
+  Double* data_ = nullptr;
+  std::size_t count_ = 0;
+};
+
+using Vec3View = PointsView<Vec3, const double>;
+using MutableVec3View = PointsView<Vec3, double>;
+using Point2View = PointsView<Point2, const double>;
+using MutablePoint2View = PointsView<Point2, double>;
 
 // Views of an array whose last axis holds x y z (or x y) as points.
-inline std::span<const Vec3> as_vec3(const Array& a) {
-  return {reinterpret_cast<const Vec3*>(a.data()), a.size() / 3};
+inline Vec3View as_vec3(const Array& a) {
+  return {a.data(), a.size() / 3};
 }
-inline std::span<Vec3> as_vec3(Array& a) {
-  return {reinterpret_cast<Vec3*>(a.data()), a.size() / 3};
+inline MutableVec3View as_vec3(Array& a) {
+  return {a.data(), a.size() / 3};
 }
-inline std::span<const Point2> as_point2(const Array& a) {
-  return {reinterpret_cast<const Point2*>(a.data()), a.size() / 2};
+inline Point2View as_point2(const Array& a) {
+  return {a.data(), a.size() / 2};
 }
-inline std::span<Point2> as_point2(Array& a) {
-  return {reinterpret_cast<Point2*>(a.data()), a.size() / 2};
+inline MutablePoint2View as_point2(Array& a) {
+  return {a.data(), a.size() / 2};
 }
 
 }  // namespace igds
