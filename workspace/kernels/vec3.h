@@ -66,60 +66,65 @@ class PointsView {
     Double* d_;
   };
 
+  // Walks by index, so that no pointer ever goes past the end of the array (a column's end
+  // would).
   class iterator {
    public:
-    using iterator_category = std::random_access_iterator_tag;
+    using iterator_category = std::forward_iterator_tag;
     using value_type = P;
     using difference_type = std::ptrdiff_t;
     iterator() = default;
-    explicit iterator(Double* d) : d_(d) {}
+    iterator(Double* d, std::size_t i, std::size_t stride) : d_(d), i_(i), stride_(stride) {}
     auto operator*() const {
       if constexpr (std::is_const_v<Double>)
-        return P::load(d_);
+        return P::load(d_ + stride_ * i_);
       else
-        return Ref(d_);
+        return Ref(d_ + stride_ * i_);
     }
     iterator& operator++() {
-      d_ += n;
+      ++i_;
       return *this;
     }
     iterator operator++(int) {
       iterator old = *this;
-      d_ += n;
+      ++i_;
       return old;
     }
-    friend bool operator==(iterator a, iterator b) { return a.d_ == b.d_; }
-    friend difference_type operator-(iterator a, iterator b) {
-      return static_cast<difference_type>(a.d_ - b.d_) / static_cast<difference_type>(n);
-    }
+    friend bool operator==(iterator a, iterator b) { return a.i_ == b.i_; }
 
    private:
     Double* d_ = nullptr;
+    std::size_t i_ = 0, stride_ = n;
   };
 
   PointsView() = default;
-  PointsView(Double* data, std::size_t count) : data_(data), count_(count) {}
+  // `count` points from `data`, `stride` doubles apart (n when they follow each other; a column
+  // of a grid has the row's length times n).
+  PointsView(Double* data, std::size_t count, std::size_t stride = n)
+      : data_(data), count_(count), stride_(stride) {}
   // A const view of a mutable one.
   template <class Other>
   requires(std::is_const_v<Double> && !std::is_const_v<Other>)
       PointsView(PointsView<P, Other> other)
-      : data_(other.data()), count_(other.size()) {}
+      : data_(other.data()), count_(other.size()), stride_(other.stride()) {}
 
   std::size_t size() const { return count_; }
   bool empty() const { return count_ == 0; }
   Double* data() const { return data_; }
-  auto operator[](std::size_t i) const { return *iterator(data_ + n * i); }
+  std::size_t stride() const { return stride_; }
+  auto operator[](std::size_t i) const { return *iterator(data_, i, stride_); }
   P front() const { return P::load(data_); }
-  P back() const { return P::load(data_ + n * (count_ - 1)); }
+  P back() const { return P::load(data_ + stride_ * (count_ - 1)); }
   PointsView subspan(std::size_t first, std::size_t count) const {
-    return {data_ + n * first, count};
+    return {data_ + stride_ * first, count, stride_};
   }
-  iterator begin() const { return iterator(data_); }
-  iterator end() const { return iterator(data_ + n * count_); }
+  iterator begin() const { return iterator(data_, 0, stride_); }
+  iterator end() const { return iterator(data_, count_, stride_); }
 
  private:
   Double* data_ = nullptr;
   std::size_t count_ = 0;
+  std::size_t stride_ = n;
 };
 
 using Vec3View = PointsView<Vec3, const double>;
