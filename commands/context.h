@@ -61,7 +61,7 @@ class Context {
   virtual void report(std::string_view text) = 0;
 
   // Draws an image on the terminal as the terminal mode says.
-  virtual void show(const Image& image) = 0;
+  virtual void show(const ImageRef& image) = 0;
   // ERASE: a clean screen (a page), where there is a screen to erase.
   virtual void erase() = 0;
   // The plotter on the terminal line (--plotter tty): bytes already wrapped in ESC.( ... ESC.).

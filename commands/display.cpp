@@ -61,10 +61,10 @@ View ask_view(Context& ctx) {
   return *view;
 }
 
-void show(Context& ctx, Image image) {
+void show(Context& ctx, ImageRef image) {
   Workspace& ws = ctx.workspace();
   ws.image = std::move(image);
-  ctx.show(*ws.image);
+  ctx.show(ws.image);
 }
 
 void run_display(Context& ctx, int option) {
@@ -75,21 +75,22 @@ void run_display(Context& ctx, int option) {
       expect_no_more_words(ctx);
       const auto& copy = option == first ? ws.temp1 : ws.temp2;
       if (!copy) throw Report(reports::image_not_found);
-      show(ctx, *copy);
+      show(ctx, copy);
       return;
     }
     case file: {
-      show(ctx, load_image(ctx.disk(), ask_file_name(ctx, file_prompt)));
+      show(ctx,
+           std::make_shared<const Image>(load_image(ctx.disk(), ask_file_name(ctx, file_prompt))));
       return;
     }
     case input: {
       if (!ws.has_input()) throw Report(reports::input_not_found);
-      show(ctx, input_image(ws, ask_view(ctx)));
+      show(ctx, std::make_shared<const Image>(input_image(ws, ask_view(ctx))));
       return;
     }
     default: {
       if (!ws.has_surface()) throw Report(reports::surface_not_found);
-      show(ctx, surface_image(ws, ask_view(ctx)));
+      show(ctx, std::make_shared<const Image>(surface_image(ws, ask_view(ctx))));
       return;
     }
   }

@@ -4,7 +4,9 @@
 #include "commands/command.h"
 #include "commands/entries.h"
 #include "commands/file_name.h"
+#include "commands/picture.h"
 #include "devices/plot.h"
+#include "devices/svg.h"
 #include "devices/terminal.h"
 #include "workspace/disk/format.h"
 #include "workspace/error.h"
@@ -25,9 +27,10 @@ void run_export(Context& ctx, int option) {
   if (!ws.image) throw Report(reports::image_not_found);
   const std::string name = ask_file_name(ctx, file_prompt);
   std::string_view type = file_types[option];
-  std::string bytes = option == svg   ? svg_of(*ws.image)
-                      : option == tek ? tek_stream(*ws.image, ctx.options().tek)
-                                      : plot_hpgl(*ws.image, ctx.options().plot).hpgl;
+  const Picture picture = picture_of(ws.image);
+  std::string bytes = option == svg   ? svg_of(picture)
+                      : option == tek ? tek_stream(picture, ctx.options().tek)
+                                      : plot_hpgl(picture, ctx.options().plot).hpgl;
   try {
     disk::replace_file(ctx.disk().path(name, type), bytes);
   } catch (const disk::IoError& e) {

@@ -8,6 +8,7 @@
 
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/picture.h"
 #include "devices/plot.h"
 #include "workspace/disk/format.h"
 #include "workspace/error.h"
@@ -62,7 +63,7 @@ void run_plot(Context& ctx, int option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   expect_no_more_words(ctx);
-  Plot plot = plot_hpgl(*ws.image, ctx.options().plot);
+  Plot plot = plot_hpgl(picture_of(ws.image), ctx.options().plot);
   const std::string& plotter = ctx.options().plotter;
   std::string where;
   if (plotter.empty()) {

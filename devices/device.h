@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "workspace/drawing/drawing.h"
+
 namespace igds {
 
 struct DevicePoint {
@@ -27,6 +29,9 @@ class Device {
   virtual void text(DevicePoint p, std::string_view line) = 0;
   // A clean screen or sheet.
   virtual void page() = 0;
+  // The pen and dash of what follows. Each device shows what it can (docs/devices.md) and sends
+  // nothing while the style stays the same; the default is pen 1, solid.
+  virtual void style(const Style&) {}
   // One polyline: a move to the first point, vectors to the others. Devices may send it faster.
   virtual void polyline(std::span<const DevicePoint> points) {
     if (points.empty()) return;
@@ -34,10 +39,5 @@ class Device {
     for (std::size_t i = 1; i < points.size(); ++i) draw(points[i]);
   }
 };
-
-// Draws `path` as one polyline.
-inline void draw_path(Device& device, const DevicePath& path) {
-  device.polyline(path);
-}
 
 }  // namespace igds

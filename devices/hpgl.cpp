@@ -94,6 +94,31 @@ void HpglEncoder::text(DevicePoint p, std::string_view line) {
   at_exact_ = false;
 }
 
+void HpglEncoder::style(const Style& style) {
+  if (style.pen != style_.pen) {
+    close_pd();
+    fmt::format_to(std::back_inserter(out_), "SP{};", std::clamp(style.pen, 1, 6));
+  }
+  if (style.dash != style_.dash) {
+    close_pd();
+    switch (style.dash) {
+      case Dash::solid:
+        out_ += "LT;";
+        break;
+      case Dash::dotted:
+        out_ += "LT1;";
+        break;
+      case Dash::dashed:
+        out_ += "LT2;";
+        break;
+      case Dash::chain:
+        out_ += "LT4;";
+        break;
+    }
+  }
+  style_ = style;
+}
+
 void HpglEncoder::finish() {
   close_pd();
   out_ += "PU;SP0;";

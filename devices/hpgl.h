@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "devices/device.h"
-#include "devices/picture.h"
 #include "devices/plot.h"
 
 namespace igds {
@@ -31,13 +30,10 @@ inline double label_advance(const PlotterModel& model) {
   return 1.5 * label_width_cm * 10 / model.unit_mm;
 }
 
-// The plot's margin on every side of the sheet, the gap between image and description, and
-// the half side of an input point's square.
-inline constexpr double plot_margin_mm = 10, plot_gap_mm = 6, plot_mark_mm = 0.6;
-
 // A Device that writes HP-GL: pen-up moves and pen-down polylines, relative (PR) by default or
-// absolute (PA), labels with LB. Counts what it draws as PlotStats (bytes excepted). The pen
-// starts at the origin; finish() puts it away and counts the travel back to the origin.
+// absolute (PA), labels with LB, pens (SP) and line types (LT). Counts what it draws as
+// PlotStats (bytes excepted). The pen starts at the origin; finish() puts it away and counts the
+// travel back to the origin.
 class HpglEncoder : public Device {
  public:
   HpglEncoder(const PlotterModel& model, bool absolute);
@@ -48,6 +44,9 @@ class HpglEncoder : public Device {
   void text(DevicePoint p, std::string_view line) override;
   // The 7475A takes one sheet at a time: nothing to send.
   void page() override {}
+  // SP n for the pen (the 7475A has 6), LT for the dash: solid LT;, dashed LT2;, chain LT4;,
+  // dotted LT1;. The weight is the pen's own.
+  void style(const Style& style) override;
   // PU;SP0; at the end of the plot.
   void finish();
 
@@ -67,6 +66,7 @@ class HpglEncoder : public Device {
   bool at_exact_ = true;     // false after a label: its end is only estimated
   bool relative_ = false;    // PR in force on the plotter
   bool pd_open_ = false;     // a PD list is being written
+  Style style_;              // the pen and line type in force
   double travel_units_ = 0;  // pen-up travel in plotter units
 };
 
@@ -78,22 +78,5 @@ double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, Dev
 // (reversed when that end is nearer); a path that starts where the last one ended continues it
 // without lifting the pen. Deterministic.
 std::vector<DevicePath> plot_order(const std::vector<DevicePath>& paths, DevicePoint start);
-
-// Where a plot goes on the sheet, in plotter units: the image's placement, the first label
-// line's baseline-left corner, the label's character advance and line spacing.
-struct PlotLayout {
-  Placement at;
-  double mark = 0;
-  DevicePoint text;
-  double advance = 0, line = 0;
-};
-
-// The image in the hard-clip area of the paper less a margin, landscape, aspect kept, with the
-// description to its right, the two centred across the sheet.
-PlotLayout plot_layout(const Picture& picture, const PlotOptions& options);
-
-// The plot of `picture` placed by `layout`: clipped to the hard-clip limits, in plot order, the
-// description first as labels.
-Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options);
 
 }  // namespace igds

@@ -3,8 +3,8 @@
 #pragma once
 
 #include "devices/device.h"
-#include "devices/picture.h"
-#include "workspace/state.h"
+#include "devices/render.h"
+#include "workspace/drawing/drawing.h"
 
 namespace igds {
 
@@ -25,9 +25,12 @@ inline constexpr int text_columns = (width - text_x) / char_width;  // 17: never
 // the line below it, at x = 780 (in device units, `unit` times the 4013's).
 DevicePoint below_description(std::size_t lines, int unit);
 
-// Draws `image` in the left square of the screen and its description, one item per line, at
+// Draws `picture` in the left square of the screen and its caption, one item per line, at
 // x = 780 on `device`, whose units are `unit` times the 4013's (1 for 10-bit, 4 for 12-bit).
-// Returns where the dialogue goes on: the start of the line below the description.
-DevicePoint draw_tek_display(const Image& image, Device& device, int unit);
+// Returns where the dialogue goes on: the start of the line below the caption.
+DevicePoint draw_tek_display(const Picture& picture, Device& device, int unit);
+
+// The longest caption line: the 17 columns of the Tek screen right of the image.
+inline constexpr std::size_t caption_width = tek_screen::text_columns;
 
 }  // namespace igds

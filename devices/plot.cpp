@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "devices/hpgl.h"
-#include "devices/picture.h"
 
 namespace igds {
 
@@ -26,20 +25,24 @@ PlotLayout plot_layout(const Picture& picture, const PlotOptions& options) {
   DevicePoint lim = model.limit(options.paper);
   const double per_mm = 1 / model.unit_mm;
   PlotLayout l;
-  l.mark = plot_mark_mm * per_mm;
+  l.mark = 3 * plot_point_mm * per_mm;
   l.advance = label_advance(model);
   l.line = 2 * label_height_cm * 10 * per_mm;
   std::size_t columns = 0;
-  for (const auto& d : picture.description) columns = std::max(columns, d.size());
+  for (const auto& d : picture.caption) columns = std::max(columns, d.size());
   const double margin = plot_margin_mm * per_mm, gap = plot_gap_mm * per_mm;
   const double strip = static_cast<double>(columns) * l.advance;
   Box room{margin, margin, lim.x - margin - gap - strip, lim.y - margin};
-  l.at = fit(picture, room, l.mark);
-  // The image and its description, side by side, centred across the sheet.
-  Box b = bounds(picture);
+  l.at = fit(picture.drawing, room, l.mark);
+  // The drawing and its caption, side by side, centred across the sheet.
+  Box b = bounds(picture.drawing);
   double left = room.x0, right = room.x0, top = room.y1;
   if (b.x0 <= b.x1) {
-    double m = picture.marks.empty() ? 0 : l.mark;
+    const auto& items = picture.drawing.items();
+    const bool marks = std::any_of(items.begin(), items.end(), [](const auto& item) {
+      return item.kind == Drawing2::Kind::mark;
+    });
+    double m = marks ? l.mark : 0;
     left = l.at.dx + l.at.scale * b.x0 - m;
     right = l.at.dx + l.at.scale * b.x1 + m;
     top = l.at.dy + l.at.scale * b.y1 + m;
@@ -54,13 +57,15 @@ PlotLayout plot_layout(const Picture& picture, const PlotOptions& options) {
 Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options) {
   const PlotterModel& model = hp7475a;
   DevicePoint lim = model.limit(options.paper);
-  Placed placed = place(picture, layout.at, layout.mark, {0, 0, double(lim.x), double(lim.y)});
+  const Rendering rendering{.point = plot_point_mm / model.unit_mm};
+  Placed placed =
+      place(picture.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)}, rendering);
   HpglEncoder hpgl(model, options.absolute);
   // The description first, where the pen starts from the origin; a line that would not fit on
   // the sheet is left out (and said, as clipping).
   bool clipped = placed.clipped;
   DevicePoint t = layout.text, pen{0, 0};
-  for (const auto& line : picture.description) {
+  for (const auto& line : picture.caption) {
     int end =
         t.x + static_cast<int>(std::lround(layout.advance * static_cast<double>(line.size())));
     int cap = static_cast<int>(std::lround(label_height_cm * 10 / model.unit_mm));
@@ -72,12 +77,28 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
     }
     t.y -= static_cast<int>(std::lround(layout.line));
   }
-  const DevicePoint origin{0, 0};
-  std::vector<DevicePath> ordered = plot_order(placed.paths, pen);
-  // Never more pen-up travel than the drawing order.
-  if (pen_up_travel(ordered, pen, origin) > pen_up_travel(placed.paths, pen, origin))
-    ordered = placed.paths;
-  for (const auto& path : ordered) draw_path(hpgl, path);
+  // Pen by pen (a pen change is slow), each pen's strokes in plot order; the texts of the drawing
+  // last, with their pens.
+  std::vector<Style> styles;
+  for (const auto& p : placed.paths)
+    if (std::find(styles.begin(), styles.end(), p.style) == styles.end()) styles.push_back(p.style);
+  std::vector<DevicePath> paths;
+  for (const Style& style : styles) {
+    paths.clear();
+    for (auto& p : placed.paths)
+      if (p.style == style) paths.push_back(std::move(p.points));
+    const DevicePoint origin{0, 0};
+    std::vector<DevicePath> ordered = plot_order(paths, pen);
+    // Never more pen-up travel than the drawing order.
+    if (pen_up_travel(ordered, pen, origin) > pen_up_travel(paths, pen, origin)) ordered = paths;
+    hpgl.style(style);
+    for (const auto& path : ordered) hpgl.polyline(path);
+    if (!ordered.empty() && !ordered.back().empty()) pen = ordered.back().back();
+  }
+  for (const auto& t : placed.texts) {
+    hpgl.style(t.style);
+    hpgl.text(t.at, t.text);
+  }
   hpgl.finish();
   Plot plot{hpgl.bytes(), hpgl.stats()};
   plot.stats.clipped = clipped;
@@ -89,8 +110,7 @@ std::string plot_summary(std::string_view where, const PlotStats& stats) {
                      stats.vectors, stats.pen_lifts, stats.pen_up_mm, stats.bytes);
 }
 
-Plot plot_hpgl(const Image& image, const PlotOptions& options) {
-  Picture picture = picture_of(image);
+Plot plot_hpgl(const Picture& picture, const PlotOptions& options) {
   return plot_placed(picture, plot_layout(picture, options), options);
 }
 

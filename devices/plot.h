@@ -1,4 +1,5 @@
-// PLOT: an image on an HP-GL pen plotter (spec hpgl.md), and EXPORT SVG.
+// PLOT: a picture on an HP-GL pen plotter (spec hpgl.md): the layout on the sheet, the stroke
+// order, the statistics.
 #pragma once
 
 #include <cstddef>
@@ -6,7 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "workspace/state.h"
+#include "devices/render.h"
+#include "workspace/drawing/drawing.h"
 
 namespace igds {
 
@@ -31,15 +33,34 @@ struct Plot {
   PlotStats stats;
 };
 
-Plot plot_hpgl(const Image& image, const PlotOptions& options);
+// The plot's margin on every side of the sheet and the gap between image and description.
+inline constexpr double plot_margin_mm = 10, plot_gap_mm = 6;
+// A 4013 point on the plot: 1024 of them across the tube's 210 mm.
+inline constexpr double plot_point_mm = 0.2;
+
+// Where a plot goes on the sheet, in plotter units: the drawing's placement, the first label
+// line's baseline-left corner, the label's character advance and line spacing.
+struct PlotLayout {
+  Placement at;
+  double mark = 0;
+  DevicePoint text;
+  double advance = 0, line = 0;
+};
+
+// The drawing in the hard-clip area of the paper less a margin, landscape, aspect kept, with the
+// caption to its right, the two centred across the sheet.
+PlotLayout plot_layout(const Picture& picture, const PlotOptions& options);
+
+// The plot of `picture` placed by `layout`: clipped to the hard-clip limits, in plot order (pen
+// by pen), the caption first as labels.
+Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options);
+
+Plot plot_hpgl(const Picture& picture, const PlotOptions& options);
 
 // What PLOT says after a plot, e.g. `PLOT0001.HPGL: 1440 VECTORS, 12 PEN LIFTS, PEN-UP TRAVEL
 // 143 MM, 11520 BYTES`, and the line it adds when something was clipped.
 std::string plot_summary(std::string_view where, const PlotStats& stats);
 inline constexpr std::string_view plot_clipped_notice =
     "PARTS OF THE IMAGE OUTSIDE THE PAPER WERE CLIPPED";
-
-// A standalone SVG of the image: viewBox in device units, polylines, description as text.
-std::string svg_of(const Image& image);
 
 }  // namespace igds

@@ -2,8 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "devices/layout.h"
-#include "devices/plot.h"
 
 namespace igds {
 
@@ -16,7 +17,9 @@ int flip(int y) {
 }  // namespace
 
 void SvgWriter::close_polyline() {
-  if (drawing_) fmt::format_to(std::back_inserter(body_), "<polyline points=\"{}\"/>\n", points_);
+  if (drawing_)
+    fmt::format_to(std::back_inserter(body_), "<polyline points=\"{}\"{}/>\n", points_,
+                   attributes_);
   drawing_ = false;
   points_.clear();
 }
@@ -59,6 +62,32 @@ void SvgWriter::text(DevicePoint p, std::string_view line) {
                  flip(p.y), escaped);
 }
 
+void SvgWriter::style(const Style& style) {
+  static constexpr std::string_view colours[] = {"black",   "red",  "green",  "blue",
+                                                 "magenta", "cyan", "orange", "brown"};
+  std::string a;
+  if (style.pen != 1)
+    a += fmt::format(" stroke=\"{}\"",
+                     colours[static_cast<std::size_t>(std::max(style.pen, 1) - 1) % 8]);
+  switch (style.dash) {
+    case Dash::solid:
+      break;
+    case Dash::dashed:
+      a += " stroke-dasharray=\"8 4\"";
+      break;
+    case Dash::chain:
+      a += " stroke-dasharray=\"12 3 2 3\"";
+      break;
+    case Dash::dotted:
+      a += " stroke-dasharray=\"1 3\"";
+      break;
+  }
+  if (style.weight > 1) a += fmt::format(" stroke-width=\"{}\"", style.weight);
+  if (a == attributes_) return;
+  close_polyline();
+  attributes_ = std::move(a);
+}
+
 void SvgWriter::page() {
   close_polyline();
   body_.clear();
@@ -79,9 +108,9 @@ std::string SvgWriter::document() {
       width, height, line_height - 4, body_);
 }
 
-std::string svg_of(const Image& image) {
+std::string svg_of(const Picture& picture) {
   SvgWriter svg;
-  draw_tek_display(image, svg, 1);
+  draw_tek_display(picture, svg, 1);
   return svg.document();
 }
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "devices/device.h"
+#include "workspace/drawing/drawing.h"
 
 namespace igds {
 
@@ -16,6 +17,9 @@ class SvgWriter : public Device {
   void draw(DevicePoint p) override;
   void text(DevicePoint p, std::string_view line) override;
   void page() override;
+  // Pens as colours (1 black, 2 red, 3 green, 4 blue, 5 magenta, 6 cyan, ...), dashes as dash
+  // arrays, weight 2 as a wider stroke; attributes only where they differ from the default.
+  void style(const Style& style) override;
   // The whole document.
   std::string document();
 
@@ -27,6 +31,11 @@ class SvgWriter : public Device {
   DevicePoint at_;
   bool at_known_ = false;
   bool drawing_ = false;
+  std::string attributes_;  // of the polylines that follow: "" for pen 1, solid, weight 1
 };
+
+// A standalone SVG of a picture, laid out as on the Tek screen: viewBox in 4013 points,
+// polylines, the caption as text.
+std::string svg_of(const Picture& picture);
 
 }  // namespace igds

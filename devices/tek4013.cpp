@@ -104,9 +104,31 @@ void TekEncoder::alpha() {
   whole_ = true;
 }
 
+void TekEncoder::style(const Style& style) {
+  if (style.dash == dash_) return;
+  dash_ = style.dash;
+  char code = '`';
+  switch (dash_) {
+    case Dash::solid:
+      code = '`';
+      break;
+    case Dash::dotted:
+      code = 'a';
+      break;
+    case Dash::chain:
+      code = 'b';
+      break;
+    case Dash::dashed:
+      code = 'c';
+      break;
+  }
+  out_ += {tek_esc, code};
+}
+
 void TekEncoder::page() {
   // ESC FF erases; ESC 8 the large (4013) characters; ESC ` solid lines.
   out_ += {tek_esc, tek_ff, tek_esc, '8', tek_esc, '`'};
+  dash_ = Dash::solid;
   mode_ = Mode::alpha;
   at_known_ = false;
   whole_ = true;

@@ -26,6 +26,9 @@ class TekEncoder : public Device {
   void polyline(std::span<const DevicePoint> points) override;
   // ESC FF, then the character size and the line style again (xterm keeps them across a page).
   void page() override;
+  // The 4014's line styles for the dashes (ESC ` solid, a dotted, b dot-dashed, c short-dashed);
+  // the 4013 has one pen and one weight.
+  void style(const Style& style) override;
   // Alpha mode with the cursor at `p`: where the dialogue goes on.
   void alpha_at(DevicePoint p);
   // Alpha mode where the beam is (US), unless already in alpha mode.
@@ -45,6 +48,7 @@ class TekEncoder : public Device {
   bool at_known_ = false;  // the beam is at at_ (graph mode only)
   DevicePoint at_;
   bool whole_ = true;  // the next address must be sent whole (after GS, text, a page)
+  Dash dash_ = Dash::solid;
   int hi_y_ = -1, lo_y_ = -1, hi_x_ = -1;
 };
 

@@ -13,8 +13,8 @@ int unit_of(TekOptions tek) {
 
 // The image and its description, the alpha cursor left at the start of the line below the
 // description, where the dialogue goes on.
-void draw_display(const Image& image, TekEncoder& tek, int unit) {
-  DevicePoint cursor = draw_tek_display(image, tek, unit);
+void draw_display(const Picture& picture, TekEncoder& tek, int unit) {
+  DevicePoint cursor = draw_tek_display(picture, tek, unit);
   tek.alpha_at(cursor);
 }
 
@@ -25,10 +25,10 @@ std::string for_xterm(std::string stream) {
 
 }  // namespace
 
-std::string display_bytes(const Image& image, TermMode mode, TekOptions tek) {
+std::string display_bytes(const Picture& picture, TermMode mode, TekOptions tek) {
   if (mode == TermMode::none) return {};
   TekEncoder encoder(tek.bits);
-  draw_display(image, encoder, unit_of(tek));
+  draw_display(picture, encoder, unit_of(tek));
   if (mode == TermMode::xterm) return for_xterm(encoder.take());
   return encoder.take();
 }
@@ -78,17 +78,17 @@ std::string TekDialogue::text(std::string_view text) {
   return out;
 }
 
-void TekDialogue::displayed(const Image& image) {
-  const DevicePoint at = below_description(describe(image.desim, description_width).size(), 1);
+void TekDialogue::displayed(const Picture& picture) {
+  const DevicePoint at = below_description(picture.caption.size(), 1);
   baseline_ = at.y;
   x_ = at.x;
   column_ = 0;
 }
 
-std::string tek_stream(const Image& image, TekOptions tek) {
+std::string tek_stream(const Picture& picture, TekOptions tek) {
   TekEncoder encoder(tek.bits);
   encoder.page();
-  draw_display(image, encoder, unit_of(tek));
+  draw_display(picture, encoder, unit_of(tek));
   return encoder.take();
 }
 

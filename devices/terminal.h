@@ -4,7 +4,7 @@
 #include <string>
 #include <string_view>
 
-#include "workspace/state.h"
+#include "workspace/drawing/drawing.h"
 
 namespace igds {
 
@@ -19,7 +19,7 @@ struct TekOptions {
 // The bytes that draw `image` and its description on the left of the screen, ending in alpha
 // mode: in tek mode the graph data itself, in xterm mode wrapped in ESC[?38h ... US ESC ETX,
 // in none mode nothing.
-std::string display_bytes(const Image& image, TermMode mode, TekOptions tek);
+std::string display_bytes(const Picture& picture, TermMode mode, TekOptions tek);
 
 // ERASE: a page (ESC FF), with its character size and line style sent again; wrapped for xterm.
 std::string erase_bytes(TermMode mode, TekOptions tek);
@@ -38,7 +38,7 @@ class TekDialogue {
   // `text` with each line end made CR LF, or a move back to the top left at the bottom.
   std::string text(std::string_view text);
   // After display_bytes: the dialogue goes on at the line below the image's description.
-  void displayed(const Image& image);
+  void displayed(const Picture& picture);
 
  private:
   void new_line(std::string& out);
@@ -50,6 +50,6 @@ class TekDialogue {
 };
 
 // The complete 4013 stream of one image (EXPORT TEK): a page, the image, the description.
-std::string tek_stream(const Image& image, TekOptions tek);
+std::string tek_stream(const Picture& picture, TekOptions tek);
 
 }  // namespace igds

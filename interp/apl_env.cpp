@@ -70,7 +70,7 @@ std::optional<Array> workspace_variable(const Workspace& ws, std::string_view ty
   if (name == "PATCHES") return ws.patches;
   if (name == "INTPN") return ws.intpn;
   if (name == "STATUS") return vector(std::vector<double>(ws.status.begin(), ws.status.end()));
-  const std::optional<Image>* image = nullptr;
+  const ImageRef* image = nullptr;
   if (name == "IMAGE" || name == "DESIM") image = &ws.image;
   if (name == "TEMP1" || name == "DEST1") image = &ws.temp1;
   if (name == "TEMP2" || name == "DEST2") image = &ws.temp2;

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "commands/entries.h"
+#include "commands/picture.h"
 #include "commands/reports.h"
 #include "devices/terminal.h"
 #include "interp/apl_env.h"
@@ -227,10 +228,11 @@ void Interpreter::report(std::string_view text) {
   if (running_ && options_.strict && input_ && input_->is_command_file()) throw StrictStop{};
 }
 
-void Interpreter::show(const Image& image) {
+void Interpreter::show(const ImageRef& image) {
   if (options_.term != TermMode::none) {
-    write_raw(display_bytes(image, options_.term, options_.tek));
-    if (TekDialogue* dialogue = tek_dialogue_in_use()) dialogue->displayed(image);
+    const Picture picture = picture_of(image);
+    write_raw(display_bytes(picture, options_.term, options_.tek));
+    if (TekDialogue* dialogue = tek_dialogue_in_use()) dialogue->displayed(picture);
     return;
   }
   if (!told_how_to_see_) {
@@ -238,7 +240,7 @@ void Interpreter::show(const Image& image) {
     say("IMAGES ARE NOT DRAWN ON THIS TERMINAL. TO SEE THEM RUN IGDS IN AN XTERM");
     say("(xterm -t -e igds), OR WRITE THEM TO FILES WITH EXPORT SVG, TEK OR HPGL.");
   }
-  say(describe_image(image.desim));
+  say(describe_image(image->desim));
 }
 
 void Interpreter::erase() {

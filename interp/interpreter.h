@@ -47,7 +47,7 @@ class Interpreter final : public Context {
   bool has_pending() const override { return !pending_.empty(); }
   void say(std::string_view line) override;
   void report(std::string_view text) override;
-  void show(const Image& image) override;
+  void show(const ImageRef& image) override;
   void erase() override;
   void send_to_terminal(std::string_view bytes) override;
   void end_session(bool apl) override;

@@ -13,9 +13,10 @@
 #include <sstream>
 #include <string>
 
+#include "commands/picture.h"
 #include "devices/hpgl.h"
-#include "devices/picture.h"
 #include "devices/plot.h"
+#include "devices/render.h"
 #include "devices/tek4013.h"
 #include "devices/terminal.h"
 #include "tests/bench/bench.h"
@@ -95,8 +96,9 @@ std::size_t tek_vectors(const std::string& stream) {
 
 IGDS_BENCH("devices") {
   const igds::Image im = igds::test::devices::flat_grid(side);
+  const igds::Picture pic = igds::picture_of(im);
 
-  std::string tek = igds::display_bytes(im, igds::TermMode::tek, {});
+  std::string tek = igds::display_bytes(pic, igds::TermMode::tek, {});
   std::size_t vectors = tek_vectors(tek);
   double tek_per_vector = double(tek.size()) / double(vectors);
   fmt::print("tek_vectors {}\n", vectors);
@@ -108,7 +110,7 @@ IGDS_BENCH("devices") {
     fmt::print("tek_bytes_vs_gnuplot {:.3f}\n", tek_per_vector / gp);
   }
 
-  igds::Plot plot = igds::plot_hpgl(im, {});
+  igds::Plot plot = igds::plot_hpgl(pic, {});
   fmt::print("hpgl_vectors {}\n", plot.stats.vectors);
   fmt::print("hpgl_bytes_per_vector {:.3f}\n",
              double(plot.stats.bytes) / double(plot.stats.vectors));
@@ -118,18 +120,17 @@ IGDS_BENCH("devices") {
                double(gh.size()) / double(hpgl_vectors(gh)));
 
   // The same plot in drawing order: the placed polylines sent as they come.
-  igds::Picture pic = igds::picture_of(im);
   igds::PlotLayout layout = igds::plot_layout(pic, {});
   igds::DevicePoint lim = igds::hp7475a.limit(igds::Paper::a4);
-  igds::Placed placed =
-      igds::place(pic, layout.at, layout.mark, {0, 0, double(lim.x), double(lim.y)});
+  igds::Placed placed = igds::place(pic.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)},
+                                    {.point = igds::plot_point_mm / igds::hp7475a.unit_mm});
   igds::HpglEncoder naive(igds::hp7475a, false);
   igds::DevicePoint t = layout.text;
-  for (const auto& line : pic.description) {
+  for (const auto& line : pic.caption) {
     naive.text(t, line);
     t.y -= static_cast<int>(std::lround(layout.line));
   }
-  for (const auto& p : placed.paths) igds::draw_path(naive, p);
+  for (const auto& p : placed.paths) naive.polyline(p.points);
   naive.finish();
   fmt::print("hpgl_pen_up_mm_ordered {:.0f}\n", plot.stats.pen_up_mm);
   fmt::print("hpgl_pen_up_mm_drawing_order {:.0f}\n", naive.stats().pen_up_mm);
@@ -137,17 +138,19 @@ IGDS_BENCH("devices") {
 
   // Encoding speed: the 4013 encoder alone on the placed polylines, then the whole DISPLAY
   // (picture, placement, clipping, encoding), per byte sent.
-  igds::Placed on_screen =
-      igds::place(pic, igds::fit(pic, {16, 16, 751, 751}, 3), 3, {0, 0, 1023, 779});
+  igds::Placed on_screen = igds::place(pic.drawing, igds::fit(pic.drawing, {16, 16, 751, 751}, 3),
+                                       {0, 0, 1023, 779}, {});
   std::size_t bytes = 0;
   double e = igds::bench::best_seconds(10, [&] {
     igds::TekEncoder encoder;
-    for (const auto& p : on_screen.paths) igds::draw_path(encoder, p);
+    for (const auto& p : on_screen.paths) encoder.polyline(p.points);
     bytes = encoder.bytes().size();
   });
   fmt::print("tek_encode_mb_per_s {:.1f}\n", double(bytes) / e / 1e6);
-  double s = igds::bench::best_seconds(10, [&] { bytes = igds::tek_stream(im, {}).size(); });
+  double s = igds::bench::best_seconds(
+      10, [&] { bytes = igds::tek_stream(igds::picture_of(im), {}).size(); });
   fmt::print("tek_display_mb_per_s {:.1f}\n", double(bytes) / s / 1e6);
-  double p = igds::bench::best_seconds(3, [&] { bytes = igds::plot_hpgl(im, {}).hpgl.size(); });
+  double p = igds::bench::best_seconds(
+      3, [&] { bytes = igds::plot_hpgl(igds::picture_of(im), {}).hpgl.size(); });
   fmt::print("hpgl_plot_ms {:.1f}\n", p * 1e3);
 }

@@ -97,9 +97,9 @@ IGDS_BENCH("disk") {
     fmt::print("autosave_change_grid_100x100_int10_ms {:.3f}\n", change_grid * 1e3);
 
     // The same surface with the current image and both stored copies.
-    ws.image = view(ws);
-    ws.temp1 = view(ws);
-    ws.temp2 = view(coarse);
+    ws.image = std::make_shared<const igds::Image>(view(ws));
+    ws.temp1 = std::make_shared<const igds::Image>(view(ws));
+    ws.temp2 = std::make_shared<const igds::Image>(view(coarse));
     session.save(ws);
     double help_short = 1e300;
     std::size_t bytes = 0;

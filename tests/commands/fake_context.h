@@ -59,7 +59,7 @@ class FakeContext final : public Context {
     said.emplace_back(text);
     ++reports;
   }
-  void show(const Image& image) override { shown.push_back(image); }
+  void show(const ImageRef& image) override { shown.push_back(*image); }
   void erase() override {}
   void send_to_terminal(std::string_view) override {}
   void end_session(bool apl) override { ends = apl ? 1 : 0; }

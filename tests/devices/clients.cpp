@@ -77,7 +77,7 @@ TEST_CASE("tek2plot reads every 4013 and 4014 stream, vertices where they were m
     for (int bits : {10, 12}) {
       int unit = bits == 12 ? 4 : 1;
       Recorder r;
-      draw_tek_display(im, r, unit);
+      draw_tek_display(picture_of(im), r, unit);
       auto expected = in_tek2plot_units(r.drawn(), unit);
       for (const std::string& stream :
            {tek_stream(im, {bits}), display_bytes(im, TermMode::tek, {bits})}) {

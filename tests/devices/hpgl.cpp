@@ -209,15 +209,16 @@ TEST_CASE("plot_hpgl: ordering never costs more pen-up travel than the drawing o
   for (const Image& im : {surface_image(6, 9), input_image(4, 4), flat_grid(30)}) {
     Picture pic = picture_of(im);
     PlotLayout layout = plot_layout(pic, {});
-    Placed placed = place(pic, layout.at, layout.mark, {0, 0, 11040, 7721});
+    Placed placed = place(pic.drawing, layout.at, {0, 0, 11040, 7721},
+                          Rendering{.point = plot_point_mm / hp7475a.unit_mm});
     Plot plot = plot_hpgl(im, {});
     HpglEncoder naive(hp7475a, false);
     DevicePoint t = layout.text;
-    for (const auto& line : pic.description) {
+    for (const auto& line : pic.caption) {
       naive.text(t, line);
       t.y -= static_cast<int>(std::lround(layout.line));
     }
-    for (const auto& p : placed.paths) draw_path(naive, p);
+    for (const auto& p : placed.paths) naive.polyline(p.points);
     naive.finish();
     CHECK(plot.stats.pen_up_mm <= naive.stats().pen_up_mm + 1e-9);
     CHECK(plot.stats.vectors == naive.stats().vectors);

@@ -12,7 +12,11 @@
 #include <string_view>
 #include <vector>
 
+#include "commands/picture.h"
 #include "devices/device.h"
+#include "devices/plot.h"
+#include "devices/svg.h"
+#include "devices/terminal.h"
 #include "workspace/state.h"
 
 namespace igds::test::devices {
@@ -62,6 +66,20 @@ inline Image input_image(std::size_t nocur, std::size_t nostr) {
                      1,
                      0.5};
   return im;
+}
+
+// The devices draw pictures; the sample images become pictures as DISPLAY makes them.
+inline std::string display_bytes(const Image& im, TermMode mode, TekOptions tek) {
+  return igds::display_bytes(picture_of(im), mode, tek);
+}
+inline std::string tek_stream(const Image& im, TekOptions tek) {
+  return igds::tek_stream(picture_of(im), tek);
+}
+inline Plot plot_hpgl(const Image& im, const PlotOptions& options) {
+  return igds::plot_hpgl(picture_of(im), options);
+}
+inline std::string svg_of(const Image& im) {
+  return igds::svg_of(picture_of(im));
 }
 
 // A Device that keeps the polylines and text it is given.

@@ -103,7 +103,7 @@ void check_stream(const std::string& s, std::size_t polylines) {
 TEST_CASE("display_bytes: tek mode draws without erasing and ends in alpha mode") {
   for (const Image& im : {surface_image(5, 4), input_image(3, 4)}) {
     Recorder r;
-    DevicePoint cursor = draw_tek_display(im, r, 1);
+    DevicePoint cursor = draw_tek_display(picture_of(im), r, 1);
     std::string s = display_bytes(im, TermMode::tek, {});
     CHECK(s.find("\x1B\x0C") == std::string::npos);  // DISPLAY never erases (storage tube)
     REQUIRE(!s.empty());
@@ -128,7 +128,7 @@ TEST_CASE("display_bytes: tek mode draws without erasing and ends in alpha mode"
 TEST_CASE("display_bytes: the image in the square 0..767, the description right of it") {
   Image im = surface_image(7, 9);
   Recorder r;
-  draw_tek_display(im, r, 1);
+  draw_tek_display(picture_of(im), r, 1);
   int x0 = 9999, y0 = 9999, x1 = -1, y1 = -1;
   for (const auto& p : r.drawn())
     for (auto q : p)
@@ -157,8 +157,8 @@ TEST_CASE("display_bytes: the image in the square 0..767, the description right 
 TEST_CASE("display_bytes: 12 bits is the same picture at four times the resolution") {
   Image im = surface_image(5, 6);
   Recorder r10, r12;
-  draw_tek_display(im, r10, 1);
-  draw_tek_display(im, r12, 4);
+  draw_tek_display(picture_of(im), r10, 1);
+  draw_tek_display(picture_of(im), r12, 4);
   auto d = decode_tek(display_bytes(im, TermMode::tek, {12}), 12);
   CHECK(d.paths == r12.drawn());
   REQUIRE(r10.drawn().size() == r12.drawn().size());

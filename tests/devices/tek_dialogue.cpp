@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "commands/picture.h"
 #include "devices/layout.h"
-#include "devices/picture.h"
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
 
@@ -59,7 +59,7 @@ TEST_CASE("the Tek dialogue: a line too long for the screen is broken at its rig
 
   // After a DISPLAY the dialogue goes on beside the description: 17 characters fit there.
   const Image image = test::devices::surface_image(3, 4);
-  dialogue.displayed(image);
+  dialogue.displayed(picture_of(image));
   CHECK(dialogue.text(std::string(20, 'Y')) == std::string(17, 'Y') + "\r\nYYY");
 }
 
@@ -67,13 +67,14 @@ TEST_CASE("the Tek dialogue after a DISPLAY goes on where the stream leaves the 
   for (const Image& image :
        {test::devices::surface_image(3, 4), test::devices::input_image(3, 4)}) {
     // Where display_bytes really leaves the beam, decoded from the stream.
-    const auto decoded = test::devices::decode_tek(display_bytes(image, TermMode::tek, {10}), 10);
+    const auto decoded =
+        test::devices::decode_tek(display_bytes(picture_of(image), TermMode::tek, {10}), 10);
     REQUIRE(decoded.ends_in_alpha);
     REQUIRE(decoded.beam);
     CHECK(decoded.beam->x == tek_screen::text_x);
     TekDialogue dialogue({10});
     dialogue.home();
-    dialogue.displayed(image);
+    dialogue.displayed(picture_of(image));
     // From there, the lines the dialogue writes before it goes back to the top are those left
     // above the bottom baseline.
     std::string many;

@@ -67,7 +67,7 @@ class DeviceContext final : public Context {
   bool has_pending() const override { return !pending_.empty(); }
   void say(std::string_view line) override { said.emplace_back(line); }
   void report(std::string_view text) override { said.emplace_back(text); }
-  void show(const Image&) override {}
+  void show(const ImageRef&) override {}
   void erase() override { ++erases; }
   void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
   void end_session(bool) override {}
@@ -128,7 +128,7 @@ TEST_CASE("PLOT: IMAGE NOT FOUND first, nothing recorded") {
 TEST_CASE("PLOT: new PLOTnnnn.HPGL files on the disk, the keyboard in STATUS[2]") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  ctx.ws.image = surface_image(5, 4);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(5, 4));
   ctx.run(plot_command, selectric);
   CHECK(ctx.ws.status[1] == 1);
   Plot expected = plot_hpgl(*ctx.ws.image, {});
@@ -153,7 +153,7 @@ TEST_CASE("PLOT: new PLOTnnnn.HPGL files on the disk, the keyboard in STATUS[2]"
 TEST_CASE("PLOT: on the terminal line, wrapped in ESC.( ... ESC.)") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  ctx.ws.image = input_image(3, 4);
+  ctx.ws.image = std::make_shared<const Image>(input_image(3, 4));
   ctx.opts.plotter = "tty";
   ctx.run(plot_command, ebcdic);
   CHECK(ctx.terminal == "\x1B.(" + plot_hpgl(*ctx.ws.image, {}).hpgl + "\x1B.)");
@@ -164,7 +164,7 @@ TEST_CASE("PLOT: on the terminal line, wrapped in ESC.( ... ESC.)") {
 TEST_CASE("PLOT: a path is appended to, plot after plot") {
   TempDir dir, elsewhere;
   DeviceContext ctx(dir.path());
-  ctx.ws.image = surface_image(3, 3);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   ctx.opts.plotter = (elsewhere.path() / "plotter.hpgl").string();
   ctx.run(plot_command, selectric);
   ctx.run(plot_command, selectric);
@@ -176,7 +176,7 @@ TEST_CASE("PLOT: a path is appended to, plot after plot") {
 TEST_CASE("PLOT: a plotter that cannot be written, a full disk, words left: nothing changes") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  ctx.ws.image = surface_image(3, 3);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   ctx.opts.plotter = (dir.path() / "no" / "such" / "folder").string();
   std::string r = report_of([&] { ctx.run(plot_command, ebcdic); });
   CHECK(r == fmt::format("CANNOT OPEN PLOTTER {} (NO SUCH FILE OR DIRECTORY); NOTHING PLOTTED",
@@ -219,7 +219,7 @@ TEST_CASE("PLOT: every PLOTnnnn number taken") {
   for (int n = 1; n <= 9999; ++n)
     std::ofstream(dir.path() / fmt::format("PLOT{:04}.HPGL", n)).put('x');
   DeviceContext ctx(dir.path());
-  ctx.ws.image = surface_image(3, 3);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   CHECK(report_of([&] { ctx.run(plot_command, selectric); }) ==
         "NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
   CHECK(ctx.ws.status[1] == 0);
@@ -229,7 +229,7 @@ TEST_CASE("PLOT: every PLOTnnnn number taken") {
 TEST_CASE("EXPORT: SVG, TEK and HPGL files of the current image") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  ctx.ws.image = input_image(3, 4);
+  ctx.ws.image = std::make_shared<const Image>(input_image(3, 4));
   ctx.opts.tek.bits = 12;
   ctx.opts.plot.paper = Paper::letter;
   Workspace before = ctx.ws;
@@ -244,7 +244,7 @@ TEST_CASE("EXPORT: SVG, TEK and HPGL files of the current image") {
   CHECK(ctx.said.at(0) == fmt::format("HULL.SVG: {} BYTES", svg_of(*ctx.ws.image).size()));
   CHECK(ctx.ws == before);
   // Replaced whole by the next export of the same name; no temporary left behind.
-  ctx.ws.image = surface_image(2, 2);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(2, 2));
   ctx.run(export_command, svg, {"HULL"});
   CHECK(read_file(dir.path() / "HULL.SVG") == svg_of(*ctx.ws.image));
   std::size_t files = 0;
@@ -257,14 +257,14 @@ TEST_CASE("EXPORT: IMAGE NOT FOUND, INCORRECT PARAMETER, a full disk keeps the o
   DeviceContext ctx(dir.path());
   CHECK(report_of([&] { ctx.run(export_command, svg, {"A"}); }) == reports::image_not_found);
   CHECK(ctx.prompts.empty());
-  ctx.ws.image = surface_image(3, 3);
+  ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   for (std::vector<std::string> words :
        std::vector<std::vector<std::string>>{{"../X"}, {"TOOLONGNAME"}, {"A.B"}, {"A", "B"}})
     CHECK(report_of([&] { ctx.run(export_command, tek, words); }) == reports::incorrect_parameter);
   CHECK(std::filesystem::is_empty(dir.path()));
   ctx.run(export_command, hpgl, {"KEEP"});
   std::string old = read_file(dir.path() / "KEEP.HPGL");
-  ctx.ws.image = input_image(4, 4);
+  ctx.ws.image = std::make_shared<const Image>(input_image(4, 4));
   {
     WriteLimit full(10);
     CHECK(report_of([&] { ctx.run(export_command, hpgl, {"KEEP"}); }) ==

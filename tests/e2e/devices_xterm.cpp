@@ -227,7 +227,7 @@ TEST_CASE("xterm Tek window: the vectors are where they must be, nothing where t
     // Drawn in 4013 points whatever the address size, to probe the window in one scale.
     const int unit = bits == 12 ? 4 : 1;
     Recorder drawn;
-    draw_tek_display(im, drawn, unit);
+    draw_tek_display(picture_of(im), drawn, unit);
     Recorder r;
     for (const auto& p : drawn.drawn()) {
       DevicePath q;

@@ -229,7 +229,7 @@ class ScriptedContext : public Context {
   bool has_pending() const override { return false; }
   void say(std::string_view line) override { said.emplace_back(line); }
   void report(std::string_view text) override { said.emplace_back(text); }
-  void show(const Image&) override {}
+  void show(const ImageRef&) override {}
   void erase() override {}
   void send_to_terminal(std::string_view) override {}
   void end_session(bool) override {}

@@ -67,8 +67,8 @@ TEST_CASE("the workspace variables by name") {
   Image image;
   image.desim = {1, Projection::isometric, {3, 30, 0}};
   image.points = array({1, 2, 2}, {0, 1, 2, 3});
-  ws.image = image;
-  ws.temp2 = image;
+  ws.image = std::make_shared<const Image>(image);
+  ws.temp2 = ws.image;
   CHECK(apl_display(*workspace_variable(ws, "DESIM")) == Lines{"1 3 3 30 0"});
   CHECK(apl_display(*workspace_variable(ws, "IMAGE")) == Lines{"0 1", "2 3"});
   CHECK(apl_display(*workspace_variable(ws, "DEST2")) == Lines{"1 3 3 30 0"});

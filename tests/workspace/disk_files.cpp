@@ -55,7 +55,7 @@ TEST_CASE("SAVE then RESTORE gives every surface variable back bit for bit") {
   CHECK(files_in(s.dir.path()) == std::set<std::string>{"HULL.IGDSDATA"});
 
   Workspace ws = test::make_workspace(2, 3, 0, 0);
-  ws.image = test::make_image(0, Projection::orthogonal, 2, 2, 99);
+  ws.image = std::make_shared<const Image>(test::make_image(0, Projection::orthogonal, 2, 2, 99));
   ws.status = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9};
   Workspace before = ws;
   restore_surface(s.disk, "HULL", ws);
@@ -165,7 +165,8 @@ TEST_CASE("STORE FILE then DISPLAY FILE gives the image back bit for bit") {
     Image image = test::make_image(what, Projection::assonometric, 7, 9, 42 + what);
     store_image(s.disk, "PIC", image);
     Image back = load_image(s.disk, "PIC");
-    CHECK(test::same_bits(std::optional<Image>(back), std::optional<Image>(image)));
+    CHECK(
+        test::same_bits(std::make_shared<const Image>(back), std::make_shared<const Image>(image)));
   }
   Image empty;
   store_image(s.disk, "EMPTY", empty);

@@ -79,9 +79,10 @@ inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool
                     st + static_cast<std::size_t>(intst) * (st - 1), 3});
   fill(ws.intpn, 4);
   if (images) {
-    ws.image = make_image(1, Projection::conic, ws.intpn.shape[0], ws.intpn.shape[1], 5);
-    ws.temp1 = make_image(0, Projection::isometric, cu, st, 6);
-    ws.temp2 = make_image(1, Projection::assonometric, 2, 3, 7);
+    ws.image = std::make_shared<const Image>(
+        make_image(1, Projection::conic, ws.intpn.shape[0], ws.intpn.shape[1], 5));
+    ws.temp1 = std::make_shared<const Image>(make_image(0, Projection::isometric, cu, st, 6));
+    ws.temp2 = std::make_shared<const Image>(make_image(1, Projection::assonometric, 2, 3, 7));
   }
   ws.status = {0, 2, 0, 0, 0, 0, 0, 0, 0, 7};
   return ws;
@@ -93,7 +94,7 @@ inline bool same_bits(const Array& a, const Array& b) {
           std::memcmp(a.ravel.data(), b.ravel.data(), a.ravel.size() * sizeof(double)) == 0);
 }
 
-inline bool same_bits(const std::optional<Image>& a, const std::optional<Image>& b) {
+inline bool same_bits(const ImageRef& a, const ImageRef& b) {
   if (!a || !b) return !a && !b;
   return a->desim.what == b->desim.what && a->desim.projection == b->desim.projection &&
          std::memcmp(&a->desim.parameters, &b->desim.parameters, sizeof a->desim.parameters) == 0 &&

@@ -430,8 +430,11 @@ TEST_CASE("the session holds whatever the workspace held, even what RESTORE woul
   Scratch s;
   Workspace odd = test::make_workspace(2, 2, 1, 1);
   odd.nocur = 7;  // shapes that do not agree with NOCUR
-  odd.image->desim.what = 5;
-  odd.temp1->desim.projection = static_cast<Projection>(0);
+  Image image = *odd.image, temp1 = *odd.temp1;
+  image.desim.what = 5;
+  temp1.desim.projection = static_cast<Projection>(0);
+  odd.image = std::make_shared<const Image>(image);
+  odd.temp1 = std::make_shared<const Image>(temp1);
   {
     Session session(s.disk);
     session.save(odd);

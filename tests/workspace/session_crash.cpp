@@ -26,7 +26,11 @@ Workspace state(int k) {
   ws.status[9] = k;
   ws.intpn.ravel[0] = k / 2;
   if (k % 3 == 0) ws.patches.ravel[5] = -k;
-  if (k % 5 == 0) ws.image->points.ravel[3] = k;
+  if (k % 5 == 0) {
+    Image image = *ws.image;
+    image.points.ravel[3] = k;
+    ws.image = std::make_shared<const Image>(image);
+  }
   if (k % 7 == 0) ws.temp1.reset();
   if (k % 4 == 0) ws.inppn.ravel[2] = k;
   return ws;

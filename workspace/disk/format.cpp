@@ -290,8 +290,9 @@ bool same_bits(const Array& a, const Array& b) {
           std::memcmp(a.ravel.data(), b.ravel.data(), a.ravel.size() * sizeof(double)) == 0);
 }
 
-bool same_bits(const std::optional<Image>& a, const std::optional<Image>& b) {
-  if (!a || !b) return !a && !b;
+bool same_bits(const ImageRef& a, const ImageRef& b) {
+  if (a == b) return true;
+  if (!a || !b) return false;
   return a->desim.what == b->desim.what && a->desim.projection == b->desim.projection &&
          std::memcmp(a->desim.parameters.data(), b->desim.parameters.data(),
                      sizeof(a->desim.parameters)) == 0 &&

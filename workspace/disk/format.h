@@ -76,7 +76,7 @@ std::string_view unframe(std::string_view magic, std::string_view file);
 
 // Bit-for-bit equality (-0.0 differs from 0.0, a NaN equals the same NaN).
 bool same_bits(const Array& a, const Array& b);
-bool same_bits(const std::optional<Image>& a, const std::optional<Image>& b);
+bool same_bits(const ImageRef& a, const ImageRef& b);
 
 // The surface variables (NOCUR ... INTPN) and a check that their shapes agree with each other
 // (spec igds.md section 4); PATCHES and INTPN may both be empty. "" when they agree.

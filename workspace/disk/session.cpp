@@ -63,7 +63,7 @@ const Array* slot_array(const Workspace& ws, std::size_t i) {
   }
 }
 
-const std::optional<Image>& slot_image(const Workspace& ws, std::size_t i) {
+const ImageRef& slot_image(const Workspace& ws, std::size_t i) {
   return i == 4 ? ws.image : i == 5 ? ws.temp1 : ws.temp2;
 }
 
@@ -127,13 +127,13 @@ void decode_slot(std::string_view bytes, Workspace& ws, std::size_t i) {
       ws.intpn = r.array();
       break;
     case 4:
-      ws.image = r.image(false);
+      ws.image = std::make_shared<const Image>(r.image(false));
       break;
     case 5:
-      ws.temp1 = r.image(false);
+      ws.temp1 = std::make_shared<const Image>(r.image(false));
       break;
     default:
-      ws.temp2 = r.image(false);
+      ws.temp2 = std::make_shared<const Image>(r.image(false));
       break;
   }
   r.finish();

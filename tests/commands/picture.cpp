@@ -1,13 +1,45 @@
-// The generic layer (devices/picture.h): what an image draws, one scale, clipping, rounding.
-#include "devices/picture.h"
+// What an IGDS image becomes in a drawing (commands/picture.h).
+#include "commands/picture.h"
 
 #include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "tests/devices/support.h"
 
 namespace igds::test::devices {
 
 namespace {
+
+// The lines and marks of a picture as the devices see them: polylines split wherever a point is
+// not finite, pieces of fewer than two points dropped.
+struct Shapes {
+  std::vector<std::vector<Point2>> paths;
+  std::vector<Point2> marks;
+};
+Shapes shapes(const Picture& pic) {
+  Shapes out;
+  for (const auto& item : pic.drawing.items()) {
+    const auto points = pic.drawing.points(item);
+    if (item.kind == Drawing2::Kind::mark) {
+      out.marks.push_back(points[0]);
+      continue;
+    }
+    std::vector<Point2> piece;
+    for (Point2 p : points) {
+      if (std::isfinite(p.x) && std::isfinite(p.y)) {
+        piece.push_back(p);
+        continue;
+      }
+      if (piece.size() >= 2) out.paths.push_back(piece);
+      piece.clear();
+    }
+    if (piece.size() >= 2) out.paths.push_back(piece);
+  }
+  return out;
+}
 
 Point2 point(const Image& im, std::size_t c, std::size_t r) {
   std::size_t rows = im.points.shape[1];
@@ -18,7 +50,8 @@ Point2 point(const Image& im, std::size_t c, std::size_t r) {
 
 TEST_CASE("picture_of SURFACE: one polyline per curve, then one per stringer") {
   Image im = surface_image(4, 6);
-  Picture pic = picture_of(im);
+  Picture picture = picture_of(im);
+  Shapes pic = shapes(picture);
   REQUIRE(pic.paths.size() == 4 + 6);
   CHECK(pic.marks.empty());
   for (std::size_t c = 0; c < 4; ++c) {
@@ -29,12 +62,16 @@ TEST_CASE("picture_of SURFACE: one polyline per curve, then one per stringer") {
     REQUIRE(pic.paths[4 + r].size() == 4);
     for (std::size_t c = 0; c < 4; ++c) CHECK(pic.paths[4 + r][c] == point(im, c, r));
   }
-  CHECK(pic.description == std::vector<std::string>{"SURFACE", "ASSONOMETRIC", "110 130 120"});
+  CHECK(picture.caption == std::vector<std::string>{"SURFACE", "ASSONOMETRIC", "110 130 120"});
+  // Curves and stringers say which they are.
+  CHECK(picture.drawing.items()[2].id == Identity{Role::curve, 3});
+  CHECK(picture.drawing.items()[4 + 5].id == Identity{Role::stringer, 6});
 }
 
 TEST_CASE("picture_of INPUT: the border once around, arrows, a mark per point") {
   Image im = input_image(3, 4);
-  Picture pic = picture_of(im);
+  Picture picture = picture_of(im);
+  Shapes pic = shapes(picture);
   CHECK(pic.marks.size() == 12);
   REQUIRE(pic.paths.size() == 1 + 3);
   const auto& ring = pic.paths[0];
@@ -49,8 +86,10 @@ TEST_CASE("picture_of INPUT: the border once around, arrows, a mark per point") 
   for (auto p : ring) CHECK(!(p == point(im, 1, 1)));
   // Arrows: base, tip, two barbs, tip; lengths proportional to the tangents; the longest is a
   // quarter of the image's larger side.
-  Box b = bounds(Picture{{ring}, {}, {}});
-  double extent = std::max(b.x1 - b.x0, b.y1 - b.y0);
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (Point2 p : ring)
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  double extent = std::max(x1 - x0, y1 - y0);
   double lengths[3];
   const double tangent[3] = {std::hypot(3, 1), 4, std::hypot(1, 0.5)};
   for (int i = 0; i < 3; ++i) {
@@ -66,26 +105,31 @@ TEST_CASE("picture_of INPUT: the border once around, arrows, a mark per point") 
   // The tip lies along the tangent.
   const auto& a0 = pic.paths[1];
   CHECK((a0[1].x - a0[0].x) / (a0[1].y - a0[0].y) == doctest::Approx(3.0));
-  CHECK(pic.description == std::vector<std::string>{"INPUT", "CONIC", "12.5 -40 1000"});
+  CHECK(picture.caption == std::vector<std::string>{"INPUT", "CONIC", "12.5 -40 1000"});
+  // Marks name their point, row by row.
+  const auto& items = picture.drawing.items();
+  CHECK(items.back().kind == Drawing2::Kind::mark);
+  CHECK(items.back().id == Identity{Role::point, 12});
+  CHECK(items[0].id.role == Role::border);
 }
 
 TEST_CASE("picture_of: zero tangents draw no arrow; bad shapes draw nothing") {
   Image im = input_image(2, 2);
   im.arrows.ravel = {0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 0};
-  CHECK(picture_of(im).paths.size() == 1);
+  CHECK(shapes(picture_of(im)).paths.size() == 1);
   im.arrows = Array({2, 3});
-  CHECK(picture_of(im).paths.size() == 1);
+  CHECK(shapes(picture_of(im)).paths.size() == 1);
   Image bad;
   bad.points = Array({2, 2, 3});
-  CHECK(picture_of(bad).paths.empty());
+  CHECK(shapes(picture_of(bad)).paths.empty());
   bad.points.shape = {2, 2, 2};  // ravel of the wrong size
-  CHECK(picture_of(bad).paths.empty());
+  CHECK(shapes(picture_of(bad)).paths.empty());
 }
 
 TEST_CASE("picture_of: a non-finite point breaks its lines") {
   Image im = surface_image(3, 5);
   im.points.ravel[2 * (1 * 5 + 2)] = std::numeric_limits<double>::infinity();
-  Picture pic = picture_of(im);
+  Shapes pic = shapes(picture_of(im));
   // Curve 2 becomes two pieces of 2 points; stringer 3 loses its middle point: two lone points.
   CHECK(pic.paths.size() == 3 + 1 + 5 - 1);
   for (const auto& p : pic.paths)
@@ -103,68 +147,6 @@ TEST_CASE("describe: the projections and their parameters, at most `width` chara
     CHECK(line.size() <= 8);
   CHECK(plain_number(-3.25) == "-3.25");
   CHECK(plain_number(110) == "110");
-}
-
-TEST_CASE("fit: one scale, aspect kept, centred, room for the marks") {
-  Picture pic{{{{0, 0}, {10, 5}}}, {{0, 0}}, {}};
-  Placement at = fit(pic, {0, 0, 100, 100}, 5);
-  CHECK(fit(Picture{pic.paths, {}, {}}, {0, 0, 100, 100}, 5).scale == doctest::Approx(10));
-  CHECK(at.scale == doctest::Approx(9));
-  Point2 a = at.apply({0, 0}), b = at.apply({10, 5});
-  CHECK(a.x == doctest::Approx(5));
-  CHECK(b.x == doctest::Approx(95));
-  CHECK((a.y + b.y) / 2 == doctest::Approx(50));
-  // A single point goes to the centre.
-  Placement one = fit(Picture{{}, {{3, 4}}, {}}, {0, 0, 100, 50}, 2);
-  CHECK(one.apply({3, 4}).x == doctest::Approx(50));
-  CHECK(one.apply({3, 4}).y == doctest::Approx(25));
-  // A vertical line uses the height.
-  Placement v = fit(Picture{{{{1, 0}, {1, 10}}}, {}, {}}, {0, 0, 100, 50}, 0);
-  CHECK(v.scale == doctest::Approx(5));
-}
-
-TEST_CASE("clip_segment: Liang-Barsky in floating point") {
-  Box box{0, 0, 10, 10};
-  Point2 a{-5, 5}, b{15, 5};
-  REQUIRE(clip_segment(a, b, box));
-  CHECK(a == Point2{0, 5});
-  CHECK(b == Point2{10, 5});
-  a = {-5, -5}, b = {-1, 20};
-  CHECK(!clip_segment(a, b, box));
-  a = {2, 2}, b = {8, 3};
-  REQUIRE(clip_segment(a, b, box));
-  CHECK(a == Point2{2, 2});
-  CHECK(b == Point2{8, 3});
-  a = {5, -10}, b = {5, 30};
-  REQUIRE(clip_segment(a, b, box));
-  CHECK(a == Point2{5, 0});
-  CHECK(b == Point2{5, 10});
-}
-
-TEST_CASE("place: clipped before rounding, rounded to the nearest unit, split where it leaves") {
-  Picture pic{{{{-10, 2.4}, {5.5, 2.6}, {30, 2.6}, {30, 8}, {5, 8.49}}}, {}, {}};
-  Placed placed = place(pic, {}, 0, {0, 0, 20, 20});
-  CHECK(placed.clipped);
-  REQUIRE(placed.paths.size() == 2);
-  // (-10, 2.4)-(5.5, 2.6) enters at x = 0, y = 2.4 + 0.2 * 10 / 15.5.
-  CHECK(placed.paths[0] == DevicePath{{0, 3}, {6, 3}, {20, 3}});
-  CHECK(placed.paths[1] == DevicePath{{20, 8}, {5, 8}});
-  // Rounding, never truncation; points that round to the same unit count once.
-  Placed inside =
-      place(Picture{{{{1.5, 1.5}, {2.49, 1.5}, {2.5, 1.49}}, {{4, 4}, {4.4, 3.6}}}, {}, {}}, {}, 0,
-            {0, 0, 20, 20});
-  CHECK(!inside.clipped);
-  REQUIRE(inside.paths.size() == 1);
-  CHECK(inside.paths[0] == DevicePath{{2, 2}, {3, 1}});
-}
-
-TEST_CASE("place: marks are squares of the given half side, never out of the clip box") {
-  Picture pic{{}, {{0, 0}, {10, 10}}, {}};
-  Placed placed = place(pic, {}, 2, {0, 0, 100, 100});
-  CHECK(placed.clipped);  // the mark at the origin sticks out
-  REQUIRE(placed.paths.size() == 2);
-  CHECK(placed.paths[1] == DevicePath{{8, 8}, {12, 8}, {12, 12}, {8, 12}, {8, 8}});
-  for (auto p : placed.paths[0]) CHECK((p.x >= 0 && p.y >= 0));
 }
 
 }  // namespace igds::test::devices

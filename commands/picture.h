@@ -1,0 +1,36 @@
+// What an IGDS image (IMAGE and DESIM, manual section 7) becomes in a drawing, decided here once:
+// DISPLAY INPUT's border, tangent arrows and point marks, DISPLAY SURFACE's curves and stringers,
+// and the description written beside them. The devices draw the result without knowing grids.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "workspace/drawing/drawing.h"
+#include "workspace/state.h"
+
+namespace igds {
+
+// DISPLAY INPUT (desim.what == 0): the border of the NOCUR x NOSTR grid as one closed polyline,
+// each non-zero border tangent as an arrow (shaft and head, one polyline), the input points as
+// square marks. DISPLAY SURFACE: one polyline per curve, then one per stringer, reading the
+// image's own points (not copied). An IMAGE of a shape other than planes x rows x 2 gives no
+// lines (never a crash); non-finite points break a line.
+Picture picture_of(std::shared_ptr<const Image> image);
+Picture picture_of(const Image& image);
+
+// The brief description of DISPLAY: what (INPUT or SURFACE), the projection, its parameters
+// (e.g. `SURFACE`, `ASSONOMETRIC`, `110 130 120`); no line longer than `width` characters.
+std::vector<std::string> describe(const Description& desim, std::size_t width);
+
+// A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
+std::string plain_number(double value);
+
+// Arrow of a border tangent: the longest one is this fraction of the image's larger side.
+inline constexpr double arrow_fraction = 0.25;
+
+// An input point's mark: a square of this half side, in 4013 points.
+inline constexpr double point_mark = 3;
+
+}  // namespace igds

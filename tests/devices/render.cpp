@@ -1,0 +1,136 @@
+// The generic layer (devices/render.h): one scale, curves flattened and marks stroked in device
+// units, clipping before rounding.
+#include "devices/render.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <initializer_list>
+
+#include "tests/devices/support.h"
+
+namespace igds::test::devices {
+
+namespace {
+
+// A drawing of polylines (and marks at the given points).
+Drawing2 drawing(std::initializer_list<std::vector<Point2>> lines, std::vector<Point2> marks = {},
+                 double mark = 3) {
+  Drawing2 d;
+  for (const auto& line : lines) {
+    std::vector<double> xy;
+    for (Point2 p : line) xy.insert(xy.end(), {p.x, p.y});
+    d.add_polyline(Point2View(xy.data(), line.size()));
+  }
+  for (Point2 m : marks) d.add_mark(m, MarkShape::square, mark);
+  return d;
+}
+
+std::vector<DevicePath> paths(const Placed& placed) {
+  std::vector<DevicePath> out;
+  for (const auto& p : placed.paths) out.push_back(p.points);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("fit: one scale, aspect kept, centred, room for the marks") {
+  Drawing2 d = drawing({{{0, 0}, {10, 5}}}, {{0, 0}});
+  Placement at = fit(d, {0, 0, 100, 100}, 5);
+  CHECK(fit(drawing({{{0, 0}, {10, 5}}}), {0, 0, 100, 100}, 5).scale == doctest::Approx(10));
+  CHECK(at.scale == doctest::Approx(9));
+  Point2 a = at.apply({0, 0}), b = at.apply({10, 5});
+  CHECK(a.x == doctest::Approx(5));
+  CHECK(b.x == doctest::Approx(95));
+  CHECK((a.y + b.y) / 2 == doctest::Approx(50));
+  // A single point goes to the centre.
+  Placement one = fit(drawing({}, {{3, 4}}), {0, 0, 100, 50}, 2);
+  CHECK(one.apply({3, 4}).x == doctest::Approx(50));
+  CHECK(one.apply({3, 4}).y == doctest::Approx(25));
+  // A vertical line uses the height.
+  Placement v = fit(drawing({{{1, 0}, {1, 10}}}), {0, 0, 100, 50}, 0);
+  CHECK(v.scale == doctest::Approx(5));
+}
+
+TEST_CASE("clip_segment: Liang-Barsky in floating point") {
+  Box box{0, 0, 10, 10};
+  Point2 a{-5, 5}, b{15, 5};
+  REQUIRE(clip_segment(a, b, box));
+  CHECK(a == Point2{0, 5});
+  CHECK(b == Point2{10, 5});
+  a = {-5, -5}, b = {-1, 20};
+  CHECK(!clip_segment(a, b, box));
+  a = {2, 2}, b = {8, 3};
+  REQUIRE(clip_segment(a, b, box));
+  CHECK(a == Point2{2, 2});
+  CHECK(b == Point2{8, 3});
+  a = {5, -10}, b = {5, 30};
+  REQUIRE(clip_segment(a, b, box));
+  CHECK(a == Point2{5, 0});
+  CHECK(b == Point2{5, 10});
+}
+
+TEST_CASE("place: clipped before rounding, rounded to the nearest unit, split where it leaves") {
+  Drawing2 d = drawing({{{-10, 2.4}, {5.5, 2.6}, {30, 2.6}, {30, 8}, {5, 8.49}}});
+  Placed placed = place(d, {}, {0, 0, 20, 20}, {});
+  CHECK(placed.clipped);
+  // (-10, 2.4)-(5.5, 2.6) enters at x = 0, y = 2.4 + 0.2 * 10 / 15.5.
+  CHECK(paths(placed) == std::vector<DevicePath>{{{0, 3}, {6, 3}, {20, 3}}, {{20, 8}, {5, 8}}});
+  // Rounding, never truncation; points that round to the same unit count once.
+  Placed inside = place(drawing({{{1.5, 1.5}, {2.49, 1.5}, {2.5, 1.49}}, {{4, 4}, {4.4, 3.6}}}), {},
+                        {0, 0, 20, 20}, {});
+  CHECK(!inside.clipped);
+  CHECK(paths(inside) == std::vector<DevicePath>{{{2, 2}, {3, 1}}});
+}
+
+TEST_CASE("place: marks are strokes of the given half side, never out of the clip box") {
+  Placed placed = place(drawing({}, {{0, 0}, {10, 10}}, 2), {}, {0, 0, 100, 100}, {});
+  CHECK(placed.clipped);  // the mark at the origin sticks out
+  REQUIRE(placed.paths.size() == 2);
+  CHECK(placed.paths[1].points == DevicePath{{8, 8}, {12, 8}, {12, 12}, {8, 12}, {8, 8}});
+  for (auto p : placed.paths[0].points) CHECK((p.x >= 0 && p.y >= 0));
+  // The other shapes, and the device's point: a 12-bit screen has 4 units to the 4013 point.
+  Drawing2 d;
+  d.add_mark({50, 50}, MarkShape::cross, 2);
+  d.add_mark({50, 50}, MarkShape::plus, 2);
+  d.add_mark({50, 50}, MarkShape::diamond, 2);
+  d.add_mark({50, 50}, MarkShape::circle, 2);
+  Placed shapes = place(d, {}, {0, 0, 100, 100}, Rendering{.point = 4});
+  REQUIRE(shapes.paths.size() == 2 + 2 + 1 + 1);
+  CHECK(shapes.paths[0].points == DevicePath{{42, 42}, {58, 58}});
+  CHECK(shapes.paths[3].points == DevicePath{{50, 42}, {50, 58}});
+  CHECK(shapes.paths[4].points == DevicePath{{50, 42}, {58, 50}, {50, 58}, {42, 50}, {50, 42}});
+  for (auto p : shapes.paths[5].points) CHECK(std::abs(std::hypot(p.x - 50, p.y - 50) - 8) <= 0.75);
+}
+
+TEST_CASE("place: curves are flattened in device units, more finely on a finer device") {
+  // A quarter circle of radius 1 (rational quadratic), placed 100 times larger.
+  Drawing2 d;
+  const double controls[] = {1, 0, 1, 1, 0, 1};
+  const double weights[] = {1, std::sqrt(0.5), 1};
+  d.add_curve(2, Point2View(controls, 3), weights, {.pen = 2}, {Role::line, 1});
+  const Placement at{100, 0, 0};
+  Placed coarse = place(d, at, {-10, -10, 200, 200}, Rendering{.point = 1});
+  Placed fine = place(d, at, {-10, -10, 200, 200}, Rendering{.point = 0.1});
+  REQUIRE(coarse.paths.size() == 1);
+  CHECK(coarse.paths[0].style.pen == 2);
+  CHECK(coarse.paths[0].points.front() == DevicePoint{100, 0});
+  CHECK(coarse.paths[0].points.back() == DevicePoint{0, 100});
+  for (auto p : coarse.paths[0].points) CHECK(std::abs(std::hypot(p.x, p.y) - 100) <= 1);
+  CHECK(fine.paths[0].points.size() > coarse.paths[0].points.size());
+}
+
+TEST_CASE("render draws what place lists, in the same order, with the styles") {
+  Drawing2 d = drawing({{{0, 0}, {10, 0}}, {{0, 5}, {10, 5}}}, {{5, 5}});
+  d.add_text({1, 1}, "7", 1, {}, {Role::label, 7});
+  const Placement at{2, 1, 1};
+  Recorder r;
+  CHECK_FALSE(render(d, at, {0, 0, 100, 100}, {}, r));
+  Placed placed = place(d, at, {0, 0, 100, 100}, {});
+  CHECK(r.drawn() == paths(placed));
+  REQUIRE(r.texts.size() == 1);
+  CHECK(r.texts[0].line == "7");
+  CHECK(r.texts[0].at == DevicePoint{3, 3});
+}
+
+}  // namespace igds::test::devices
