@@ -1,28 +1,16 @@
 // BUILD (manual 4.1): a new current surface from the keyboard.
+#include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/entries.h"
-#include "workspace/error.h"
+#include "commands/surface.h"
 
 namespace igds {
 
 namespace {
 
-const Prompt size_prompt{"NUMBER OF CURVES AND STRINGERS?",
-                         "Two whole numbers >= 2: NOCUR, the input curves, and NOSTR, the input "
-                         "stringers (points on each curve)."};
-
-void run_build(Context& ctx, int) {
+void run_build(Context& ctx, const Choice*) {
   expect_no_more_words(ctx);
-  GridSize size;
-  for (;;) {
-    auto words = ctx.ask(size_prompt);
-    if (words.empty()) continue;
-    if (auto parsed = parse_grid_size(words)) {
-      size = *parsed;
-      break;
-    }
-    ctx.report(reports::incorrect_entry);
-  }
+  const GridSize size = ask_grid_size(ctx);
   Array inppn({static_cast<std::size_t>(size.nocur) * static_cast<std::size_t>(size.nostr), 3});
   ask_point_entries(ctx, inppn);
   Array inptg = zero_tangents(size.nocur, size.nostr);
@@ -35,33 +23,47 @@ void run_build(Context& ctx, int) {
                std::move(surface));
 }
 
+constexpr const Prompt* questions[] = {&size_prompt, &points_prompt, &tangents_prompt,
+                                       &density_prompt};
+
 }  // namespace
 
 extern const Command build_command{
     .name = "BUILD",
     .options = {},
+    .follows = {},
     .option_prompt = {},
-    .short_help = "BUILD: define a new current surface from points and border tangents typed in.",
-    .long_help = R"(BUILD defines a new current surface, replacing the old one. Nothing else may
-follow the word BUILD on its line. IGDS then asks four things:
+    .summary = "a new surface: grid size, points, tangents, density",
+    .long_help = R"(BUILD defines a new current surface, replacing the old one. Nothing
+may follow the word BUILD on its line. IGDS then asks four things:
 
- 1. NUMBER OF CURVES AND STRINGERS? NOCUR and NOSTR, two whole numbers >= 2. Each
-    curve crosses every stringer, so there are NOCUR x NOSTR input points, numbered
-    along the first curve (1 to NOSTR), then along the second, and so on.
- 2. POINTS? Entries "k x y z": the coordinates of point k. More triplets on the
-    same entry go to k+1, k+2, ...  Entries may come in any order and take several
-    lines; an empty line ends them. Points never given are at 0 0 0.
- 3. TANGENTS? Entries "k tx ty tz" at the border points: along the curve at the
-    two ends of a curve, along the stringer at the two ends of a stringer. A corner
-    needs both: "k tx ty tz 1" along the curve, "k tx ty tz 0" along the stringer.
-    Tangents are per unit of chord length (modulus 1 is the natural speed). An empty
-    line ends them; tangents never given are zero.
- 4. INTERPOLATED CURVES AND STRINGERS? INTCU and INTST, whole numbers >= 0: how many
-    curves to insert between two input curves, and stringers between two stringers.
+ 1. NUMBER OF CURVES AND STRINGERS? NOCUR and NOSTR. Each curve crosses
+    every stringer, so there are NOCUR x NOSTR input points, numbered
+    along the first curve (1 to NOSTR), then along the second, and so
+    on. 1 N (or N 1) is a single curve of N points.
+ 2. POINTS? Entries "k x y z": the coordinates of point k. More
+    triplets on the same entry go to k+1, k+2, ... Entries may come in
+    any order and take several lines; an empty line ends them. Points
+    never given are at 0 0 0.
+ 3. TANGENTS? Entries "k tx ty tz" at the border points: along the
+    curve at the two ends of a curve, along the stringer at the two
+    ends of a stringer. A corner needs both: "k tx ty tz 1" along the
+    curve, "k tx ty tz 0" along the stringer. An empty line ends them;
+    tangents never given are zero.
+ 4. INTERPOLATED CURVES AND STRINGERS? INTCU and INTST, whole numbers
+    >= 0: the curves to insert between two input curves, and the
+    stringers between two stringers.
 
-Then the surface is interpolated with bicubic Coons patches. An entry that is not
-correct gets INCORRECT ENTRY and is ignored; type it again. HELP at any of these
-questions explains it; Ctrl-C gives up and keeps the old surface.
+Tangents are per unit of chord length: a tangent of length 1 along
+the chord is the natural pace; 0.5 flattens the end of the arc, 2 or 3
+makes it bulge, and lengths much above 3 make loops. (The manual's
+advice to take "the length of the ending segments" belongs to another
+scaling; igds follows its equations.)
+
+Then the surface is interpolated with bicubic Coons patches. An entry
+that is not correct gets INCORRECT ENTRY with the reason and is
+ignored; type it again. HELP at any question explains it; Ctrl-C gives
+up and keeps the old surface.
 
 Example, a 3 x 3 saddle with 4 interpolated curves and stringers:
   BUILD
@@ -74,6 +76,7 @@ Example, a 3 x 3 saddle with 4 interpolated curves and stringers:
   TANGENTS? 1 1 0 0 0
   TANGENTS?
   INTERPOLATED CURVES AND STRINGERS? 4 4)",
+    .questions = questions,
     .run = run_build,
 };
 

@@ -1,11 +1,12 @@
 // CHANGE GRID | TANGENTS | POINTS (manual 4.2): a new version of the current surface.
 #include <fmt/format.h>
 
+#include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/entries.h"
 #include "commands/reports.h"
-#include "workspace/error.h"
-#include "workspace/kernels/data_error.h"
+#include "commands/surface.h"
+#include "workspace/apl.h"
 
 namespace igds {
 
@@ -13,14 +14,32 @@ namespace {
 
 enum Option { grid, tangents, points };
 
+constexpr Choice options[] = {
+    {"GRID", grid, {}, "new numbers of interpolated curves and stringers"},
+    {"TANGENTS", tangents, {}, "new border tangents, then CHANGE GRID TOO?"},
+    {"POINTS", points, {}, "new input points, then CHANGE TANGENTS TOO? and CHANGE GRID TOO?"},
+};
+
 const Prompt change_grid_prompt{
-    "CHANGE GRID TOO?",
-    "Y to give new numbers of interpolated curves and stringers, N to keep them; or type the\n"
-    "two numbers (INTCU INTST) at once."};
+    "CHANGE GRID TOO? (Y OR N)",
+    "Y to give new numbers of interpolated curves and stringers, N to keep\n"
+    "them; or type the two numbers (INTCU INTST) at once.",
+    yes_no()};
 const Prompt change_tangents_prompt{
-    "CHANGE TANGENTS TOO?",
-    "Y to change border tangents, N to keep them; or type a tangent entry (k tx ty tz [f]) at "
-    "once."};
+    "CHANGE TANGENTS TOO? (Y OR N)",
+    "Y to change border tangents, N to keep them; or type a tangent entry\n"
+    "(k tx ty tz, and 1 or 0 at a corner) at once.",
+    yes_no()};
+
+constexpr std::string_view answer_first = "ANSWER Y OR N FIRST (CTRL-C GIVES UP CHANGE)";
+
+// A reply to a Y/N question that is neither: a command typed too early says so.
+void refuse_command_word(const std::vector<std::string>& words) {
+  if (!parse_apl_number(words[0])) {
+    std::string reason = command_word_reason(words[0], answer_first);
+    if (!reason.empty()) throw EntryError(reason);
+  }
+}
 
 // The follow-up of CHANGE TANGENTS and POINTS: Y/N, or the two numbers directly.
 Density ask_grid_too(Context& ctx, const Workspace& ws) {
@@ -31,11 +50,12 @@ Density ask_grid_too(Context& ctx, const Workspace& ws) {
       if (*yes) return ask_density(ctx, ws.nocur, ws.nostr);
       return {ws.intcu, ws.intst};
     }
-    Density density;
-    if (auto error = parse_density(words, ws.nocur, ws.nostr, density))
-      ctx.report(*error);
-    else
-      return density;
+    try {
+      refuse_command_word(words);
+      return parse_density(words, ws.nocur, ws.nostr);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+    }
   }
 }
 
@@ -48,8 +68,11 @@ void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg) {
       if (*yes) ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
       return;
     }
-    if (auto error = apply_tangent_entry(words, ws.nocur, ws.nostr, inptg)) {
-      ctx.report(*error);
+    try {
+      refuse_command_word(words);
+      apply_tangent_entry(words, ws.nocur, ws.nostr, inptg);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
       continue;
     }
     ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
@@ -57,16 +80,17 @@ void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg) {
   }
 }
 
-void run_change(Context& ctx, int option) {
+void run_change(Context& ctx, const Choice* option) {
   Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
   Array inppn = ws.inppn;
   Array inptg = ws.inptg;
   Density density;
-  if (option == grid) {
+  const auto what = static_cast<Option>(option->code);
+  if (what == grid) {
     density = ask_density(ctx, ws.nocur, ws.nostr);
   } else {
-    if (option == points) {
+    if (what == points) {
       ask_point_entries(ctx, inppn);
       ask_tangents_too(ctx, ws, inptg);
     } else {
@@ -83,7 +107,7 @@ void run_change(Context& ctx, int option) {
     ws.intpn = std::move(surface.intpn);
   };
   try {
-    if (option == grid && !surface.patches.empty())
+    if (what == grid && !surface.patches.empty())
       refit_into(input, surface.patches, surface.intpn);  // the patches do not depend on the grid
     else
       interpolate_into(input, surface);
@@ -98,37 +122,49 @@ void run_change(Context& ctx, int option) {
                std::move(surface));
 }
 
+constexpr const Prompt* questions[] = {&density_prompt, &points_prompt, &change_tangents_prompt,
+                                       &tangents_prompt, &change_grid_prompt};
+
 }  // namespace
 
 extern const Command change_command{
     .name = "CHANGE",
-    .options = {"GRID", "TANGENTS", "POINTS"},
+    .options = options,
+    .follows = {},
     .option_prompt = {"GRID, TANGENTS OR POINTS?",
-                      "GRID: new numbers of interpolated curves and stringers; TANGENTS: new "
-                      "border tangents;\nPOINTS: new input points."},
-    .short_help = "CHANGE GRID, TANGENTS or POINTS: modify the current surface.",
-    .long_help = R"(CHANGE modifies the current surface (there must be one: BUILD or RESTORE it
-first, else INPUT NOT FOUND). The entries are typed as in BUILD; what is not
-changed keeps its value, and the surface is interpolated again at the end.
+                      "GRID: new numbers of interpolated curves and stringers; TANGENTS: new\n"
+                      "border tangents; POINTS: new input points.",
+                      options},
+    .summary = "changes the current surface and interpolates it again",
+    .long_help = R"(CHANGE modifies the current surface (there must be one: BUILD or
+RESTORE it first, else INPUT NOT FOUND). The entries are typed as in
+BUILD; what is not changed keeps its value, and the surface is
+interpolated again at the end.
 
-  CHANGE GRID      asks INTCU INTST, the numbers of curves and stringers to insert
-                   between two input ones.
-  CHANGE TANGENTS  takes tangent entries "k tx ty tz" ("k tx ty tz f" at a corner,
-                   f = 1 along the curve, 0 along the stringer) up to an empty line,
-                   then asks CHANGE GRID TOO? Answer Y or N, or the two numbers.
-  CHANGE POINTS    takes point entries "k x y z [x y z ...]" up to an empty line,
-                   then asks CHANGE TANGENTS TOO? (Y, N or a tangent entry) and
-                   CHANGE GRID TOO? (Y, N or the two numbers).
+  CHANGE GRID      asks INTCU INTST, the numbers of curves and
+                   stringers to insert between two input ones.
+  CHANGE TANGENTS  takes tangent entries "k tx ty tz" ("k tx ty tz f"
+                   at a corner, f = 1 along the curve, 0 along the
+                   stringer) up to an empty line, then asks
+                   CHANGE GRID TOO? (Y OR N): answer Y or N, or type
+                   the two numbers.
+  CHANGE POINTS    takes point entries "k x y z [x y z ...]" up to an
+                   empty line, then asks CHANGE TANGENTS TOO? (Y OR N)
+                   (Y, N or a tangent entry) and CHANGE GRID TOO?
 
-Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up and keeps
-the surface as it was.
+Tangents are per unit of chord length: 1 along the chord is the
+natural pace, lengths much above 3 make loops.
+
+Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up
+and keeps the surface as it was.
 
 Example: move point 5 up and use a finer grid.
   CHANGE POINTS
   POINTS? 5 10 10 4
   POINTS?
-  CHANGE TANGENTS TOO? N
-  CHANGE GRID TOO? 8 8)",
+  CHANGE TANGENTS TOO? (Y OR N) N
+  CHANGE GRID TOO? (Y OR N) 8 8)",
+    .questions = questions,
     .run = run_change,
 };
 

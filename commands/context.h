@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,11 +25,27 @@ struct Options {
   bool strict = false;
 };
 
-// What the user is asked for: the prompt's words and the HELP SHORT text at that prompt (one
-// or two lines). HELP LONG at any prompt explains the command being run.
+// One word of the language and what it stands for: a command's option, a projection, a plane,
+// an answer. `code` is the value the code receives (an enum of the declaring file), never the
+// word's place in its list.
+struct Choice {
+  std::string_view word;
+  int code = 0;
+  std::string_view follows = {};  // what may follow it on the line, e.g. "[name]"
+  std::string_view help = {};     // one line: what it stands for
+};
+
+// The first choice whose word starts with `typed`, case ignored (spec igds.md section 2: the
+// first entry in table order wins); nullptr when none does or `typed` is empty.
+const Choice* choose(std::span<const Choice> choices, std::string_view typed);
+
+// What the user is asked for: the prompt's words, the HELP SHORT text at that prompt (one or two
+// lines), and the words that may answer it (offered by completion). HELP LONG at any prompt
+// explains the command being run.
 struct Prompt {
   std::string_view text;
   std::string_view short_help;
+  std::span<const Choice> answers = {};
 };
 
 // Ctrl-C: the entry in progress is abandoned and the state is as before the command.
@@ -49,13 +66,20 @@ class Context {
   // typed there are answered and the prompt is shown again. An empty line gives no words.
   // Throws Abandon on Ctrl-C and EndOfInput at the end of input.
   virtual std::vector<std::string> ask(const Prompt& prompt) = 0;
-  // Puts words back in front, so that the next ask() returns them without prompting.
+  // Puts words of the last reply back in front, so that the next ask() returns them without
+  // prompting.
   virtual void unread(std::vector<std::string> words) = 0;
-  // True while words of the command line are still unread.
+  // True while words are waiting to be read (from the command line or put back).
   virtual bool has_pending() const = 0;
+  // True while the words waiting came from the command line itself (not from a reply typed at a
+  // question): a bad one there ends the command, at a question it is asked again.
+  virtual bool pending_from_command_line() const = 0;
 
   // A line for the user (information such as RESTORE's NOCUR NOSTR INTCU INTST).
   virtual void say(std::string_view line) = 0;
+  // A long text (HELP LONG, a listing), line by line: shown whole, paged where the screen is
+  // smaller than the text.
+  virtual void document(std::string_view text) = 0;
   // An error report that does not end the command (INCORRECT ENTRY): printed like say(), and
   // counted as an error for --strict.
   virtual void report(std::string_view text) = 0;

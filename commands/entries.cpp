@@ -5,59 +5,64 @@
 #include <array>
 #include <cmath>
 
-#include "commands/command.h"
-#include "commands/reports.h"
+#include "commands/answers.h"
 #include "workspace/apl.h"
 #include "workspace/error.h"
-#include "workspace/kernels/data_error.h"
 
 namespace igds {
 
 namespace {
 
-std::string entry_error(std::string_view why) {
-  return fmt::format("{}: {}", reports::incorrect_entry, why);
+constexpr std::string_view point_form = "A POINT ENTRY IS K X Y Z [X Y Z ...]";
+constexpr std::string_view tangent_form = "A TANGENT ENTRY IS K TX TY TZ (AND 1 OR 0 AT A CORNER)";
+constexpr std::string_view finish_entries = "END THE ENTRIES WITH AN EMPTY LINE FIRST";
+
+// The reason for an entry whose first word is not a number: a command typed too early, or the
+// form the entry must have.
+[[noreturn]] void refuse_form(std::span<const std::string> words, std::string_view form) {
+  if (!words.empty() && !parse_apl_number(words[0])) {
+    std::string reason = command_word_reason(words[0], finish_entries);
+    if (!reason.empty()) throw EntryError(reason);
+  }
+  throw EntryError(form);
 }
 
 }  // namespace
 
-std::optional<long long> parse_integer(std::string_view word, long long low, long long high) {
-  auto value = parse_apl_number(word);
-  if (!value || !std::isfinite(*value) || std::floor(*value) != *value) return std::nullopt;
-  if (*value < static_cast<double>(low) || *value > static_cast<double>(high)) return std::nullopt;
-  return static_cast<long long>(*value);
-}
-
-EntryOutcome apply_point_entry(std::span<const std::string> words, Array& inppn) {
+void apply_point_entry(std::span<const std::string> words, Array& inppn) {
   const long long count = static_cast<long long>(inppn.size() / 3);
-  if (words.size() < 4 || (words.size() - 1) % 3 != 0) return reports::incorrect_entry;
+  if (words.size() < 4 || (words.size() - 1) % 3 != 0) refuse_form(words, point_form);
   auto k = parse_integer(words[0], 1, count);
-  if (!k) return entry_error(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
+  if (!k) {
+    if (!parse_apl_number(words[0])) refuse_form(words, point_form);
+    throw EntryError(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
+  }
   const long long triplets = static_cast<long long>(words.size() - 1) / 3;
-  if (*k + triplets - 1 > count) return entry_error(fmt::format("THERE ARE ONLY {} POINTS", count));
+  if (*k + triplets - 1 > count) throw EntryError(fmt::format("THERE ARE ONLY {} POINTS", count));
   std::vector<double> values;
   values.reserve(words.size() - 1);
   for (std::size_t i = 1; i < words.size(); ++i) {
     auto v = parse_apl_number(words[i]);
-    if (!v) return reports::incorrect_entry;
+    if (!v) throw EntryError(fmt::format("{} IS NOT A NUMBER", words[i]));
     if (!std::isfinite(*v)) {
       long long point = *k + static_cast<long long>(i - 1) / 3;
-      return entry_error(fmt::format("POINT {} IS NOT A FINITE NUMBER", point));
+      throw EntryError(fmt::format("POINT {} IS NOT A FINITE NUMBER", point));
     }
     values.push_back(*v);
   }
   // Only a fully correct entry changes anything.
   std::copy(values.begin(), values.end(), inppn.ravel.begin() + (*k - 1) * 3);
-  return std::nullopt;
 }
 
 int tangent_row(int k, bool along_curve, int nocur, int nostr) {
   const int curve = (k - 1) / nostr, place = (k - 1) % nostr;
   if (along_curve) {
+    if (nostr == 1) return -1;  // a curve of one point has no direction
     if (place == 0) return 2 * curve;
     if (place == nostr - 1) return 2 * curve + 1;
     return -1;
   }
+  if (nocur == 1) return -1;
   if (curve == 0) return 2 * nocur + 2 * place;
   if (curve == nocur - 1) return 2 * nocur + 2 * place + 1;
   return -1;
@@ -74,19 +79,21 @@ Array zero_tangents(int nocur, int nostr) {
   return inptg;
 }
 
-EntryOutcome apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr,
-                                 Array& inptg) {
-  if (words.size() != 4 && words.size() != 5) return reports::incorrect_entry;
+void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg) {
+  if (words.size() != 4 && words.size() != 5) refuse_form(words, tangent_form);
   const long long count = static_cast<long long>(nocur) * nostr;
   auto k = parse_integer(words[0], 1, count);
-  if (!k) return entry_error(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
+  if (!k) {
+    if (!parse_apl_number(words[0])) refuse_form(words, tangent_form);
+    throw EntryError(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
+  }
   const int point = static_cast<int>(*k);
   std::array<double, 3> t{};
   for (std::size_t i = 0; i < 3; ++i) {
     auto v = parse_apl_number(words[i + 1]);
-    if (!v) return reports::incorrect_entry;
+    if (!v) throw EntryError(fmt::format("{} IS NOT A NUMBER", words[i + 1]));
     if (!std::isfinite(*v))
-      return entry_error(fmt::format("THE TANGENT AT POINT {} IS NOT A FINITE NUMBER", point));
+      throw EntryError(fmt::format("THE TANGENT AT POINT {} IS NOT A FINITE NUMBER", point));
     t[i] = *v;
   }
   const int curve_row = tangent_row(point, true, nocur, nostr);
@@ -94,16 +101,15 @@ EntryOutcome apply_tangent_entry(std::span<const std::string> words, int nocur, 
   int row = -1;
   if (curve_row >= 0 && stringer_row >= 0) {
     if (words.size() != 5)
-      return entry_error(
-          fmt::format("POINT {} IS A CORNER: GIVE 1 (CURVE) OR 0 (STRINGER)", point));
+      throw EntryError(fmt::format("POINT {} IS A CORNER: GIVE 1 (CURVE) OR 0 (STRINGER)", point));
     auto f = parse_integer(words[4], 0, 1);
-    if (!f) return entry_error("THE LAST NUMBER AT A CORNER MUST BE 1 (CURVE) OR 0 (STRINGER)");
+    if (!f) throw EntryError("THE LAST NUMBER AT A CORNER MUST BE 1 (CURVE) OR 0 (STRINGER)");
     row = *f == 1 ? curve_row : stringer_row;
   } else {
     if (curve_row < 0 && stringer_row < 0)
-      return entry_error(fmt::format("POINT {} IS NOT ON THE BORDER", point));
+      throw EntryError(fmt::format("POINT {} IS NOT ON THE BORDER", point));
     if (words.size() != 4)
-      return entry_error(fmt::format("POINT {} IS NOT A CORNER: GIVE K TX TY TZ", point));
+      throw EntryError(fmt::format("POINT {} IS NOT A CORNER: GIVE K TX TY TZ", point));
     row = curve_row >= 0 ? curve_row : stringer_row;
   }
   double* r = inptg.data() + static_cast<std::size_t>(row) * 4;
@@ -111,66 +117,64 @@ EntryOutcome apply_tangent_entry(std::span<const std::string> words, int nocur, 
   r[1] = t[1];
   r[2] = t[2];
   r[3] = point;
-  return std::nullopt;
 }
 
-std::optional<GridSize> parse_grid_size(std::span<const std::string> words) {
-  if (words.size() != 2) return std::nullopt;
-  auto nocur = parse_integer(words[0], 2, static_cast<long long>(max_input_points));
-  auto nostr = parse_integer(words[1], 2, static_cast<long long>(max_input_points));
-  if (!nocur || !nostr || *nocur * *nostr > static_cast<long long>(max_input_points))
-    return std::nullopt;
+GridSize parse_grid_size(std::span<const std::string> words) {
+  constexpr std::string_view form = "GIVE TWO WHOLE NUMBERS, NOCUR AND NOSTR";
+  if (words.size() != 2) refuse_form(words, form);
+  const auto limit = static_cast<long long>(max_input_points);
+  auto nocur = parse_integer(words[0], 1, limit);
+  auto nostr = parse_integer(words[1], 1, limit);
+  if (!nocur || !nostr) refuse_form(words, form);
+  if (*nocur * *nostr < 2) throw EntryError("A SURFACE NEEDS AT LEAST TWO POINTS");
+  if (*nocur * *nostr > limit)
+    throw EntryError(fmt::format("{} POINTS, AT MOST {}", *nocur * *nostr, max_input_points));
   return GridSize{static_cast<int>(*nocur), static_cast<int>(*nostr)};
 }
 
-EntryOutcome parse_density(std::span<const std::string> words, int nocur, int nostr,
-                           Density& density) {
-  if (words.size() != 2) return reports::incorrect_entry;
+Density parse_density(std::span<const std::string> words, int nocur, int nostr) {
+  constexpr std::string_view form = "GIVE TWO WHOLE NUMBERS >= 0, INTCU AND INTST";
+  if (words.size() != 2) refuse_form(words, form);
   const auto limit = static_cast<long long>(max_grid_points);
   auto intcu = parse_integer(words[0], 0, limit);
   auto intst = parse_integer(words[1], 0, limit);
-  if (!intcu || !intst) return reports::incorrect_entry;
-  const double rows = nocur + static_cast<double>(*intcu) * (nocur - 1);
-  const double columns = nostr + static_cast<double>(*intst) * (nostr - 1);
-  if (rows * columns > static_cast<double>(max_grid_points))
-    return entry_error(fmt::format("THE GRID WOULD HAVE {:.0f} POINTS, AT MOST {}", rows * columns,
-                                   max_grid_points));
-  density = {static_cast<int>(*intcu), static_cast<int>(*intst)};
-  return std::nullopt;
+  if (!intcu || !intst) refuse_form(words, form);
+  const double points = grid_points(nocur, nostr, double(*intcu), double(*intst));
+  if (points > double(max_grid_points))
+    throw EntryError(
+        fmt::format("THE GRID WOULD HAVE {:.0f} POINTS, AT MOST {}", points, max_grid_points));
+  return {static_cast<int>(*intcu), static_cast<int>(*intst)};
 }
 
-std::optional<bool> parse_yes_no(std::span<const std::string> words) {
-  static constexpr std::array<std::string_view, 2> answers{"YES", "NO"};
-  if (words.size() != 1) return std::nullopt;
-  int i = lookup_prefix(answers, words[0]);
-  if (i < 0) return std::nullopt;
-  return i == 0;
-}
-
-std::span<const std::string_view> projection_words() {
-  static constexpr std::array<std::string_view, 5> words{"CONIC", "ISOMETRIC", "ASSONOMETRIC",
-                                                         "ORTHOGONAL", "AXONOMETRIC"};
-  return words;
-}
-
-const Prompt points_prompt{
-    "POINTS?",
-    "A point number k and x y z (more triplets go to k+1, k+2, ...); an empty line ends the "
-    "points."};
+const Prompt size_prompt{"NUMBER OF CURVES AND STRINGERS?",
+                         "Two whole numbers: NOCUR, the input curves, and NOSTR, the input\n"
+                         "stringers (points on each curve); 1 3 is a single curve of 3 points."};
+const Prompt points_prompt{"POINTS?",
+                           "A point number k and x y z (more triplets go to k+1, k+2, ...); an\n"
+                           "empty line ends the points."};
 const Prompt tangents_prompt{
     "TANGENTS?",
-    "A border point number k and tx ty tz, then 1 (along the curve) or 0 (along the stringer)\n"
-    "at a corner; an empty line ends the tangents."};
+    "A border point k and tx ty tz, and at a corner 1 (along the curve) or 0\n"
+    "(along the stringer); length 1 is the natural pace; an empty line ends."};
 const Prompt density_prompt{
     "INTERPOLATED CURVES AND STRINGERS?",
-    "Two whole numbers >= 0: the curves to insert between two input curves, and the stringers\n"
-    "between two input stringers."};
+    "Two whole numbers >= 0: the curves to insert between two input curves,\n"
+    "and the stringers between two input stringers."};
+
+GridSize ask_grid_size(Context& ctx) {
+  return ask_for(ctx, size_prompt,
+                 [](const std::vector<std::string>& w) { return parse_grid_size(w); });
+}
 
 void ask_point_entries(Context& ctx, Array& inppn) {
   for (;;) {
     auto words = ctx.ask(points_prompt);
     if (words.empty()) return;
-    if (auto error = apply_point_entry(words, inppn)) ctx.report(*error);
+    try {
+      apply_point_entry(words, inppn);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+    }
   }
 }
 
@@ -178,7 +182,11 @@ void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg) {
   for (;;) {
     auto words = ctx.ask(tangents_prompt);
     if (words.empty()) return;
-    if (auto error = apply_tangent_entry(words, nocur, nostr, inptg)) ctx.report(*error);
+    try {
+      apply_tangent_entry(words, nocur, nostr, inptg);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+    }
   }
 }
 
@@ -186,38 +194,12 @@ Density ask_density(Context& ctx, int nocur, int nostr) {
   for (;;) {
     auto words = ctx.ask(density_prompt);
     if (words.empty()) continue;
-    Density density;
-    if (auto error = parse_density(words, nocur, nostr, density))
-      ctx.report(*error);
-    else
-      return density;
+    try {
+      return parse_density(words, nocur, nostr);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+    }
   }
-}
-
-Surface interpolate_surface(int nocur, int nostr, Density density, const Array& inppn,
-                            const Array& inptg) {
-  SurfaceInput input{nocur, nostr, density.intcu, density.intst, &inppn, &inptg};
-  try {
-    return interpolate(input);
-  } catch (const DataError& e) {
-    throw worded(e, "THE SURFACE IS NOT CHANGED");
-  }
-}
-
-void expect_no_more_words(Context& ctx) {
-  if (ctx.has_pending()) throw Report(reports::incorrect_command);
-}
-
-void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
-                  Surface surface) {
-  ws.nocur = nocur;
-  ws.nostr = nostr;
-  ws.intcu = density.intcu;
-  ws.intst = density.intst;
-  ws.inppn = std::move(inppn);
-  ws.inptg = std::move(inptg);
-  ws.patches = std::move(surface.patches);
-  ws.intpn = std::move(surface.intpn);
 }
 
 }  // namespace igds

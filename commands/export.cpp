@@ -1,9 +1,8 @@
 // EXPORT SVG | TEK | HPGL [name]: the current image in a file for other programs.
 #include <fmt/format.h>
 
+#include "commands/answers.h"
 #include "commands/command.h"
-#include "commands/entries.h"
-#include "commands/file_name.h"
 #include "commands/picture.h"
 #include "devices/plot.h"
 #include "devices/svg.h"
@@ -16,21 +15,27 @@ namespace igds {
 namespace {
 
 enum Option { svg, tek, hpgl };
-constexpr std::string_view file_types[] = {"SVG", "TEK", "HPGL"};
+
+// The option's word is also the file's type: NAME.SVG, NAME.TEK, NAME.HPGL.
+constexpr Choice options[] = {
+    {"SVG", svg, "[name]", "NAME.SVG, a picture any web browser shows"},
+    {"TEK", tek, "[name]", "NAME.TEK, the bytes a Tektronix 4013 would receive"},
+    {"HPGL", hpgl, "[name]", "NAME.HPGL, the plot PLOT would send"},
+};
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file of "
-                         "that name and type is replaced)."};
+                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file\n"
+                         "of that name and type is replaced)."};
 
-void run_export(Context& ctx, int option) {
+void run_export(Context& ctx, const Choice* option) {
   const Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   const std::string name = ask_file_name(ctx, file_prompt);
-  std::string_view type = file_types[option];
+  std::string_view type = option->word;
   const Picture picture = picture_of(ws.image);
-  std::string bytes = option == svg   ? svg_of(picture)
-                      : option == tek ? tek_stream(picture, ctx.options().tek)
-                                      : plot_hpgl(picture, ctx.options().plot).hpgl;
+  std::string bytes = option->code == svg   ? svg_of(picture)
+                      : option->code == tek ? tek_stream(picture, ctx.options().tek)
+                                            : plot_hpgl(picture, ctx.options().plot).hpgl;
   try {
     disk::replace_file(ctx.disk().path(name, type), bytes);
   } catch (const disk::IoError& e) {
@@ -39,33 +44,39 @@ void run_export(Context& ctx, int option) {
   ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
 }
 
+constexpr const Prompt* questions[] = {&file_prompt};
+
 }  // namespace
 
 extern const Command export_command{
     .name = "EXPORT",
-    .options = {"SVG", "TEK", "HPGL"},
+    .options = options,
+    .follows = {},
     .option_prompt = {"SVG, TEK OR HPGL?",
-                      "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013 "
-                      "stream) or HPGL (a plot)."},
-    .short_help = "EXPORT SVG, TEK or HPGL name: write the current image to a file on the disk.",
+                      "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013\n"
+                      "stream) or HPGL (a plot).",
+                      options},
+    .summary = "writes the current image into NAME.SVG, NAME.TEK or NAME.HPGL",
     .long_help = R"(EXPORT writes the current image (the one last displayed), with its
 description, to a file on the disk for other programs:
 
-  EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid out as on
-                      the Tektronix screen
-  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would receive (a
-                      clean screen, the image, the description); tek2plot and
-                      xterm -t read it
-  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a plotter or hp2xx
+  EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid
+                      out as on the Tektronix screen
+  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would
+                      receive (a clean screen, the image, the
+                      description); tek2plot and xterm -t read it
+  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a
+                      plotter or hp2xx
 
-A file of the same name and type is replaced. With no current image EXPORT
-says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits or
-$ # @ + - _ gets INCORRECT PARAMETER.
+A file of the same name and type is replaced. With no current image
+EXPORT says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits
+or $ # @ + - _ gets INCORRECT PARAMETER.
 
 Example (EX S is EXPORT SVG):
   DISPLAY SURFACE ASSONOMETRIC 110 130 120
   EXPORT SVG HULL
   EX T HULL)",
+    .questions = questions,
     .run = run_export,
 };
 

@@ -1,43 +1,88 @@
-// HELP [SHORT | LONG] (manual 4.10 and 6): explanations at READY. At any other prompt the
-// interpreter answers HELP itself, with the prompt's short help or the command's long help.
+// HELP [SHORT | LONG] (manual 4.10 and 6): explanations at READY, made from the declarations
+// of the commands. At any other question the interpreter answers HELP itself, with the
+// question's short help or the command's long help.
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <string>
 
+#include "commands/answers.h"
 #include "commands/command.h"
-#include "commands/entries.h"
 
 namespace igds {
 
+extern const Command help_command;
+
 namespace {
 
-enum Option { short_help, long_help };
+enum Option { short_help, long_help };  // STATUS[1]: 0 SHORT, 1 LONG
 
-constexpr std::string_view overview = R"(IGDS - Interactive Design of Interpolated Surfaces
+constexpr Choice options[] = {
+    {"SHORT", short_help, {}, "a line or two on what is awaited (and keep to that)"},
+    {"LONG", long_help, {}, "a full explanation (and keep to that)"},
+};
 
-A surface is defined by a rectangular grid of input points: NOCUR curves crossing
-NOSTR stringers, with the tangents at the border of the grid. IGDS interpolates it
-with bicubic Coons patches, inserting INTCU curves and INTST stringers between the
-input ones, and shows projections of it. Commands, typed after READY:
+constexpr std::size_t width = 72;  // the 4013 screen has 73 columns
 
-  BUILD                  a new surface: grid size, points, tangents, density
-  CHANGE GRID|TANGENTS|POINTS      modify the current surface
-  RESTORE [name]         the surface saved in NAME IGDSDATA
-  DISPLAY INPUT|SURFACE [projection [parameters]]   project and draw
-  DISPLAY FIRST|SECOND|FILE [name] draw a kept image again
-  PLOT SELECTRIC|EBCDIC  draw the current image on the HP plotter
-  STORE FIRST|SECOND|FILE [name]   keep a copy of the current image
-  SAVE [name]            the surface into NAME IGDSDATA
-  WRITE [name]           the surface as card images into NAME IGDSCHAR
-  END CMS|APL            leave (everything is kept for the next session)
-  HELP [SHORT|LONG]      explanations; at any question, HELP explains it
-  ERASE                  a clean screen
-  EXPORT SVG|TEK|HPGL [name]       the current image into a file
+// `text` broken at blanks into lines of at most `width - indent` characters, every line after
+// the first indented by `indent` blanks.
+std::string wrapped(std::string_view text, std::size_t indent, std::size_t first_indent) {
+  std::string out, line;
+  std::size_t limit = width - first_indent;
+  auto flush = [&] {
+    out += line;
+    out += '\n';
+    out.append(indent, ' ');
+    line.clear();
+    limit = width - indent;
+  };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    while (i < text.size() && text[i] == ' ') ++i;
+    std::size_t j = text.find(' ', i);
+    if (j == std::string_view::npos) j = text.size();
+    std::string_view word = text.substr(i, j - i);
+    if (!line.empty() && line.size() + 1 + word.size() > limit) flush();
+    if (!line.empty()) line += ' ';
+    line += word;
+    i = j;
+  }
+  return out + line;
+}
 
-Any word may be cut short: the first entry of the list that starts with the
-letters typed wins (S is STORE, SA is SAVE, D SU is DISPLAY SURFACE). What is not
-on the line is asked for. Numbers may be written the APL way (¯3.5 is -3.5).
-Lines starting with * or ⍝ are comments. Ctrl-C gives up the command in progress.
-HELP SHORT makes HELP answer in a line or two, HELP LONG in full (the setting is
-kept from one session to the next).
+std::string make_overview() {
+  std::string text = R"(IGDS - Interactive Design of Interpolated Surfaces
+
+A surface is defined by a rectangular grid of input points: NOCUR
+curves crossing NOSTR stringers, with the tangents at the border of the
+grid. IGDS interpolates it with bicubic Coons patches, inserting INTCU
+curves and INTST stringers between the input ones, and shows
+projections of it. The commands, typed after READY:
+
+)";
+  // Each command's forms, then what it does in the column at 26.
+  constexpr std::size_t column = 26;
+  for (const Command* c : command_table()) {
+    const auto forms = command_syntax(*c);
+    for (std::size_t i = 0; i < forms.size(); ++i) {
+      std::string line = "  " + forms[i];
+      if (i + 1 < forms.size() || line.size() + 1 > column) {
+        text += line + "\n";
+        if (i + 1 < forms.size()) continue;
+        line.clear();
+      }
+      line.append(column - line.size(), ' ');
+      text += line + wrapped(c->summary, column, column) + "\n";
+    }
+  }
+  text += R"(
+Any word may be cut short: the first entry of the list that starts
+with the letters typed wins (S is STORE, SA is SAVE, D SU is DISPLAY
+SURFACE). What is not on the line is asked for. Numbers may be written
+the APL way (¯3.5 is minus 3.5). Lines starting with * or ⍝ are
+comments. Ctrl-C gives up the command in progress. HELP SHORT makes
+HELP answer in a line or two, HELP LONG in full (the setting is kept
+from one session to the next).
 
 A small session:
   BUILD
@@ -50,18 +95,15 @@ A small session:
   DISPLAY SURFACE ASSONOMETRIC 110 130 120
   READY
   SAVE TWIST)";
+  return text;
+}
 
-void run_help(Context& ctx, int option) {
+void run_help(Context& ctx, const Choice* option) {
   expect_no_more_words(ctx);
   Workspace& ws = ctx.workspace();
-  if (option >= 0) ws.status[0] = option == long_help ? 1 : 0;
+  if (option) ws.status[0] = option->code == long_help ? 1 : 0;
   if (ws.status[0] == 1) {
-    std::string_view text = overview;
-    while (!text.empty()) {
-      auto end = text.find('\n');
-      ctx.say(text.substr(0, end));
-      text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
-    }
+    ctx.document(help_overview());
     return;
   }
   std::string names;
@@ -69,19 +111,75 @@ void run_help(Context& ctx, int option) {
     names += names.empty() ? "" : " ";
     names += command->name;
   }
-  ctx.say("Type a command: " + names + ".");
+  ctx.say(wrapped("Type a command: " + names + ".", 0, 0));
   ctx.say("A first letter is enough (S is STORE); HELP LONG explains them all.");
 }
 
 }  // namespace
 
+std::string_view help_overview() {
+  static const std::string overview = make_overview();
+  return overview;
+}
+
+std::string_view help_word() {
+  return help_command.name;
+}
+
+std::span<const Choice> help_lengths() {
+  return options;
+}
+
+std::vector<std::string> command_syntax(const Command& c) {
+  if (c.options.empty())
+    return {c.follows.empty() ? std::string(c.name) : fmt::format("{} {}", c.name, c.follows)};
+  // The options in groups of those followed by the same words, in the order they first come.
+  std::vector<std::string_view> follows;
+  for (const Choice& o : c.options)
+    if (std::find(follows.begin(), follows.end(), o.follows) == follows.end())
+      follows.push_back(o.follows);
+  std::vector<std::string> forms;
+  for (std::string_view f : follows) {
+    std::string words;
+    for (const Choice& o : c.options)
+      if (o.follows == f) {
+        if (!words.empty()) words += '|';
+        words += o.word;
+      }
+    forms.push_back(fmt::format("{} {}{}{}", c.name, words, f.empty() ? "" : " ", f));
+  }
+  return forms;
+}
+
+HelpRequest help_request(std::span<const std::string> words) {
+  if (words.empty() || words.size() > 2) return {};
+  const Choice help_word{help_command.name};
+  if (!choose({&help_word, 1}, words[0])) return {};
+  if (words.size() == 1) return {true, -1};
+  const Choice* length = choose(options, words[1]);
+  if (!length) return {};
+  return {true, length->code};
+}
+
 extern const Command help_command{
     .name = "HELP",
-    .options = {"SHORT", "LONG"},
+    .options = options,
+    .follows = {},
     // No question: HELP alone answers in the length in force (STATUS[1]).
     .option_prompt = {},
-    .short_help = "HELP SHORT or LONG: explanations; at any question HELP explains it.",
-    .long_help = overview,
+    .summary = "explains what is awaited, in a line or two or in full",
+    .long_help = R"(HELP explains. At READY it lists the commands (SHORT) or explains
+IGDS and every command (LONG); at any question it says what the
+question awaits (SHORT) or explains the command being run (LONG).
+
+  HELP        answers in the length in force
+  HELP SHORT  a line or two, and keeps to that from now on
+  HELP LONG   in full, and keeps to that from now on
+
+The length in force is STATUS[1] (1 LONG, 0 SHORT): LONG in a very
+first session, then whatever was chosen last, from one session to the
+next. After the answer the same question is asked again.)",
+    .questions = {},
     .run = run_help,
 };
 

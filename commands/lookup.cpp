@@ -4,20 +4,31 @@
 
 namespace igds {
 
-// The manual's LUT: the first row of the table that matches the typed letters up to their length.
-int lookup_prefix(std::span<const std::string_view> words, std::string_view typed) {
-  if (typed.empty()) return -1;
-  for (std::size_t i = 0; i < words.size(); ++i) {
-    std::string_view word = words[i];
-    if (typed.size() > word.size()) continue;
-    bool match = true;
-    for (std::size_t j = 0; j < typed.size() && match; ++j) {
-      match = std::toupper(static_cast<unsigned char>(typed[j])) ==
-              std::toupper(static_cast<unsigned char>(word[j]));
-    }
-    if (match) return static_cast<int>(i);
+namespace {
+
+bool starts_with_ignoring_case(std::string_view word, std::string_view typed) {
+  if (typed.empty() || typed.size() > word.size()) return false;
+  for (std::size_t j = 0; j < typed.size(); ++j) {
+    if (std::toupper(static_cast<unsigned char>(typed[j])) !=
+        std::toupper(static_cast<unsigned char>(word[j])))
+      return false;
   }
-  return -1;
+  return true;
+}
+
+}  // namespace
+
+// The manual's LUT: the first row of the table that matches the typed letters up to their length.
+const Choice* choose(std::span<const Choice> choices, std::string_view typed) {
+  for (const Choice& c : choices)
+    if (starts_with_ignoring_case(c.word, typed)) return &c;
+  return nullptr;
+}
+
+const Command* find_command(std::string_view typed) {
+  for (const Command* c : command_table())
+    if (starts_with_ignoring_case(c->name, typed)) return c;
+  return nullptr;
 }
 
 }  // namespace igds

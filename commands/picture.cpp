@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "commands/view.h"
 #include "devices/layout.h"
 #include "workspace/apl.h"
 
@@ -105,21 +106,8 @@ void add_arrows(Drawing2& drawing, const Array& arrows, const Grid& g) {
   }
 }
 
-const char* projection_name(Projection p) {
-  switch (p) {
-    case Projection::conic:
-      return "CONIC";
-    case Projection::assonometric:
-      return "ASSONOMETRIC";
-    case Projection::isometric:
-      return "ISOMETRIC";
-    case Projection::orthogonal:
-      return "ORTHOGONAL";
-  }
-  return "PROJECTION";
-}
-
-std::string fitted(std::string line, std::size_t width) {
+std::string fitted(std::string_view text, std::size_t width) {
+  std::string line(text);
   if (line.size() > width) line.resize(width);
   return line;
 }
@@ -144,8 +132,8 @@ std::string plain_number(double value) {
 
 std::vector<std::string> describe(const Description& desim, std::size_t width) {
   std::vector<std::string> lines;
-  lines.push_back(fitted(desim.what == 0 ? "INPUT" : desim.what == 1 ? "SURFACE" : "IMAGE", width));
-  lines.push_back(fitted(projection_name(desim.projection), width));
+  lines.push_back(fitted(image_kind_word(desim.what), width));
+  lines.push_back(fitted(projection_word(desim.projection), width));
   const auto& p = desim.parameters;
   std::vector<std::string> items;
   switch (desim.projection) {
@@ -160,11 +148,9 @@ std::vector<std::string> describe(const Description& desim, std::size_t width) {
       items.push_back(fmt::format("ANGLE {}", plain_number(p[1])));
       break;
     }
-    case Projection::orthogonal: {
-      int plane = static_cast<int>(p[0]);
-      items.push_back(plane == 1 ? "XY" : plane == 2 ? "XZ" : plane == 3 ? "YZ" : "?");
+    case Projection::orthogonal:
+      items.emplace_back(plane_word(p[0]));
       break;
-    }
   }
   // The parameters share a line when they fit, else one line each.
   std::string joined;
@@ -175,6 +161,27 @@ std::vector<std::string> describe(const Description& desim, std::size_t width) {
     for (const auto& item : items) lines.push_back(fitted(item, width));
   }
   return lines;
+}
+
+std::string describe_line(const Description& d) {
+  const auto& p = d.parameters;
+  auto number = [](double v) { return format_apl_number(v); };
+  std::string projection(projection_word(d.projection));
+  switch (d.projection) {
+    case Projection::conic:
+      projection += fmt::format(", VIEW POINT {} {} {}", number(p[0]), number(p[1]), number(p[2]));
+      break;
+    case Projection::assonometric:
+      projection += fmt::format(" {} {} {}", number(p[0]), number(p[1]), number(p[2]));
+      break;
+    case Projection::isometric:
+      projection += fmt::format(", AXIS {} ANGLE {}", number(p[0]), number(p[1]));
+      break;
+    case Projection::orthogonal:
+      projection += fmt::format(" {}", plane_word(p[0]));
+      break;
+  }
+  return fmt::format("IMAGE: {}, {}", image_kind_word(d.what), projection);
 }
 
 Picture picture_of(std::shared_ptr<const Image> image) {

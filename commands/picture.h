@@ -24,6 +24,10 @@ Picture picture_of(const Image& image);
 // (e.g. `SURFACE`, `ASSONOMETRIC`, `110 130 120`); no line longer than `width` characters.
 std::vector<std::string> describe(const Description& desim, std::size_t width);
 
+// A one-line description of an image (what, projection, parameters), as the none terminal
+// mode prints it: IMAGE: SURFACE, ASSONOMETRIC 110 130 120.
+std::string describe_line(const Description& desim);
+
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);
 

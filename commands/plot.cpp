@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "commands/answers.h"
 #include "commands/command.h"
-#include "commands/entries.h"
 #include "commands/picture.h"
 #include "devices/plot.h"
 #include "workspace/disk/format.h"
@@ -59,7 +59,14 @@ void to_path(const std::string& path, std::string_view hpgl) {
                              sent == 0 ? "NOTHING PLOTTED" : "THE PLOT IS INCOMPLETE"));
 }
 
-void run_plot(Context& ctx, int option) {
+enum Option { selectric = 1, ebcdic = 2 };  // STATUS[2]
+
+constexpr Choice options[] = {
+    {"SELECTRIC", selectric, {}, "a terminal with a SELECTRIC keyboard (= on the left)"},
+    {"EBCDIC", ebcdic, {}, "a terminal with an EBCDIC keyboard (= on the right)"},
+};
+
+void run_plot(Context& ctx, const Choice* option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   expect_no_more_words(ctx);
@@ -76,7 +83,7 @@ void run_plot(Context& ctx, int option) {
     where = plotter;
   }
   // STATUS[2]: the keyboard of the last PLOT, 1 SELECTRIC, 2 EBCDIC.
-  ws.status[1] = option + 1;
+  ws.status[1] = option->code;
   ctx.say(plot_summary(where, plot.stats));
   if (plot.stats.clipped) ctx.say(plot_clipped_notice);
 }
@@ -85,33 +92,39 @@ void run_plot(Context& ctx, int option) {
 
 extern const Command plot_command{
     .name = "PLOT",
-    .options = {"SELECTRIC", "EBCDIC"},
+    .options = options,
+    .follows = {},
     .option_prompt = {"SELECTRIC OR EBCDIC?",
-                      "The keyboard of your terminal: SELECTRIC or EBCDIC (kept for the "
-                      "record; the plot is the same)."},
-    .short_help = "PLOT SELECTRIC or EBCDIC: draw the current image on the HP-GL pen plotter.",
-    .long_help = R"(PLOT draws the current image (the one last displayed) on a pen plotter that
-speaks HP-GL (HP 7475A and its kin), with its description beside it, as large
-as the paper allows, aspect kept, centred on a landscape sheet.
+                      "The keyboard of your terminal: SELECTRIC or EBCDIC (kept for the record;\n"
+                      "the plot is the same).",
+                      options},
+    .bad_option = reports::incorrect_command,  // the manual's 4.5
+    .summary = "draws the current image on the HP plotter",
+    .long_help = R"(PLOT draws the current image (the one last displayed) on a pen
+plotter that speaks HP-GL (HP 7475A and its kin), with its description
+beside it, as large as the paper allows, aspect kept, centred on a
+landscape sheet.
 
-  PLOT SELECTRIC     the option named the keyboard of the 1975 terminal (the
-  PLOT EBCDIC        = sign on the left or on the right); it is recorded in
-                     STATUS but no longer changes the output.
+  PLOT SELECTRIC  the option named the keyboard of the 1975 terminal
+  PLOT EBCDIC     (the = sign on the left or on the right); it is
+                  recorded in STATUS but no longer changes the output.
 
 Where the plot goes is chosen when igds starts:
-  (default)              a new file PLOTnnnn.HPGL on the disk, numbered on
-  --plotter tty          the plotter wired on the terminal line
-  --plotter PATH         a file (each plot appended) or a device (/dev/ttyUSB0)
-  --paper A4|A3|LETTER|B the paper in the plotter (A4 unless told)
+  (default)               a new file PLOTnnnn.HPGL on the disk
+  --plotter tty           the plotter wired on the terminal line
+  --plotter PATH          a file (each plot appended) or a device
+                          (/dev/ttyUSB0)
+  --paper A4|A3|LETTER|B  the paper in the plotter (A4 unless told)
 
-After each plot igds says how many vectors were drawn, how often the pen was
-lifted, how far it travelled lifted, and how many bytes were sent. The pen
-order is chosen to keep that travel short. With no current image PLOT says
-IMAGE NOT FOUND.
+After each plot igds says how many vectors were drawn, how often the
+pen was lifted, how far it travelled lifted, and how many bytes were
+sent. The pen order is chosen to keep that travel short. With no
+current image PLOT says IMAGE NOT FOUND.
 
 Example (P S is PLOT SELECTRIC):
   DISPLAY SURFACE ASSONOMETRIC 110 130 120
   P S)",
+    .questions = {},
     .run = run_plot,
 };
 

@@ -1,6 +1,6 @@
 // SAVE [name] (manual 4.6): the current surface in the binary file NAME IGDSDATA.
+#include "commands/answers.h"
 #include "commands/command.h"
-#include "commands/file_name.h"
 #include "workspace/error.h"
 
 namespace igds {
@@ -8,37 +8,45 @@ namespace igds {
 namespace {
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the surface file: 1 to 8 letters, digits or $ # @ + - _ "
+                         "A name for the surface file: 1 to 8 letters, digits or $ # @ + - _\n"
                          "(type IGDSDATA; a file of that name is replaced)."};
 
-void run_save(Context& ctx, int) {
+void run_save(Context& ctx, const Choice*) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
   save_surface(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
 }
+
+constexpr const Prompt* questions[] = {&file_prompt};
 
 }  // namespace
 
 extern const Command save_command{
     .name = "SAVE",
     .options = {},
+    .follows = "[name]",
     .option_prompt = {},
-    .short_help = "SAVE name: keep the current surface in a file, for RESTORE.",
-    .long_help = R"(SAVE writes the current surface to the file NAME IGDSDATA on the disk: the
-input points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches and the
-interpolated grid, exactly (RESTORE gives back the very same numbers). A
-file of the same name is replaced; the file is written whole or not at all.
-These files are an archive of surfaces; RESTORE makes one current again.
+    .summary = "writes the current surface into NAME.IGDSDATA",
+    .long_help = R"(SAVE writes the current surface to the file NAME.IGDSDATA on the disk:
+the input points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches
+and the interpolated grid, exactly (RESTORE gives back the very same
+numbers). A file of the same name is replaced; the file is written
+whole or not at all. These files are an archive of surfaces; RESTORE
+makes one current again.
 
-The name may follow the command; otherwise IGDS asks for it. A name is 1 to
-8 letters, digits or $ # @ + - _ (HULL and hull are the same file).
+The name may follow the command; otherwise IGDS asks for it. A name is
+1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same
+file).
 
-  INPUT NOT FOUND       there is no current surface (BUILD or RESTORE first)
+  INPUT NOT FOUND       there is no current surface (BUILD or RESTORE
+                        first)
   INCORRECT PARAMETER   the name is not such a name
-  CANNOT WRITE ...      the disk refused (full, say); nothing was changed
+  CANNOT WRITE ...      the disk refused (full, say); nothing was
+                        changed
 
 Example (SA is the shortest abbreviation: S is STORE):
   SA HULL)",
+    .questions = questions,
     .run = run_save,
 };
 

@@ -1,28 +1,48 @@
-// The projections of DISPLAY INPUT and DISPLAY SURFACE (manual 4.4): reading their parameters
-// and making the image of the input points or of the interpolated grid.
+// The projections of DISPLAY INPUT and DISPLAY SURFACE (manual 4.4): their words, reading their
+// parameters, and making the image of the input points or of the interpolated grid.
 #pragma once
 
-#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
+#include "commands/context.h"
 #include "workspace/state.h"
 
 namespace igds {
 
-// The projection named by `word` (first match in projection_words(), AXONOMETRIC included).
-std::optional<Projection> projection_named(std::string_view word);
+// CONIC ISOMETRIC ASSONOMETRIC ORTHOGONAL, then AXONOMETRIC (a synonym after the manual's
+// four); code: the Projection.
+std::span<const Choice> projection_choices();
+// XY YZ XZ; code: the Plane (DESIM[3]).
+std::span<const Choice> plane_choices();
 
-// The parameters of `projection` from the words typed; nullopt for INCORRECT PARAMETER (wrong
-// count, not numbers, out of range). The view point of CONIC is checked by the image makers.
-std::optional<View> parse_view(Projection projection, std::span<const std::string> words);
+// The declared word of a projection (CONIC, ...), of a plane code (XY, ...; "?" for another),
+// and of what an image shows (DESIM[1]: INPUT, SURFACE; the words of DISPLAY's options).
+std::string_view projection_word(Projection projection);
+std::string_view plane_word(double code);
+std::string_view image_kind_word(int what);
+
+// The parameters of `projection` from the words typed. Throws ParameterError saying what is
+// wrong (wrong count, not numbers, out of range).
+View parse_view(Projection projection, std::span<const std::string> words);
+
+// The question that asks for a projection's parameters.
+const Prompt& parameters_prompt(Projection projection);
+extern const Prompt projection_prompt;
+// PROJECTION? and the four parameter questions, in that order.
+std::span<const Prompt* const> view_questions();
 
 // DISPLAY INPUT: INPPN projected (NOCUR x NOSTR x 2) and an arrow for every non-zero border
-// tangent. Throws Report INCORRECT PARAMETER for a view point inside the points' bounding box
-// or a point behind the eye.
+// tangent. DISPLAY SURFACE: INTPN projected. Both throw ParameterError for a view point inside
+// the points' bounding box or a point behind the eye.
 Image input_image(const Workspace& ws, const View& view);
-
-// DISPLAY SURFACE: INTPN projected, same checks.
 Image surface_image(const Workspace& ws, const View& view);
+
+// Asks for the projection and its parameters (from the command line, or question by question)
+// and makes the image with `make` (input_image or surface_image): a bad answer typed at a
+// question gets its report and the question again.
+Image ask_image(Context& ctx, Image (*make)(const Workspace&, const View&));
 
 }  // namespace igds

@@ -1,8 +1,8 @@
 // WRITE [name] (manual 4.7): the current surface as character card images in NAME IGDSCHAR.
 #include <fmt/format.h>
 
+#include "commands/answers.h"
 #include "commands/command.h"
-#include "commands/file_name.h"
 #include "workspace/error.h"
 
 namespace igds {
@@ -10,10 +10,10 @@ namespace igds {
 namespace {
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the character file: 1 to 8 letters, digits or "
-                         "$ # @ + - _ (type IGDSCHAR; a file of that name is replaced)."};
+                         "A name for the character file: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "(type IGDSCHAR; a file of that name is replaced)."};
 
-void run_write(Context& ctx, int) {
+void run_write(Context& ctx, const Choice*) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
   std::size_t overflow = write_char(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
@@ -22,16 +22,19 @@ void run_write(Context& ctx, int) {
     ctx.say(fmt::format("{} VALUES DO NOT FIT F10.3: WRITTEN AS **********", overflow));
 }
 
+constexpr const Prompt* questions[] = {&file_prompt};
+
 }  // namespace
 
 extern const Command write_command{
     .name = "WRITE",
     .options = {},
+    .follows = "[name]",
     .option_prompt = {},
-    .short_help = "WRITE name: the current surface as FORTRAN card images, for other programs.",
-    .long_help = R"(WRITE writes the current surface to the character file NAME IGDSCHAR on the
-disk, in card images that a FORTRAN program (or any other) can read with these
-formats, one group after the other:
+    .summary = "writes the current surface as card images into NAME.IGDSCHAR",
+    .long_help = R"(WRITE writes the current surface to the character file NAME.IGDSCHAR
+on the disk, in card images that a FORTRAN program (or any other) can
+read with these formats, one group after the other:
 
   (10I5)    STATUS
   (4I5)     NOCUR NOSTR INTCU INTST
@@ -40,19 +43,21 @@ formats, one group after the other:
   (3I5)     the shape of INTPN,   then (8F10.3) INTPN
   (5I5)     the shape of PATCHES, then (8F10.3) PATCHES
 
-Values are rounded to 3 decimals. A value that needs more than 10 columns
-(1000000 or more, -100000 or less) is written as ten asterisks, as FORTRAN
-does, and WRITE says how many there are; SAVE keeps every value exactly.
-A file of the same name is replaced.
+Values are rounded to 3 decimals. A value that needs more than 10
+columns (1000000 or more, -100000 or less) is written as ten
+asterisks, as FORTRAN does, and WRITE says how many there are; SAVE
+keeps every value exactly. A file of the same name is replaced.
 
-The name may follow the command; otherwise IGDS asks for it. A name is 1 to
-8 letters, digits or $ # @ + - _ (HULL and hull are the same file).
+The name may follow the command; otherwise IGDS asks for it. A name is
+1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same
+file).
 
   INPUT NOT FOUND       there is no current surface
   INCORRECT PARAMETER   the name is not such a name
 
 Example:
   WRITE HULL)",
+    .questions = questions,
     .run = run_write,
 };
 

@@ -21,6 +21,31 @@ inline constexpr int char_width = 14;    // 4013 alpha: 74 characters of 14 poin
 inline constexpr int text_columns = (width - text_x) / char_width;  // 17: never past x = 1023
 }  // namespace tek_screen
 
+// Where things go on the Tek screen, in 4013 points.
+struct TekLayout {
+  Box image;             // the picture's square
+  int caption_x = 0;     // the caption column
+  int caption_top = 0;   // the baseline of its first line
+  int caption_rows = 0;  // lines that fit in it
+  int dialogue_top = 0;  // the baseline of the first line of dialogue below the picture
+  int dialogue_rows = 0;
+};
+
+// The picture alone on the screen (EXPORT TEK, EXPORT SVG, the Tek window of --term xterm): the
+// square 0..767, the caption at x = 780 from the top.
+TekLayout full_layout();
+
+// Tek mode, where the dialogue shares the screen: the picture in the square 0..583 at the top
+// left, the caption at x = 600, eight full lines of dialogue (73 characters) below the picture.
+TekLayout dialogue_layout();
+
+// A page without a picture: the dialogue over the whole screen, 34 lines of 73 characters.
+inline constexpr int text_rows = tek_screen::text_top / tek_screen::line_height + 1;
+inline constexpr int text_columns = (tek_screen::width - 1) / tek_screen::char_width;
+
+// Draws the picture (not its caption) in the layout's square.
+void draw_picture(const Picture& picture, Device& device, int unit, const TekLayout& layout);
+
 // Where the dialogue goes on after a DISPLAY whose description has `lines` lines: the start of
 // the line below it, at x = 780 (in device units, `unit` times the 4013's).
 DevicePoint below_description(std::size_t lines, int unit);

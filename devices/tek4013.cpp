@@ -91,6 +91,11 @@ void TekEncoder::text(DevicePoint p, std::string_view line) {
   for (char c : line) out_ += (c >= 0x20 && c < 0x7F) ? c : '?';
 }
 
+void TekEncoder::append_text(std::string_view text) {
+  alpha();
+  for (char c : text) out_ += (c >= 0x20 && c < 0x7F) ? c : '?';
+}
+
 void TekEncoder::alpha_at(DevicePoint p) {
   move(p);
   alpha();

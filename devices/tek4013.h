@@ -29,13 +29,19 @@ class TekEncoder : public Device {
   // The 4014's line styles for the dashes (ESC ` solid, a dotted, b dot-dashed, c short-dashed);
   // the 4013 has one pen and one weight.
   void style(const Style& style) override;
+  // Characters in alpha mode where the alpha cursor is (printable 7-bit; others as '?').
+  void append_text(std::string_view text);
   // Alpha mode with the cursor at `p`: where the dialogue goes on.
   void alpha_at(DevicePoint p);
   // Alpha mode where the beam is (US), unless already in alpha mode.
   void alpha();
 
   const std::string& bytes() const { return out_; }
-  std::string take() { return std::move(out_); }
+  std::string take() {
+    std::string bytes;
+    bytes.swap(out_);
+    return bytes;
+  }
 
  private:
   enum class Mode { alpha, graph };

@@ -41,50 +41,6 @@ std::string erase_bytes(TermMode mode, TekOptions tek) {
   return encoder.take();
 }
 
-std::string TekDialogue::home() {
-  baseline_ = tek_screen::text_top;
-  x_ = 0;
-  column_ = 0;
-  TekEncoder encoder(tek_.bits);
-  encoder.alpha_at({0, tek_screen::text_top * unit_of(tek_)});
-  return encoder.take();
-}
-
-void TekDialogue::new_line(std::string& out) {
-  // The lowest baseline whose characters are still on the screen.
-  constexpr int bottom = tek_screen::text_top % tek_screen::line_height;
-  if (baseline_ - tek_screen::line_height >= bottom) {
-    out += "\r\n";
-    baseline_ -= tek_screen::line_height;
-    x_ = 0;
-    column_ = 0;
-  } else {
-    out += home();
-  }
-}
-
-std::string TekDialogue::text(std::string_view text) {
-  std::string out;
-  out.reserve(text.size() + 16);
-  for (char c : text) {
-    if (c == '\n') {
-      new_line(out);
-      continue;
-    }
-    if (x_ + (column_ + 1) * tek_screen::char_width > tek_screen::width) new_line(out);
-    out += c;
-    ++column_;
-  }
-  return out;
-}
-
-void TekDialogue::displayed(const Picture& picture) {
-  const DevicePoint at = below_description(picture.caption.size(), 1);
-  baseline_ = at.y;
-  x_ = at.x;
-  column_ = 0;
-}
-
 std::string tek_stream(const Picture& picture, TekOptions tek) {
   TekEncoder encoder(tek.bits);
   encoder.page();

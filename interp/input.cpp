@@ -6,6 +6,7 @@
 #include <readline/history.h>
 #include <readline/readline.h>
 #include <signal.h>
+#include <sys/signalfd.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -13,276 +14,192 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <utility>
 
-#include "commands/context.h"
-#include "devices/terminal.h"
 #include "interp/words.h"
 
 namespace igds {
 
-volatile std::sig_atomic_t interrupted = 0;
+// ---- Interrupts -------------------------------------------------------------------------------
 
-namespace {
-
-extern "C" void on_interrupt(int) {
-  interrupted = 1;
-}
-
-}  // namespace
-
-void catch_interrupts() {
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigemptyset(&action.sa_mask);
-  action.sa_flags = 0;  // no SA_RESTART: the wait for a line must end
-  sigaction(SIGINT, &action, nullptr);
-  // A parent may have started igds with SIGINT blocked; Ctrl-C must reach it all the same.
+Interrupts::Interrupts() {
   sigset_t interrupt;
   sigemptyset(&interrupt);
   sigaddset(&interrupt, SIGINT);
-  pthread_sigmask(SIG_UNBLOCK, &interrupt, nullptr);
+  // Blocked, whatever mask igds inherited: Ctrl-C is read from the descriptor.
+  pthread_sigmask(SIG_BLOCK, &interrupt, &old_mask_);
+  fd_ = signalfd(-1, &interrupt, SFD_CLOEXEC | SFD_NONBLOCK);
 }
 
-namespace {
+Interrupts::~Interrupts() {
+  if (fd_ >= 0) close(fd_);
+  pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
+}
 
-// tek mode: the dialogue's place on the Tek screen (a 4013 is also a 7-bit terminal).
-std::optional<TekDialogue> tek_dialogue;
+bool Interrupts::take() {
+  bool any = false;
+  signalfd_siginfo info;
+  while (fd_ >= 0 && ::read(fd_, &info, sizeof info) == static_cast<ssize_t>(sizeof info))
+    any = true;
+  return any;
+}
 
-// What a 7-bit terminal can show of the APL characters igds writes or echoes.
-std::string transliterated(std::string_view text) {
-  static constexpr std::pair<std::string_view, std::string_view> apl[] = {
-      {"\xC2\xAF", "-"},         // ¯ high minus: the same number
-      {"\xE2\x8D\xB4", "RHO "},  // ⍴
-      {"\xE2\x8D\x9D", "NB."},   // ⍝ lamp: a comment
-  };
-  std::string out;
-  out.reserve(text.size());
-  for (std::size_t i = 0; i < text.size();) {
-    const auto byte = static_cast<unsigned char>(text[i]);
-    if (byte < 0x80) {
-      out += text[i++];
-      continue;
-    }
-    bool known = false;
-    for (const auto& [utf8, ascii] : apl) {
-      if (text.substr(i).starts_with(utf8)) {
-        out += ascii;
-        i += utf8.size();
-        known = true;
-        break;
-      }
-    }
-    if (known) continue;
-    // Any other character: one '?' for all its bytes.
-    out += '?';
-    ++i;
-    while (i < text.size() && (static_cast<unsigned char>(text[i]) & 0xC0) == 0x80) ++i;
+Event::Kind wait_for(int fd, Interrupts* interrupts, int timeout) {
+  for (;;) {
+    pollfd fds[2] = {{fd, POLLIN, 0}, {interrupts ? interrupts->fd() : -1, POLLIN, 0}};
+    const int n = poll(fds, interrupts ? 2 : 1, timeout);
+    if (n < 0 && errno == EINTR) continue;
+    if (n == 0) return Event::Kind::timeout;
+    if (interrupts && (fds[1].revents & POLLIN) && interrupts->take())
+      return Event::Kind::interrupt;
+    // Readable, at its end, or in error: the read says which.
+    return Event::Kind::key;
   }
-  return out;
 }
 
-// Waits until `fd` can be read. False when Ctrl-C came before or during the wait: SIGINT is
-// blocked outside ppoll, so that one arriving between the check and the wait is not lost.
-bool wait_for_input(int fd) {
-  sigset_t block, old;
-  sigemptyset(&block);
-  sigaddset(&block, SIGINT);
-  pthread_sigmask(SIG_BLOCK, &block, &old);
-  bool ready = false;
-  while (!interrupted) {
-    pollfd in{fd, POLLIN, 0};
-    int n = ppoll(&in, 1, nullptr, &old);
-    if (n > 0 || (n < 0 && errno != EINTR)) {
-      ready = true;
-      break;
-    }
-  }
-  pthread_sigmask(SIG_SETMASK, &old, nullptr);
-  return ready && !interrupted;
-}
+// ---- FdSource ---------------------------------------------------------------------------------
 
-}  // namespace
+FdSource::FdSource(int fd, bool command_file, Interrupts* interrupts)
+    : fd_(fd), command_file_(command_file), interrupts_(interrupts) {}
 
-void set_tek_dialogue(std::optional<TekOptions> tek) {
-  if (tek)
-    tek_dialogue.emplace(*tek);
-  else
-    tek_dialogue.reset();
-}
-
-TekDialogue* tek_dialogue_in_use() {
-  return tek_dialogue ? &*tek_dialogue : nullptr;
-}
-
-void write_out(std::string_view text) {
-  if (tek_dialogue) {
-    const std::string shown = tek_dialogue->text(transliterated(text));
-    std::fwrite(shown.data(), 1, shown.size(), stdout);
-    return;
-  }
-  std::fwrite(text.data(), 1, text.size(), stdout);
-}
-
-void write_raw(std::string_view bytes) {
-  std::fwrite(bytes.data(), 1, bytes.size(), stdout);
-}
-
-// ---- FdInput ---------------------------------------------------------------------------------
-
-FdInput::FdInput(int fd, bool echo, bool command_file)
-    : fd_(fd), echo_(echo), command_file_(command_file) {}
-
-FdInput::~FdInput() {
+FdSource::~FdSource() {
   if (fd_ > 2) close(fd_);
 }
 
-std::optional<std::string> FdInput::next_line() {
+Event FdSource::line(std::string_view) {
+  // Ctrl-C typed while a command computed is not acted on.
+  if (interrupts_) interrupts_->take();
   for (;;) {
-    auto end = buffer_.find('\n', start_);
+    // Searched once: a long line arriving in pieces costs its length, not its square.
+    const auto end = buffer_.find('\n', scanned_);
     if (end != std::string::npos || (eof_ && start_ < buffer_.size())) {
-      if (end == std::string::npos) end = buffer_.size();
-      std::string line = buffer_.substr(start_, end - start_);
-      start_ = std::min(end + 1, buffer_.size());
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      return line;
+      const std::size_t stop = end == std::string::npos ? buffer_.size() : end;
+      std::string text = buffer_.substr(start_, stop - start_);
+      start_ = std::min(stop + 1, buffer_.size());
+      scanned_ = start_;
+      if (!text.empty() && text.back() == '\r') text.pop_back();
+      if (is_comment_line(text)) continue;
+      return {Event::Kind::line, std::move(text)};
     }
-    if (eof_) return std::nullopt;
-    buffer_.erase(0, start_);
-    start_ = 0;
-    // Whoever drives igds through a pipe sees the prompt before igds waits.
-    std::fflush(stdout);
-    if (!wait_for_input(fd_)) {
-      interrupted = 0;
+    if (eof_) return {Event::Kind::end, {}};
+    scanned_ = buffer_.size();
+    if (start_ > 0 && start_ * 2 >= buffer_.size()) {
+      buffer_.erase(0, start_);
+      scanned_ -= start_;
+      start_ = 0;
+    }
+    if (wait_for(fd_, interrupts_, -1) == Event::Kind::interrupt) {
       buffer_.clear();
-      write_out("\n");
-      throw Abandon{};
+      start_ = scanned_ = 0;
+      return {Event::Kind::interrupt, {}};
     }
     char chunk[65536];
     ssize_t n = ::read(fd_, chunk, sizeof chunk);
     if (n > 0)
       buffer_.append(chunk, static_cast<std::size_t>(n));
-    else if (n == 0 || errno != EINTR)
+    else if (n == 0 || (errno != EINTR && errno != EAGAIN))
       eof_ = true;
   }
 }
 
-std::optional<std::string> FdInput::read(std::string_view prompt) {
-  interrupted = 0;
-  for (;;) {
-    if (!echo_) write_out(prompt);
-    auto line = next_line();
-    if (!line) return std::nullopt;
-    if (is_comment_line(*line)) continue;
-    if (echo_) {
-      // The transcript shows the line after its prompt, as on the screen.
-      std::string shown = std::string(prompt) + *line;
-      shown.erase(shown.find_last_not_of(" \t") + 1);
-      shown += '\n';
-      write_out(shown);
-    }
-    return line;
+Event FdSource::key(std::optional<std::chrono::milliseconds>) {
+  return line("");
+}
+
+// ---- KeySource --------------------------------------------------------------------------------
+
+KeySource::KeySource(int fd, Interrupts& interrupts) : fd_(fd), interrupts_(interrupts) {
+  termios t;
+  if (tcgetattr(fd_, &t) == 0) {
+    saved_ = t;
+    // Keys one at a time, not echoed (igds echoes them on its screen); Ctrl-C still a signal.
+    t.c_lflag &= static_cast<tcflag_t>(~(ICANON | ECHO | ECHONL));
+    t.c_cc[VMIN] = 1;
+    t.c_cc[VTIME] = 0;
+    tcsetattr(fd_, TCSANOW, &t);
   }
 }
 
-// ---- ReadlineInput ---------------------------------------------------------------------------
+KeySource::~KeySource() {
+  if (saved_) tcsetattr(fd_, TCSANOW, &*saved_);
+}
+
+Event KeySource::line(std::string_view) {
+  std::string text;
+  for (;;) {
+    Event e = key(std::nullopt);
+    if (e.kind != Event::Kind::key) return e;
+    if (e.text == "\r" || e.text == "\n") return {Event::Kind::line, text};
+    text += e.text;
+  }
+}
+
+Event KeySource::key(std::optional<std::chrono::milliseconds> timeout) {
+  for (;;) {
+    // One character: a UTF-8 lead byte and its continuation bytes.
+    if (!pending_.empty()) {
+      const auto lead = static_cast<unsigned char>(pending_[0]);
+      const std::size_t length = lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+      if (pending_.size() >= length) {
+        std::string c = pending_.substr(0, length);
+        pending_.erase(0, length);
+        return {Event::Kind::key, std::move(c)};
+      }
+    }
+    const int ms = timeout ? static_cast<int>(timeout->count()) : -1;
+    const Event::Kind k = wait_for(fd_, &interrupts_, ms);
+    if (k == Event::Kind::interrupt) {
+      pending_.clear();
+      return {k, {}};
+    }
+    if (k == Event::Kind::timeout) return {k, {}};
+    char chunk[256];
+    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+    if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return {Event::Kind::end, {}};
+    if (n > 0) pending_.append(chunk, static_cast<std::size_t>(n));
+  }
+}
+
+// ---- ReadlineSource ---------------------------------------------------------------------------
 
 namespace {
 
-bool line_done = false;
-std::optional<std::string> line_read;
+// The one way Readline's C callbacks reach the source in use.
+ReadlineSource* active = nullptr;
 
-// The keys read from the terminal that readline has not taken yet. igds reads the terminal
-// itself: Ctrl-C flushes the terminal's input queue, and readline's own read, waiting for keys
-// that are gone, would never see the interrupt.
-std::string keys;
-int key_fd = 0;
-
-// Reads what the terminal holds, without waiting (nothing, when Ctrl-C has just flushed it).
-void read_keys() {
-  const int flags = fcntl(key_fd, F_GETFL);
-  fcntl(key_fd, F_SETFL, flags | O_NONBLOCK);
-  char chunk[256];
-  ssize_t n = ::read(key_fd, chunk, sizeof chunk);
-  fcntl(key_fd, F_SETFL, flags);
-  if (n > 0) keys.append(chunk, static_cast<std::size_t>(n));
-  if (n == 0) keys += '\x04';  // the terminal is gone: as Ctrl-D
-}
-
-// readline's getc: the next key, waiting for one only when a multi-byte key is incomplete. EOF
-// when Ctrl-C comes meanwhile: read() sees `interrupted` when readline returns.
 int take_key(FILE*) {
-  while (keys.empty()) {
-    if (!wait_for_input(key_fd)) return EOF;
-    read_keys();
-  }
-  const auto key = static_cast<unsigned char>(keys.front());
-  keys.erase(0, 1);
-  return key;
+  return active ? active->next_key() : EOF;
 }
 
-// Ctrl-C: the line being typed is dropped, the terminal is as before, the command abandoned.
-[[noreturn]] void abandon_line() {
-  keys.clear();
-  interrupted = 0;
-  rl_free_line_state();
-  rl_callback_sigcleanup();
-  rl_cleanup_after_signal();
-  rl_callback_handler_remove();
-  write_out("\n");
-  throw Abandon{};
-}
-
-// Whether a key is waiting (for readline's escape-sequence timeout).
 int keys_waiting() {
-  if (!keys.empty()) return 1;
-  pollfd in{key_fd, POLLIN, 0};
-  return poll(&in, 1, 0) > 0 ? 1 : 0;
+  return active && active->key_waiting() ? 1 : 0;
 }
-ReadlineInput::Candidates* completion_source = nullptr;
-std::vector<std::string> completion_words;
-std::size_t completion_next = 0;
 
 void on_line(char* line) {
-  line_done = true;
-  if (line) {
-    line_read = line;
-    std::free(line);
-  } else {
-    line_read.reset();
-  }
-  // As readline's own example does: no prompt again until igds asks for one.
-  rl_callback_handler_remove();
+  if (active) active->line_done(line);
+}
+
+char* completion(const char* text, int state) {
+  return active ? active->next_completion(text, state) : nullptr;
+}
+
+char** complete(const char* text, int start, int) {
+  rl_attempted_completion_over = 1;  // never file names
+  return active ? active->complete(text, start) : nullptr;
 }
 
 bool starts_with_ignoring_case(std::string_view word, std::string_view typed) {
   return typed.size() <= word.size() && upper(word.substr(0, typed.size())) == upper(typed);
 }
 
-char* next_completion(const char* text, int state) {
-  if (state == 0) completion_next = 0;
-  while (completion_next < completion_words.size()) {
-    const std::string& word = completion_words[completion_next++];
-    if (starts_with_ignoring_case(word, text)) return strdup(word.c_str());
-  }
-  return nullptr;
-}
-
-char** complete(const char* text, int start, int) {
-  rl_attempted_completion_over = 1;  // never file names
-  completion_words.clear();
-  if (completion_source && *completion_source)
-    completion_words = (*completion_source)(split_words(std::string_view(rl_line_buffer, start)));
-  return rl_completion_matches(text, next_completion);
-}
-
 }  // namespace
 
-ReadlineInput::ReadlineInput(std::filesystem::path history, Candidates candidates)
-    : history_(std::move(history)) {
-  static Candidates source;
-  source = std::move(candidates);
-  completion_source = &source;
+ReadlineSource::ReadlineSource(std::filesystem::path history, Candidates candidates,
+                               Interrupts& interrupts, int fd)
+    : history_(std::move(history)),
+      candidates_(std::move(candidates)),
+      interrupts_(interrupts),
+      fd_(fd) {
+  active = this;
   rl_readline_name = "igds";
   // The APL characters (¯ ⍴ ⍝) are UTF-8: edit them as characters, never as Meta keys, even
   // when the environment names no UTF-8 locale.
@@ -290,51 +207,140 @@ ReadlineInput::ReadlineInput(std::filesystem::path history, Candidates candidate
   rl_variable_bind("input-meta", "on");
   rl_variable_bind("output-meta", "on");
   rl_variable_bind("convert-meta", "off");
-  rl_catch_signals = 0;  // igds handles Ctrl-C itself (catch_interrupts)
-  key_fd = fileno(rl_instream ? rl_instream : stdin);
+  rl_catch_signals = 0;  // Ctrl-C is an event of the wait (Interrupts)
   rl_getc_function = take_key;
   rl_input_available_hook = keys_waiting;
-  rl_attempted_completion_function = complete;
+  rl_attempted_completion_function = igds::complete;
   rl_basic_word_break_characters = const_cast<char*>(" \t,");
   using_history();
   stifle_history(1000);
   read_history(history_.c_str());
 }
 
-ReadlineInput::~ReadlineInput() {
+ReadlineSource::~ReadlineSource() {
   write_history(history_.c_str());
+  rl_getc_function = rl_getc;
+  rl_input_available_hook = nullptr;
+  rl_attempted_completion_function = nullptr;
+  active = nullptr;
 }
 
-std::optional<std::string> ReadlineInput::read(std::string_view prompt) {
-  interrupted = 0;
+void ReadlineSource::read_keys() {
+  // What the terminal holds, without waiting (nothing, when Ctrl-C has just flushed it).
+  const int flags = fcntl(fd_, F_GETFL);
+  fcntl(fd_, F_SETFL, flags | O_NONBLOCK);
+  char chunk[256];
+  const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+  fcntl(fd_, F_SETFL, flags);
+  if (n > 0) keys_.append(chunk, static_cast<std::size_t>(n));
+  if (n == 0) keys_ += '\x04';  // the terminal is gone: as Ctrl-D
+}
+
+int ReadlineSource::next_key() {
+  while (keys_.empty()) {
+    // Waiting for the rest of a key: Ctrl-C meanwhile ends the wait.
+    if (wait_for(fd_, &interrupts_, -1) == Event::Kind::interrupt) {
+      interrupted_ = true;
+      return EOF;
+    }
+    read_keys();
+  }
+  const auto key = static_cast<unsigned char>(keys_.front());
+  keys_.erase(0, 1);
+  return key;
+}
+
+bool ReadlineSource::key_waiting() {
+  if (!keys_.empty()) return true;
+  pollfd in{fd_, POLLIN, 0};
+  return poll(&in, 1, 0) > 0;
+}
+
+void ReadlineSource::line_done(char* line) {
+  done_ = true;
+  if (line) {
+    read_ = line;
+    std::free(line);
+  } else {
+    read_.reset();
+  }
+  // As Readline's own example does: no prompt again until igds asks for one.
+  rl_callback_handler_remove();
+}
+
+char** ReadlineSource::complete(const char* text, int start) {
+  completions_.clear();
+  if (candidates_) completions_ = candidates_(split_words(std::string_view(rl_line_buffer, start)));
+  return rl_completion_matches(text, completion);
+}
+
+char* ReadlineSource::next_completion(const char* text, int state) {
+  if (state == 0) next_completion_ = 0;
+  while (next_completion_ < completions_.size()) {
+    const std::string& word = completions_[next_completion_++];
+    if (starts_with_ignoring_case(word, text)) return strdup(word.c_str());
+  }
+  return nullptr;
+}
+
+Event ReadlineSource::abandon() {
+  // Ctrl-C: the line being typed is dropped, the terminal is as before.
+  keys_.clear();
+  interrupted_ = false;
+  rl_free_line_state();
+  rl_callback_sigcleanup();
+  rl_cleanup_after_signal();
+  rl_callback_handler_remove();
+  std::fputs("\n", stdout);
+  return {Event::Kind::interrupt, {}};
+}
+
+Event ReadlineSource::line(std::string_view prompt) {
+  interrupts_.take();  // Ctrl-C typed while a command computed is not acted on
   const std::string shown(prompt);
   for (;;) {
     std::fflush(stdout);
-    line_done = false;
-    line_read.reset();
+    done_ = false;
+    read_.reset();
     rl_callback_handler_install(shown.c_str(), on_line);
-    while (!line_done) {
-      while (keys.empty() && !interrupted) {
-        if (!wait_for_input(key_fd)) break;
+    while (!done_) {
+      while (keys_.empty() && !interrupted_) {
+        if (wait_for(fd_, &interrupts_, -1) == Event::Kind::interrupt) {
+          interrupted_ = true;
+          break;
+        }
         read_keys();  // nothing there after all when Ctrl-C flushed it: wait again
       }
-      if (interrupted) abandon_line();
+      if (interrupted_) return abandon();
       rl_callback_read_char();
     }
-    // Ctrl-C while readline waited for the rest of a key: its EOF is no end of input.
-    if (interrupted) abandon_line();
-    if (!line_read) {
-      write_out("\n");
-      return std::nullopt;
+    // Ctrl-C while Readline waited for the rest of a key: its EOF is no end of input.
+    if (interrupted_) return abandon();
+    if (!read_) {
+      std::fputs("\n", stdout);
+      return {Event::Kind::end, {}};
     }
-    if (!line_read->empty()) {
-      add_history(line_read->c_str());
+    if (!read_->empty()) {
+      add_history(read_->c_str());
       // Kept at once, so that a session that dies keeps its history too.
       write_history(history_.c_str());
     }
-    if (is_comment_line(*line_read)) continue;
-    return line_read;
+    if (is_comment_line(*read_)) continue;
+    return {Event::Kind::line, std::move(*read_)};
   }
+}
+
+Event ReadlineSource::key(std::optional<std::chrono::milliseconds> timeout) {
+  if (keys_.empty()) {
+    const int ms = timeout ? static_cast<int>(timeout->count()) : -1;
+    const Event::Kind k = wait_for(fd_, &interrupts_, ms);
+    if (k != Event::Kind::key) return {k, {}};
+    read_keys();
+  }
+  if (keys_.empty()) return {Event::Kind::timeout, {}};
+  std::string c(1, keys_.front());
+  keys_.erase(0, 1);
+  return {c == "\x04" ? Event::Kind::end : Event::Kind::key, c};
 }
 
 }  // namespace igds

@@ -1,89 +1,119 @@
-// Where the lines of the conversation come from: a command file or a pipe (read as if typed,
-// each line echoed after its prompt so that the output reads like the session), a terminal in
-// tek mode (plain lines, as on the 4013), or a terminal with GNU Readline (editing, history on
-// the disk, completion).
+// The sources of input (interp/terminal.h, EventSource): command files and pipes, the keyboard
+// through GNU Readline, and the keyboard key by key (tek mode); and Ctrl-C, read as an event
+// rather than caught by a handler.
 #pragma once
 
-#include <csignal>
+#include <termios.h>
+
 #include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
-#include "devices/terminal.h"
+#include "interp/terminal.h"
 
 namespace igds {
 
-// Set by SIGINT while igds waits for a line on a terminal.
-extern volatile std::sig_atomic_t interrupted;
-// Ctrl-C interrupts the wait for a line (no SA_RESTART) instead of killing igds.
-void catch_interrupts();
-
-// Writes text to standard output (the dialogue, prompts and image bytes share it).
-void write_out(std::string_view text);
-
-class LineInput {
+// Ctrl-C while igds waits for input: SIGINT is blocked and read from a signalfd, so that it
+// arrives as an event of the wait (never lost between a check and the wait, never interrupting
+// a command that computes). Made only when a person types: with command files alone, Ctrl-C
+// stops igds as it stops any program.
+class Interrupts {
  public:
-  virtual ~LineInput() = default;
-  // The next line that is not a comment line, `prompt` shown before it; nullopt at the end of
-  // the input. Throws Abandon on Ctrl-C.
-  virtual std::optional<std::string> read(std::string_view prompt) = 0;
-  // The same after a line of its own (READY): written first, or by Readline as the first line of
-  // its prompt, so that a key typed as soon as READY shows already finds Readline waiting.
-  virtual std::optional<std::string> read_after(std::string_view line) {
-    write_out(line);
-    write_out("\n");
-    return read("");
-  }
-  // A command file (or a pipe): --strict applies, and the end of the input is not a person
-  // leaving.
-  virtual bool is_command_file() const = 0;
-};
-
-// Lines from a file descriptor. `echo`: write the prompt and the line after reading it (command
-// files); otherwise the prompt is written first and the terminal echoes.
-class FdInput final : public LineInput {
- public:
-  FdInput(int fd, bool echo, bool command_file);
-  ~FdInput() override;
-  std::optional<std::string> read(std::string_view prompt) override;
-  bool is_command_file() const override { return command_file_; }
+  Interrupts();
+  ~Interrupts();
+  Interrupts(const Interrupts&) = delete;
+  Interrupts& operator=(const Interrupts&) = delete;
+  int fd() const { return fd_; }
+  // True when Ctrl-C came since the last call; forgets it.
+  bool take();
 
  private:
-  std::optional<std::string> next_line();
+  int fd_ = -1;
+  sigset_t old_mask_{};
+};
+
+// Waits until `fd` can be read or, when `interrupts` is given, Ctrl-C comes, at most `timeout`
+// milliseconds (-1: no limit). Returns the kind of event: key (readable), interrupt or timeout.
+Event::Kind wait_for(int fd, Interrupts* interrupts, int timeout);
+
+// Lines from a file descriptor: a command file, a pipe, or a terminal read line by line.
+class FdSource final : public EventSource {
+ public:
+  // `command_file`: a command file or a pipe (see EventSource). The descriptor is closed at the
+  // end unless it is one of the standard ones.
+  FdSource(int fd, bool command_file, Interrupts* interrupts = nullptr);
+  ~FdSource() override;
+  Event line(std::string_view prompt) override;
+  Event key(std::optional<std::chrono::milliseconds> timeout) override;
+  bool command_file() const override { return command_file_; }
+
+ private:
   int fd_;
-  bool echo_, command_file_;
+  bool command_file_;
+  Interrupts* interrupts_;
   std::string buffer_;
-  std::size_t start_ = 0;
+  std::size_t start_ = 0;    // the first byte of the next line
+  std::size_t scanned_ = 0;  // bytes already searched for its end
   bool eof_ = false;
 };
 
-// GNU Readline on the terminal. `history` is a file on the disk; `candidates` gives the words
-// that may complete the word being typed, from the words before it on the line.
-class ReadlineInput final : public LineInput {
+// The keyboard key by key, with the terminal's own echo off: tek mode, where igds echoes what is
+// typed on the screen it manages. Restores the terminal's settings when it goes.
+class KeySource final : public EventSource {
  public:
-  using Candidates = std::function<std::vector<std::string>(const std::vector<std::string>&)>;
-  ReadlineInput(std::filesystem::path history, Candidates candidates);
-  ~ReadlineInput() override;
-  std::optional<std::string> read(std::string_view prompt) override;
-  std::optional<std::string> read_after(std::string_view line) override {
-    return read(std::string(line) + "\n");
-  }
-  bool is_command_file() const override { return false; }
+  KeySource(int fd, Interrupts& interrupts);
+  ~KeySource() override;
+  Event line(std::string_view prompt) override;
+  Event key(std::optional<std::chrono::milliseconds> timeout) override;
+  bool gives_keys() const override { return true; }
+  bool command_file() const override { return false; }
 
  private:
-  std::filesystem::path history_;
+  int fd_;
+  Interrupts& interrupts_;
+  std::optional<termios> saved_;
+  std::string pending_;  // bytes read but not yet given
 };
 
-// tek mode (with the Tek options) or not: in tek mode the dialogue is on the Tek screen, written
-// in 7-bit ASCII (APL characters as ASCII: ¯ as -, ⍴ as RHO, ⍝ as NB., any other as ?) with
-// its lines kept on the screen (devices/terminal.h, TekDialogue).
-void set_tek_dialogue(std::optional<TekOptions> tek);
-// The dialogue on the Tek screen in tek mode, else nullptr.
-TekDialogue* tek_dialogue_in_use();
-// Bytes for the terminal as they are (graph data, escapes), not dialogue text.
-void write_raw(std::string_view bytes);
+// GNU Readline on the terminal: editing, a history kept on the disk, and completion of the word
+// being typed from the words before it (`candidates`). Readline's callbacks reach this object
+// through one pointer, set while it exists.
+class ReadlineSource final : public EventSource {
+ public:
+  using Candidates = std::function<std::vector<std::string>(const std::vector<std::string>&)>;
+  ReadlineSource(std::filesystem::path history, Candidates candidates, Interrupts& interrupts,
+                 int fd = 0);
+  ~ReadlineSource() override;
+  ReadlineSource(const ReadlineSource&) = delete;
+  ReadlineSource& operator=(const ReadlineSource&) = delete;
+  Event line(std::string_view prompt) override;
+  Event key(std::optional<std::chrono::milliseconds> timeout) override;
+  bool echoes() const override { return true; }
+  bool command_file() const override { return false; }
+
+  // For Readline's callbacks.
+  int next_key();
+  bool key_waiting();
+  void line_done(char* line);
+  char** complete(const char* text, int start);
+  char* next_completion(const char* text, int state);
+
+ private:
+  void read_keys();
+  Event abandon();
+
+  std::filesystem::path history_;
+  Candidates candidates_;
+  Interrupts& interrupts_;
+  int fd_;
+  std::string keys_;  // keys read from the terminal that Readline has not taken yet
+  bool interrupted_ = false;
+  bool done_ = false;
+  std::optional<std::string> read_;
+  std::vector<std::string> completions_;
+  std::size_t next_completion_ = 0;
+};
 
 }  // namespace igds

@@ -9,7 +9,6 @@
 #include "commands/entries.h"
 #include "commands/picture.h"
 #include "commands/reports.h"
-#include "devices/terminal.h"
 #include "interp/apl_env.h"
 #include "interp/words.h"
 #include "workspace/apl.h"
@@ -19,11 +18,6 @@
 namespace igds {
 
 namespace {
-
-constexpr std::array<std::string_view, 1> help_words{"HELP"};
-constexpr std::array<std::string_view, 2> help_lengths{"SHORT", "LONG"};  // STATUS[1] 0 and 1
-constexpr std::array<std::string_view, 2> yes_no{"YES", "NO"};
-constexpr std::array<std::string_view, 3> planes{"XY", "YZ", "XZ"};
 
 constexpr std::string_view apl_short_help =
     "Type a variable's name, ⍴NAME for its shape, )VARS, START to go back to IGDS or )OFF to "
@@ -43,64 +37,31 @@ Example:
       ⍴INTPN
 9 9 3)";
 
-std::span<const std::string_view> command_names() {
-  static const std::vector<std::string_view> names = [] {
-    std::vector<std::string_view> all;
-    for (const Command* command : command_table()) all.push_back(command->name);
-    return all;
-  }();
-  return names;
-}
-
 }  // namespace
 
-std::string describe_image(const Description& d) {
-  const auto& p = d.parameters;
-  auto number = [](double v) { return format_apl_number(v); };
-  std::string projection;
-  switch (d.projection) {
-    case Projection::conic:
-      projection =
-          fmt::format("CONIC, VIEW POINT {} {} {}", number(p[0]), number(p[1]), number(p[2]));
-      break;
-    case Projection::assonometric:
-      projection = fmt::format("ASSONOMETRIC {} {} {}", number(p[0]), number(p[1]), number(p[2]));
-      break;
-    case Projection::isometric:
-      projection = fmt::format("ISOMETRIC, AXIS {} ANGLE {}", number(p[0]), number(p[1]));
-      break;
-    case Projection::orthogonal: {
-      static constexpr std::string_view names[] = {"XY", "XZ", "YZ"};  // DESIM[3] 1 2 3
-      int plane = static_cast<int>(p[0]);
-      projection =
-          fmt::format("ORTHOGONAL {}", plane >= 1 && plane <= 3 ? names[plane - 1] : number(p[0]));
-      break;
-    }
-  }
-  return fmt::format("IMAGE: {}, {}", d.what == 0 ? "INPUT" : "SURFACE", projection);
-}
+Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace ws,
+                         Terminal& terminal)
+    : options_(std::move(options)),
+      disk_(std::move(disk)),
+      session_(session),
+      ws_(std::move(ws)),
+      terminal_(terminal) {}
 
-Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace ws)
-    : options_(std::move(options)), disk_(std::move(disk)), session_(session), ws_(std::move(ws)) {}
-
-Interpreter::Outcome Interpreter::converse(LineInput& input) {
-  input_ = &input;
+Interpreter::Outcome Interpreter::converse() {
   input_ended_ = false;
   const int errors_before = errors_;
   auto strict_stop = [&] {
-    return options_.strict && input.is_command_file() && errors_ > errors_before;
+    return options_.strict && terminal_.command_file() && errors_ > errors_before;
   };
   for (;;) {
-    std::optional<std::string> line;
-    try {
-      line = ready_due_ ? input.read_after("READY") : input.read("");
-      ready_due_ = false;
-    } catch (const Abandon&) {
+    const Event e = terminal_.read_line("", ready_due_ ? "READY" : "");
+    ready_due_ = false;
+    if (e.kind == Event::Kind::interrupt) {
       ready_due_ = true;
       continue;
     }
-    if (!line) return Outcome::input_ended;
-    auto words = split_words(*line);
+    if (e.kind != Event::Kind::line) return Outcome::input_ended;
+    auto words = split_words(e.text);
     if (words.empty()) continue;
     execute(words);
     save();
@@ -120,6 +81,7 @@ Interpreter::Outcome Interpreter::converse(LineInput& input) {
 
 void Interpreter::execute(const std::vector<std::string>& words) {
   current_ = nullptr;
+  asking_ = nullptr;
   pending_.clear();
   running_ = true;
   struct Finish {
@@ -130,7 +92,7 @@ void Interpreter::execute(const std::vector<std::string>& words) {
     run_command(words);
   } catch (const StrictStop&) {
     // The report is printed; converse() stops.
-  } catch (const Report& r) {
+  } catch (const Error& r) {
     running_ = false;
     report(r.what());
   } catch (const DataError& e) {
@@ -150,57 +112,58 @@ void Interpreter::execute(const std::vector<std::string>& words) {
     report(upper(fmt::format("{}: THE COMMAND IS IGNORED", e.what())));
   }
   current_ = nullptr;
+  asking_ = nullptr;
   pending_.clear();
 }
 
 void Interpreter::run_command(const std::vector<std::string>& words) {
-  const int index = lookup_prefix(command_names(), words[0]);
-  if (index < 0) throw Report(reports::incorrect_command);
-  const Command& command = *command_table()[static_cast<std::size_t>(index)];
-  current_ = &command;
+  const Command* command = find_command(words[0]);
+  if (!command) throw Report(reports::incorrect_command);
+  current_ = command;
   pending_.assign(words.begin() + 1, words.end());
-  int option = -1;
-  if (!command.options.empty()) {
+  on_line_ = true;
+  const Choice* option = nullptr;
+  if (!command->options.empty()) {
     if (!pending_.empty()) {
-      option = lookup_prefix(command.options, pending_.front());
+      option = choose(command->options, pending_.front());
       pending_.erase(pending_.begin());
-      if (option < 0) throw Report(reports::incorrect_choice);
-    } else if (!command.option_prompt.text.empty()) {
+      if (!option) throw Report(command->bad_option);
+    } else if (!command->option_prompt.text.empty()) {
       std::vector<std::string> reply;
-      while (reply.empty()) reply = ask(command.option_prompt);
-      option = lookup_prefix(command.options, reply.front());
-      if (option < 0) throw Report(reports::incorrect_choice);
+      while (reply.empty()) reply = ask(command->option_prompt);
+      option = choose(command->options, reply.front());
+      if (!option) throw Report(command->bad_option);
       reply.erase(reply.begin());
       unread(std::move(reply));
     }
   }
-  command.run(*this, option);
+  command->run(*this, option);
 }
 
 std::vector<std::string> Interpreter::ask(const Prompt& prompt) {
   if (!pending_.empty()) return std::exchange(pending_, {});
   const std::string shown = prompt.text.empty() ? "" : std::string(prompt.text) + " ";
+  asking_ = &prompt;
   for (;;) {
-    auto line = input_->read(shown);
-    if (!line) throw EndOfInput{};
-    auto words = split_words(*line);
+    const Event e = terminal_.read_line(shown);
+    if (e.kind == Event::Kind::interrupt) throw Abandon{};
+    if (e.kind != Event::Kind::line) throw EndOfInput{};
+    auto words = split_words(e.text);
     if (answer_help(words, prompt)) continue;
+    on_line_ = false;
     return words;
   }
 }
 
 bool Interpreter::answer_help(const std::vector<std::string>& words, const Prompt& prompt) {
-  if (words.empty() || words.size() > 2 || lookup_prefix(help_words, words[0]) != 0) return false;
-  int length = ws_.status[0] == 1 ? 1 : 0;
-  if (words.size() == 2) {
-    length = lookup_prefix(help_lengths, words[1]);
-    if (length < 0) return false;
-    ws_.status[0] = length;  // HELP SHORT and HELP LONG change the setting (STATUS[1])
-  }
-  if (length == 0)
-    say_lines(prompt.short_help);
+  const HelpRequest help = help_request(words);
+  if (!help.asked) return false;
+  // HELP SHORT and HELP LONG change the setting (STATUS[1]); HELP alone keeps it.
+  if (help.length >= 0) ws_.status[0] = help.length;
+  if (ws_.status[0] == 0)
+    terminal_.document(prompt.short_help);
   else
-    say_lines(current_ ? current_->long_help : prompt.short_help);
+    terminal_.document(current_ ? current_->long_help : prompt.short_help);
   return true;
 }
 
@@ -210,46 +173,29 @@ void Interpreter::unread(std::vector<std::string> words) {
 }
 
 void Interpreter::say(std::string_view line) {
-  write_out(line);
-  write_out("\n");
+  terminal_.say(line);
 }
 
-void Interpreter::say_lines(std::string_view text) {
-  while (!text.empty()) {
-    auto end = text.find('\n');
-    say(text.substr(0, end));
-    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
-  }
+void Interpreter::document(std::string_view text) {
+  terminal_.document(text);
 }
 
 void Interpreter::report(std::string_view text) {
   say(text);
   ++errors_;
-  if (running_ && options_.strict && input_ && input_->is_command_file()) throw StrictStop{};
+  if (running_ && options_.strict && terminal_.command_file()) throw StrictStop{};
 }
 
 void Interpreter::show(const ImageRef& image) {
-  if (options_.term != TermMode::none) {
-    const Picture picture = picture_of(image);
-    write_raw(display_bytes(picture, options_.term, options_.tek));
-    if (TekDialogue* dialogue = tek_dialogue_in_use()) dialogue->displayed(picture);
-    return;
-  }
-  if (!told_how_to_see_) {
-    told_how_to_see_ = true;
-    say("IMAGES ARE NOT DRAWN ON THIS TERMINAL. TO SEE THEM RUN IGDS IN AN XTERM");
-    say("(xterm -t -e igds), OR WRITE THEM TO FILES WITH EXPORT SVG, TEK OR HPGL.");
-  }
-  say(describe_image(image->desim));
+  terminal_.show(std::make_shared<const Picture>(picture_of(image)), describe_line(image->desim));
 }
 
 void Interpreter::erase() {
-  write_raw(erase_bytes(options_.term, options_.tek));
-  if (TekDialogue* dialogue = tek_dialogue_in_use()) write_raw(dialogue->home());
+  terminal_.erase();
 }
 
 void Interpreter::send_to_terminal(std::string_view bytes) {
-  write_raw(bytes);
+  terminal_.raw(bytes);
 }
 
 void Interpreter::end_session(bool apl) {
@@ -271,23 +217,15 @@ Interpreter::Outcome Interpreter::apl_environment() {
     ~Leave() { flag = false; }
   } leave{in_apl_};
   for (;;) {
-    std::optional<std::string> line;
-    try {
-      line = input_->read(apl_prompt);
-    } catch (const Abandon&) {
-      continue;
-    }
-    if (!line) return Outcome::ended;  // the end of the input is )OFF
-    auto words = split_words(*line);
+    const Event e = terminal_.read_line(apl_prompt);
+    if (e.kind == Event::Kind::interrupt) continue;
+    if (e.kind != Event::Kind::line) return Outcome::ended;  // the end of the input is )OFF
+    auto words = split_words(e.text);
     if (words.empty()) continue;
-    if (lookup_prefix(help_words, words[0]) == 0 && words.size() <= 2) {
-      int length = ws_.status[0] == 1 ? 1 : 0;
-      if (words.size() == 2) length = lookup_prefix(help_lengths, words[1]);
-      if (length >= 0) {
-        ws_.status[0] = length;
-        say_lines(length == 1 ? apl_long_help : apl_short_help);
-        continue;
-      }
+    if (const HelpRequest help = help_request(words); help.asked) {
+      if (help.length >= 0) ws_.status[0] = help.length;
+      terminal_.document(ws_.status[0] == 1 ? apl_long_help : apl_short_help);
+      continue;
     }
     std::string joined;
     for (const auto& w : words) joined += (joined.empty() ? "" : " ") + w;
@@ -300,7 +238,7 @@ Interpreter::Outcome Interpreter::apl_environment() {
       else
         say(out);
     }
-    if (error && options_.strict && input_->is_command_file()) return Outcome::strict_stop;
+    if (error && options_.strict && terminal_.command_file()) return Outcome::strict_stop;
     if (reply.next == AplNext::start) return Outcome::input_ended;
     if (reply.next == AplNext::off) return Outcome::ended;
   }
@@ -308,42 +246,36 @@ Interpreter::Outcome Interpreter::apl_environment() {
 
 std::vector<std::string> Interpreter::completions(const std::vector<std::string>& before) const {
   std::vector<std::string> out;
-  auto add = [&out](auto&& words) {
-    for (std::string_view w : words) out.emplace_back(w);
+  auto add = [&out](std::span<const Choice> choices) {
+    for (const Choice& c : choices) out.emplace_back(c.word);
   };
   if (in_apl_) {
-    out = {")VARS", ")OFF", "START", "HELP"};
-    add(defined_variables(ws_));
+    out = {")VARS", ")OFF", "START", std::string(help_word())};
+    for (auto& name : defined_variables(ws_)) out.push_back(name);
     return out;
   }
-  if (current_ != nullptr && before.size() == 1 && lookup_prefix(help_words, before[0]) == 0) {
-    add(help_lengths);
-    return out;
-  }
-  if (current_ == nullptr) {
-    if (before.empty()) {
-      add(command_names());
+  if (current_ != nullptr) {
+    // At a question: its answers, and HELP with its lengths.
+    if (!before.empty()) {
+      if (help_request(before).asked) add(help_lengths());
       return out;
     }
-    const int index = lookup_prefix(command_names(), before[0]);
-    if (index < 0) return out;
-    if (before.size() == 1) {
-      add(command_table()[static_cast<std::size_t>(index)]->options);
-    } else {
-      add(projection_words());
-      add(planes);
-    }
+    if (asking_) add(asking_->answers);
+    out.emplace_back(help_word());
     return out;
   }
   if (before.empty()) {
-    add(current_->options);
-    add(projection_words());
-    add(yes_no);
-    add(help_words);
-  } else {
-    add(projection_words());
-    add(planes);
+    for (const Command* c : command_table()) out.emplace_back(c->name);
+    return out;
   }
+  const Command* command = find_command(before[0]);
+  if (!command) return out;
+  if (before.size() == 1) {
+    add(command->options);
+    return out;
+  }
+  // After the option: the words that answer the command's questions.
+  for (const Prompt* q : command->questions) add(q->answers);
   return out;
 }
 

@@ -12,7 +12,9 @@
 #include <utility>
 #include <vector>
 
-#include "devices/terminal.h"
+#include <memory>
+#include <optional>
+
 #include "interp/command_line.h"
 #include "interp/input.h"
 #include "interp/interpreter.h"
@@ -28,6 +30,23 @@ void close_all(const std::vector<int>& fds) {
     if (fd >= 0) close(fd);
   }
 }
+
+// The standard output, written whole (a short write is retried; an error is remembered so that
+// igds can end with it, instead of losing the dialogue silently).
+class StdOutput final : public Output {
+ public:
+  void write(std::string_view bytes) override {
+    if (!bytes.empty() && std::fwrite(bytes.data(), 1, bytes.size(), stdout) != bytes.size())
+      failed_ = true;
+  }
+  void flush() override {
+    if (std::fflush(stdout) != 0) failed_ = true;
+  }
+  bool failed() const { return failed_ || std::ferror(stdout); }
+
+ private:
+  bool failed_ = false;
+};
 
 }  // namespace
 
@@ -61,8 +80,6 @@ int igds_main(int argc, char** argv) {
                            : choose_term(isatty(STDOUT_FILENO) == 1, std::getenv("TERM"),
                                          std::getenv("XTERM_VERSION"));
 
-  set_tek_dialogue(options.term == TermMode::tek ? std::optional(options.tek) : std::nullopt);
-
   // Every command file is opened before anything starts: a missing one stops igds at once.
   std::vector<int> files;
   for (const auto& name : line.files) {
@@ -81,41 +98,53 @@ int igds_main(int argc, char** argv) {
     files.push_back(fd);
   }
 
+  StdOutput out;
   try {
     Disk disk(options.disk);
     Session session(disk);
     Workspace ws = session.load();
-    Interpreter interpreter(options, disk, session, std::move(ws));
-    if (TekDialogue* dialogue = tek_dialogue_in_use()) write_raw(dialogue->home());
+    Terminal terminal(options.term, options.tek, out);
+    Interpreter interpreter(options, disk, session, std::move(ws), terminal);
+    terminal.begin();
     for (const auto& notice : session.notices()) interpreter.say(notice);
 
     auto outcome = Interpreter::Outcome::input_ended;
     for (std::size_t i = 0; i < files.size(); ++i) {
-      FdInput input(std::exchange(files[i], -1), true, true);
-      outcome = interpreter.converse(input);
+      FdSource input(std::exchange(files[i], -1), true);
+      terminal.use_input(&input);
+      outcome = interpreter.converse();
+      terminal.use_input(nullptr);
       if (outcome != Interpreter::Outcome::input_ended) break;
     }
     close_all(files);
     if (outcome == Interpreter::Outcome::input_ended && (files.empty() || line.then_interactive)) {
-      const bool terminal = isatty(STDIN_FILENO) == 1;
-      if (terminal) catch_interrupts();
-      if (terminal && options.term != TermMode::tek) {
-        ReadlineInput input(disk.path("HISTORY", "IGDSHIST"),
-                            [&interpreter](const std::vector<std::string>& before) {
-                              return interpreter.completions(before);
-                            });
-        outcome = interpreter.converse(input);
+      const bool keyboard = isatty(STDIN_FILENO) == 1;
+      std::optional<Interrupts> interrupts;
+      if (keyboard) interrupts.emplace();
+      std::unique_ptr<EventSource> input;
+      if (keyboard && options.term == TermMode::tek) {
+        // The 4013 had no line editing; igds reads keys and echoes them on its screen.
+        input = std::make_unique<KeySource>(STDIN_FILENO, *interrupts);
+      } else if (keyboard) {
+        input = std::make_unique<ReadlineSource>(
+            disk.path("HISTORY", "IGDSHIST"),
+            [&interpreter](const std::vector<std::string>& before) {
+              return interpreter.completions(before);
+            },
+            *interrupts);
       } else {
-        // A pipe is a command file; a terminal in tek mode gives plain lines, as the 4013 did.
-        FdInput input(STDIN_FILENO, !terminal, !terminal);
-        outcome = interpreter.converse(input);
+        // A pipe is a command file.
+        input = std::make_unique<FdSource>(STDIN_FILENO, true);
       }
+      terminal.use_input(input.get());
+      outcome = interpreter.converse();
+      terminal.use_input(nullptr);
     }
     interpreter.save();
-    std::fflush(stdout);
+    out.flush();
     return outcome == Interpreter::Outcome::strict_stop ? 3 : 0;
-  } catch (const Report& r) {
-    std::fflush(stdout);
+  } catch (const Error& r) {
+    out.flush();
     fmt::print(stderr, "{}\n", r.what());
     return 1;
   }

@@ -5,7 +5,7 @@
 
 #include "commands/command.h"
 #include "commands/view.h"
-#include "tests/commands/fake_context.h"
+#include "tests/support/fake_context.h"
 #include "tests/support/process.h"
 #include "workspace/error.h"
 
@@ -22,8 +22,6 @@ namespace igds::test {
 
 namespace {
 
-enum { grid, tangents, points };               // CHANGE
-enum { first, second, file, input, surface };  // DISPLAY and STORE
 const std::vector<std::string> saddle{"3 3",
                                       "1  0 0 0   0 10 2   0 20 0",
                                       "4  10 0 2  10 10 0  10 20 2",
@@ -34,11 +32,11 @@ const std::vector<std::string> saddle{"3 3",
                                       "",
                                       "2 2"};
 
-std::string report_of(FakeContext& ctx, const Command& c, int option,
+std::string report_of(FakeContext& ctx, const Command& c, std::string_view option,
                       std::vector<std::string> words = {}) {
   try {
     ctx.run(c, option, std::move(words));
-  } catch (const Report& r) {
+  } catch (const Error& r) {
     return r.what();
   }
   return "";
@@ -46,7 +44,7 @@ std::string report_of(FakeContext& ctx, const Command& c, int option,
 
 void build_saddle(FakeContext& ctx) {
   ctx.type(saddle);
-  ctx.run(build_command, -1);
+  ctx.run(build_command, "");
   REQUIRE(ctx.ws.has_surface());
 }
 
@@ -84,20 +82,21 @@ TEST_CASE("BUILD asks its four questions and makes the surface") {
 TEST_CASE("BUILD: words after BUILD are refused") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  CHECK(report_of(ctx, build_command, -1, {"3", "3"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(report_of(ctx, build_command, "", {"3", "3"}) == "INCORRECT COMMAND OR PARAMETERS");
   CHECK(ctx.prompts.empty());
 }
 
 TEST_CASE("BUILD: incorrect entries are reported, ignored, and the next one awaited") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  ctx.type({"1 3", "3 3 3", "2 x", "2 2", "5 1 1 1", "9 1 2", "4 1 2 3", "", "3 0 0", "2 1 0 0 0",
+  ctx.type({"0 3", "3 3 3", "2 x", "2 2", "5 1 1 1", "9 1 2", "4 1 2 3", "", "3 0 0", "2 1 0 0 0",
             "", "-1 0", "1 1"});
-  ctx.run(build_command, -1);
+  ctx.run(build_command, "");
   CHECK(ctx.reports == 7);
-  CHECK(ctx.said[0] == "INCORRECT ENTRY");
-  CHECK(ctx.said[2] == "INCORRECT ENTRY");
+  CHECK(ctx.said[0] == "INCORRECT ENTRY: GIVE TWO WHOLE NUMBERS, NOCUR AND NOSTR");
+  CHECK(ctx.said[2] == "INCORRECT ENTRY: GIVE TWO WHOLE NUMBERS, NOCUR AND NOSTR");
   CHECK(ctx.said[3] == "INCORRECT ENTRY: THE POINT NUMBER MUST BE 1 TO 4");
+  CHECK(ctx.said[4] == "INCORRECT ENTRY: A POINT ENTRY IS K X Y Z [X Y Z ...]");
   CHECK(ctx.ws.nocur == 2);
   CHECK(ctx.ws.inppn.ravel == std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3});
   CHECK(ctx.ws.inptg.ravel[6 * 4 + 0] == 1);  // point 2, f = 0: along stringer 2 at curve 1
@@ -110,17 +109,17 @@ TEST_CASE("BUILD: Ctrl-C or the end of the input leaves the workspace as it was"
   build_saddle(ctx);
   const Workspace before = ctx.ws;
   ctx.type({"2 2", "1 5 5 5", "^C"});
-  CHECK_THROWS_AS(ctx.run(build_command, -1), Abandon);
+  CHECK_THROWS_AS(ctx.run(build_command, ""), Abandon);
   CHECK(ctx.ws == before);
   ctx.type({"2 2", "1 5 5 5", "", ""});
-  CHECK_THROWS_AS(ctx.run(build_command, -1), EndOfInput);
+  CHECK_THROWS_AS(ctx.run(build_command, ""), EndOfInput);
   CHECK(ctx.ws == before);
 }
 
 TEST_CASE("CHANGE needs a surface") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  for (int option : {grid, tangents, points})
+  for (std::string_view option : {"GRID", "TANGENTS", "POINTS"})
     CHECK(report_of(ctx, change_command, option) == "INPUT NOT FOUND");
 }
 
@@ -130,7 +129,7 @@ TEST_CASE("CHANGE GRID refits the same patches") {
   build_saddle(ctx);
   const Array patches = ctx.ws.patches;
   ctx.type({"x", "4 0"});
-  ctx.run(change_command, grid);
+  ctx.run(change_command, "GRID");
   CHECK(ctx.reports == 1);
   CHECK(ctx.ws.intcu == 4);
   CHECK(ctx.ws.intst == 0);
@@ -144,19 +143,20 @@ TEST_CASE("CHANGE TANGENTS, then the grid as two numbers or Y/N") {
   build_saddle(ctx);
   const Array patches = ctx.ws.patches;
   ctx.type({"3 0 5 0 1", "", "maybe", "1 1"});
-  ctx.run(change_command, tangents);
+  ctx.run(change_command, "TANGENTS");
   CHECK(ctx.reports == 1);
-  CHECK(ctx.prompts.back() == "CHANGE GRID TOO?");
+  CHECK(ctx.prompts.back() == "CHANGE GRID TOO? (Y OR N)");
+  CHECK(ctx.said.back() == "INCORRECT ENTRY: GIVE TWO WHOLE NUMBERS >= 0, INTCU AND INTST");
   CHECK(ctx.ws.inptg.ravel[1 * 4 + 1] == 5);  // point 3 along curve 1
   CHECK(ctx.ws.intcu == 1);
   CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{5, 5, 3});
   CHECK(ctx.ws.patches != patches);
 
   ctx.type({"", "N"});
-  ctx.run(change_command, tangents);
+  ctx.run(change_command, "TANGENTS");
   CHECK(ctx.ws.intcu == 1);
   ctx.type({"", "Y", "3 3"});
-  ctx.run(change_command, tangents);
+  ctx.run(change_command, "TANGENTS");
   CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{9, 9, 3});
 }
 
@@ -165,7 +165,7 @@ TEST_CASE("CHANGE POINTS offers CHANGE TANGENTS and CHANGE GRID") {
   FakeContext ctx(dir.path());
   build_saddle(ctx);
   ctx.type({"5 10 10 7", "", "9 0 1 0 1", "", "N"});
-  ctx.run(change_command, points);
+  ctx.run(change_command, "POINTS");
   CHECK(ctx.ws.inppn.ravel[4 * 3 + 2] == 7);
   CHECK(ctx.ws.inptg.ravel[5 * 4 + 1] == 1);  // the tangent entry typed at CHANGE TANGENTS TOO?
   CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{7, 7, 3});
@@ -173,7 +173,7 @@ TEST_CASE("CHANGE POINTS offers CHANGE TANGENTS and CHANGE GRID") {
   CHECK(ctx.ws.intpn.ravel[(3 * 7 + 3) * 3 + 2] == 7);
 
   ctx.type({"", "Y", "1 0 0 0 1", "", "Y", "0 0"});
-  ctx.run(change_command, points);
+  ctx.run(change_command, "POINTS");
   CHECK(ctx.ws.inptg.ravel[0] == 0);
   CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{3, 3, 3});
   CHECK(ctx.reports == 0);
@@ -182,14 +182,17 @@ TEST_CASE("CHANGE POINTS offers CHANGE TANGENTS and CHANGE GRID") {
 TEST_CASE("DISPLAY reports what is missing") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  CHECK(report_of(ctx, display_command, input) == "INPUT NOT FOUND");
-  CHECK(report_of(ctx, display_command, surface) == "SURFACE NOT FOUND");
-  CHECK(report_of(ctx, display_command, first) == "IMAGE NOT FOUND");
-  CHECK(report_of(ctx, display_command, second) == "IMAGE NOT FOUND");
-  CHECK(report_of(ctx, display_command, file, {"a/b"}) == "INCORRECT PARAMETER");
-  CHECK(report_of(ctx, display_command, file, {"TOOLONGNAME"}) == "INCORRECT PARAMETER");
-  CHECK(report_of(ctx, display_command, file, {"NOSUCH"}) == "FILE NOT FOUND");
-  CHECK(report_of(ctx, display_command, first, {"X"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(report_of(ctx, display_command, "INPUT") == "INPUT NOT FOUND");
+  CHECK(report_of(ctx, display_command, "SURFACE") == "SURFACE NOT FOUND");
+  CHECK(report_of(ctx, display_command, "FIRST") == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, display_command, "SECOND") == "IMAGE NOT FOUND");
+  const std::string bad_name =
+      "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _";
+  CHECK(report_of(ctx, display_command, "FILE", {"a/b"}) == bad_name);
+  CHECK(report_of(ctx, display_command, "FILE", {"TOOLONGNAME"}) == bad_name);
+  CHECK(report_of(ctx, display_command, "FILE", {"NOSUCH"}) == "FILE NOT FOUND");
+  // Extra words after DISPLAY FIRST: the manual's INCORRECT PARAMETER (4.4).
+  CHECK(report_of(ctx, display_command, "FIRST", {"X"}) == "INCORRECT PARAMETER");
   CHECK(ctx.shown.empty());
 }
 
@@ -197,30 +200,43 @@ TEST_CASE("DISPLAY projection parameters are checked") {
   TempDir dir;
   FakeContext ctx(dir.path());
   build_saddle(ctx);
-  for (auto words :
-       std::vector<std::vector<std::string>>{{"PERSPECTIVE"},
-                                             {"O", "XX"},
-                                             {"O", "X"},
-                                             {"I", "4", "30"},
-                                             {"I", "1", "95"},
-                                             {"I", "1.5", "30"},
-                                             {"A", "90", "130", "140"},
-                                             {"A", "120", "120"},
-                                             {"C", "10", "10", "1"},  // inside the bounding box
-                                             {"C", "1", "2"},
-                                             {"C", "x", "1", "2"}}) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"PERSPECTIVE"}, "THE PROJECTION IS CONIC, ISOMETRIC, ASSONOMETRIC OR ORTHOGONAL"},
+      {{"O", "XX"}, "THE PLANE IS XY, YZ OR XZ"},
+      {{"O", "X"}, "THE PLANE IS XY, YZ OR XZ"},
+      {{"I", "4", "30"}, "THE AXIS IS 1, 2 OR 3 (X, Y, Z)"},
+      {{"I", "1", "95"}, "THE ANGLE MUST BE 0 TO 90"},
+      {{"I", "1.5", "30"}, "THE AXIS IS 1, 2 OR 3 (X, Y, Z)"},
+      {{"A", "90", "130", "140"}, "EACH ANGLE MUST BE BETWEEN 90 AND 180"},
+      {{"A", "110", "130", "121"}, "THE THREE ANGLES MUST ADD UP TO 360"},
+      {{"A", "120", "120"}, "GIVE THREE ANGLES"},
+      {{"C", "10", "10", "1"}, "THE VIEW POINT IS INSIDE THE SURFACE'S BOX"},
+      {{"C", "1", "2"}, "GIVE THE VIEW POINT AS X Y Z"},
+      {{"C", "x", "1", "2"}, "x IS NOT A NUMBER"},
+      {{"C", "15", "10", "2.5"}, "A POINT IS BEHIND THE EYE"}};
+  for (const auto& [words, reason] : cases) {
     CAPTURE(words.front());
-    CHECK(report_of(ctx, display_command, surface, words) == "INCORRECT PARAMETER");
+    CHECK(report_of(ctx, display_command, "SURFACE", words) == "INCORRECT PARAMETER: " + reason);
   }
   CHECK(ctx.shown.empty());
   CHECK_FALSE(ctx.ws.image);
+  // Typed at the question, a bad answer gets its report and the question again.
+  ctx.prompts.clear();
+  ctx.said.clear();
+  ctx.type({"PERSPECTIVE", "A", "110 130 121", "110 130 120"});
+  ctx.run(display_command, "SURFACE");
+  CHECK(ctx.prompts ==
+        std::vector<std::string>{"PROJECTION?", "PROJECTION?", "THREE ANGLES?", "THREE ANGLES?"});
+  CHECK(ctx.said.size() == 2);
+  REQUIRE(ctx.ws.image);
+  CHECK(ctx.ws.image->desim.parameters == std::array<double, 3>{110, 130, 120});
 }
 
 TEST_CASE("DISPLAY INPUT projects the points and the tangents") {
   TempDir dir;
   FakeContext ctx(dir.path());
   build_saddle(ctx);
-  ctx.run(display_command, input, {"ORTHOGONAL", "xy"});
+  ctx.run(display_command, "INPUT", {"ORTHOGONAL", "xy"});
   REQUIRE(ctx.ws.image);
   const Image& image = *ctx.ws.image;
   CHECK(image.desim == Description{0, Projection::orthogonal, {1, 0, 0}});
@@ -228,10 +244,11 @@ TEST_CASE("DISPLAY INPUT projects the points and the tangents") {
   CHECK(image.points.ravel[4 * 2 + 0] == 10);  // point 5: x 10 y 10
   CHECK(image.points.ravel[5 * 2 + 1] == 20);  // point 6: y 20
   // Two tangents at point 1: 0 1 0 along the curve, 1 0 0 along the stringer.
-  REQUIRE(image.arrows.shape == std::vector<std::size_t>{2, 4});
-  for (std::size_t i = 0; i < 4; ++i) {
-    CHECK(image.arrows.ravel[i] == doctest::Approx(std::vector<double>{0, 0, 0, 1}[i]));
-    CHECK(image.arrows.ravel[4 + i] == doctest::Approx(std::vector<double>{0, 0, 1, 0}[i]));
+  REQUIRE(image.arrows.shape == std::vector<std::size_t>{2, 6});
+  // Each row: base x y, direction dx dy, the point, 1 along the curve or 0 the stringer.
+  for (std::size_t i = 0; i < 6; ++i) {
+    CHECK(image.arrows.ravel[i] == doctest::Approx(std::vector<double>{0, 0, 0, 1, 1, 1}[i]));
+    CHECK(image.arrows.ravel[6 + i] == doctest::Approx(std::vector<double>{0, 0, 1, 0, 1, 0}[i]));
   }
   REQUIRE(ctx.shown.size() == 1);
   CHECK(ctx.shown[0] == image);
@@ -242,18 +259,18 @@ TEST_CASE("DISPLAY SURFACE asks the projection and its parameters") {
   FakeContext ctx(dir.path());
   build_saddle(ctx);
   ctx.type({"", "ass", "110 130 120"});
-  ctx.run(display_command, surface);
+  ctx.run(display_command, "SURFACE");
   CHECK(ctx.prompts.back() == "THREE ANGLES?");
   REQUIRE(ctx.ws.image);
   CHECK(ctx.ws.image->desim == Description{1, Projection::assonometric, {110, 130, 120}});
   CHECK(ctx.ws.image->points.shape == std::vector<std::size_t>{7, 7, 2});
   CHECK(ctx.ws.image->arrows.empty());
 
-  ctx.run(display_command, surface, {"AXONOMETRIC", "120", "120", "120"});
+  ctx.run(display_command, "SURFACE", {"AXONOMETRIC", "120", "120", "120"});
   CHECK(ctx.ws.image->desim.projection == Projection::assonometric);
-  ctx.run(display_command, surface, {"I", "3", "30"});
+  ctx.run(display_command, "SURFACE", {"I", "3", "30"});
   CHECK(ctx.ws.image->desim == Description{1, Projection::isometric, {3, 30, 0}});
-  ctx.run(display_command, surface, {"C", "100", "¯50", "80"});
+  ctx.run(display_command, "SURFACE", {"C", "100", "¯50", "80"});
   CHECK(ctx.ws.image->desim == Description{1, Projection::conic, {100, -50, 80}});
   CHECK(ctx.shown.size() == 4);
 }
@@ -261,55 +278,56 @@ TEST_CASE("DISPLAY SURFACE asks the projection and its parameters") {
 TEST_CASE("STORE and DISPLAY FIRST, SECOND and FILE") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  CHECK(report_of(ctx, store_command, first) == "IMAGE NOT FOUND");
-  CHECK(report_of(ctx, store_command, file, {"X"}) == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, store_command, "FIRST") == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, store_command, "FILE", {"X"}) == "IMAGE NOT FOUND");
   build_saddle(ctx);
-  ctx.run(display_command, surface, {"O", "XY"});
+  ctx.run(display_command, "SURFACE", {"O", "XY"});
   const Image xy = *ctx.ws.image;
-  ctx.run(store_command, first);
-  ctx.run(display_command, surface, {"O", "YZ"});
+  ctx.run(store_command, "FIRST");
+  ctx.run(display_command, "SURFACE", {"O", "YZ"});
   const Image yz = *ctx.ws.image;
-  ctx.run(store_command, second);
-  CHECK(report_of(ctx, store_command, file, {"a.b"}) == "INCORRECT PARAMETER");
-  ctx.run(store_command, file, {"view"});
+  ctx.run(store_command, "SECOND");
+  CHECK(report_of(ctx, store_command, "FILE", {"a.b"}) ==
+        "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _");
+  ctx.run(store_command, "FILE", {"view"});
   CHECK(std::filesystem::exists(dir.path() / "VIEW.IGDSIMAG"));
-  CHECK(report_of(ctx, store_command, second, {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(report_of(ctx, store_command, "SECOND", {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
   CHECK(*ctx.ws.temp1 == xy);
   CHECK(*ctx.ws.temp2 == yz);
 
-  ctx.run(display_command, first);
+  ctx.run(display_command, "FIRST");
   CHECK(*ctx.ws.image == xy);
   ctx.type({"VIEW"});
-  ctx.run(display_command, file);
+  ctx.run(display_command, "FILE");
   CHECK(ctx.prompts.back() == "FILE NAME?");
   CHECK(*ctx.ws.image == yz);
-  ctx.run(display_command, second);
+  ctx.run(display_command, "SECOND");
   CHECK(ctx.shown.size() == 5);
 }
 
 TEST_CASE("END and HELP") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  ctx.run(end_command, 0);
+  ctx.run(end_command, "APL");
   CHECK(ctx.ends == 1);
-  ctx.run(end_command, 1);
+  ctx.run(end_command, "CMS");
   CHECK(ctx.ends == 0);
-  CHECK(report_of(ctx, end_command, 1, {"NOW"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(report_of(ctx, end_command, "CMS", {"NOW"}) == "INCORRECT COMMAND OR PARAMETERS");
 
   CHECK(ctx.ws.status[0] == 1);
-  ctx.run(help_command, 0);
+  ctx.run(help_command, "SHORT");
   CHECK(ctx.ws.status[0] == 0);
   CHECK(ctx.said.size() == 2);
   CHECK(ctx.said[0].starts_with("Type a command: BUILD CHANGE RESTORE DISPLAY"));
   ctx.said.clear();
-  ctx.run(help_command, -1);
+  ctx.run(help_command, "");
   CHECK(ctx.said.size() == 2);
   ctx.said.clear();
-  ctx.run(help_command, 1);
+  ctx.run(help_command, "LONG");
   CHECK(ctx.ws.status[0] == 1);
   CHECK(ctx.said.size() > 20);
   ctx.said.clear();
-  ctx.run(help_command, -1);
+  ctx.run(help_command, "");
   CHECK(ctx.said.size() > 20);
 }
 

@@ -1,36 +1,41 @@
-// lookup_prefix and the table: what every one- and two-letter abbreviation means. A new command
-// or option that changes the meaning of an abbreviation of the manual fails here.
+// The command table and its lookup: what every one- and two-letter abbreviation means (a new
+// command or option that changes the meaning of an abbreviation of the manual fails here), and
+// every word of the language declared once.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <map>
+#include <regex>
+#include <set>
 #include <string>
 
+#include "commands/answers.h"
 #include "commands/command.h"
+#include "commands/view.h"
+#include "tests/support/process.h"
 
 namespace igds::test {
 
 namespace {
 
-std::vector<std::string_view> names() {
-  std::vector<std::string_view> all;
-  for (const Command* c : command_table()) all.push_back(c->name);
+std::vector<Choice> names() {
+  std::vector<Choice> all;
+  for (const Command* c : command_table()) all.push_back({c->name});
   return all;
 }
 
 // Every abbreviation of one or two letters A-Z that resolves, and what it resolves to.
-std::map<std::string, std::string> resolved(std::span<const std::string_view> words) {
+std::map<std::string, std::string> resolved(std::span<const Choice> words) {
   std::map<std::string, std::string> out;
   std::vector<std::string> typed;
   for (char a = 'A'; a <= 'Z'; ++a) {
     typed.emplace_back(1, a);
     for (char b = 'A'; b <= 'Z'; ++b) typed.push_back(std::string{a, b});
   }
-  for (const auto& t : typed) {
-    int i = lookup_prefix(words, t);
-    if (i >= 0) out[t] = std::string(words[static_cast<std::size_t>(i)]);
-  }
+  for (const auto& t : typed)
+    if (const Choice* c = choose(words, t)) out[t] = std::string(c->word);
   return out;
 }
 
@@ -58,24 +63,32 @@ const Command& command(std::string_view name) {
 
 }  // namespace
 
-TEST_CASE("lookup_prefix takes the first entry that starts with the letters typed") {
-  const std::array<std::string_view, 3> words{"STORE", "SAVE", "SECOND"};
-  CHECK(lookup_prefix(words, "S") == 0);
-  CHECK(lookup_prefix(words, "SA") == 1);
-  CHECK(lookup_prefix(words, "sa") == 1);
-  CHECK(lookup_prefix(words, "Sec") == 2);
-  CHECK(lookup_prefix(words, "SECOND") == 2);
-  CHECK(lookup_prefix(words, "SECONDS") == -1);
-  CHECK(lookup_prefix(words, "X") == -1);
-  CHECK(lookup_prefix(words, "") == -1);
-  CHECK(lookup_prefix({}, "S") == -1);
+TEST_CASE("choose takes the first entry that starts with the letters typed") {
+  const std::array<Choice, 3> words{{{"STORE"}, {"SAVE"}, {"SECOND"}}};
+  auto word = [&](std::string_view typed) {
+    const Choice* c = choose(words, typed);
+    return c ? std::string(c->word) : std::string("-");
+  };
+  CHECK(word("S") == "STORE");
+  CHECK(word("SA") == "SAVE");
+  CHECK(word("sa") == "SAVE");
+  CHECK(word("Sec") == "SECOND");
+  CHECK(word("SECOND") == "SECOND");
+  CHECK(word("SECONDS") == "-");
+  CHECK(word("X") == "-");
+  CHECK(word("") == "-");
+  CHECK(choose({}, "S") == nullptr);
+  CHECK(find_command("sa")->name == "SAVE");
+  CHECK(find_command("Q") == nullptr);
 }
 
 TEST_CASE("the command table is the manual's, then the project's additions") {
+  std::vector<std::string_view> got;
+  for (const Command* c : command_table()) got.push_back(c->name);
   const std::vector<std::string_view> expected{"BUILD", "CHANGE", "RESTORE", "DISPLAY",
                                                "PLOT",  "STORE",  "SAVE",    "WRITE",
                                                "END",   "HELP",   "ERASE",   "EXPORT"};
-  CHECK(names() == expected);
+  CHECK(got == expected);
 }
 
 TEST_CASE("every one- and two-letter abbreviation of a command") {
@@ -85,7 +98,7 @@ TEST_CASE("every one- and two-letter abbreviation of a command") {
               "RE=RESTORE SA=SAVE ST=STORE WR=WRITE"));
 }
 
-TEST_CASE("every one- and two-letter abbreviation of an option") {
+TEST_CASE("every one- and two-letter abbreviation of an option, and of the words answered") {
   CHECK(command("BUILD").options.empty());
   CHECK(command("RESTORE").options.empty());
   CHECK(command("SAVE").options.empty());
@@ -100,14 +113,17 @@ TEST_CASE("every one- and two-letter abbreviation of an option") {
   CHECK(resolved(command("END").options) == table("A=APL C=CMS AP=APL CM=CMS"));
   CHECK(resolved(command("HELP").options) == table("L=LONG S=SHORT LO=LONG SH=SHORT"));
   CHECK(resolved(command("EXPORT").options) == table("H=HPGL S=SVG T=TEK HP=HPGL SV=SVG TE=TEK"));
+  CHECK(resolved(projection_choices()) ==
+        table("A=ASSONOMETRIC C=CONIC I=ISOMETRIC O=ORTHOGONAL AS=ASSONOMETRIC AX=AXONOMETRIC "
+              "CO=CONIC IS=ISOMETRIC OR=ORTHOGONAL"));
+  CHECK(resolved(yes_no()) == table("N=NO Y=YES NO=NO YE=YES"));
 }
 
 TEST_CASE("the abbreviations of the manual's examples") {
   auto option = [](std::string_view c, std::string_view o) {
-    return std::string(
-        command(c).options[static_cast<std::size_t>(lookup_prefix(command(c).options, o))]);
+    return std::string(choose(command(c).options, o)->word);
   };
-  CHECK(names()[static_cast<std::size_t>(lookup_prefix(names(), "S"))] == "STORE");
+  CHECK(find_command("S")->name == "STORE");
   CHECK(option("STORE", "FI") == "FIRST");
   CHECK(option("STORE", "FIL") == "FILE");
   CHECK(option("DISPLAY", "S") == "SECOND");
@@ -117,18 +133,93 @@ TEST_CASE("the abbreviations of the manual's examples") {
 TEST_CASE("every command declares its help once, in the house style") {
   for (const Command* c : command_table()) {
     CAPTURE(c->name);
-    CHECK(!c->short_help.empty());
-    CHECK(c->long_help.size() > c->short_help.size());
+    // The summary fits the right column of HELP LONG's list, on a line or two.
+    CHECK(!c->summary.empty());
+    CHECK(c->summary.size() <= 2 * (72 - 26));
+    CHECK(c->summary.find('\n') == std::string_view::npos);
+    CHECK(c->long_help.size() > c->summary.size());
     CHECK(static_cast<bool>(c->run));
-    for (std::string_view help : {c->short_help, c->option_prompt.short_help}) {
-      CHECK(std::count(help.begin(), help.end(), '\n') <= 1);  // one or two lines
-      CHECK(help.size() <= 200);
+    const std::string_view help = c->option_prompt.short_help;
+    CHECK(std::count(help.begin(), help.end(), '\n') <= 1);  // one or two lines
+    for (std::string_view text = help; !text.empty();) {
+      const auto end = std::min(text.find('\n'), text.size());
+      CHECK_MESSAGE(end <= 72, text.substr(0, end));
+      text.remove_prefix(std::min(end + 1, text.size()));
+    }
+    // Written for the 73 columns of the 4013 screen.
+    std::size_t start = 0;
+    const std::string_view text = c->long_help;
+    while (start < text.size()) {
+      auto end = std::min(text.find('\n', start), text.size());
+      CHECK_MESSAGE(end - start <= 72, text.substr(start, end - start));
+      start = end + 1;
     }
     if (!c->option_prompt.text.empty()) {
       CHECK(c->option_prompt.text.back() == '?');
       CHECK(!c->option_prompt.short_help.empty());
     }
+    for (const Prompt* q : c->questions) {
+      CAPTURE(q->text);
+      CHECK(q->text.find('?') != std::string_view::npos);
+      CHECK(!q->short_help.empty());
+      CHECK(std::count(q->short_help.begin(), q->short_help.end(), '\n') <= 1);
+      for (std::string_view text = q->short_help; !text.empty();) {
+        const auto end = std::min(text.find('\n'), text.size());
+        CHECK_MESSAGE(end <= 72, text.substr(0, end));
+        text.remove_prefix(std::min(end + 1, text.size()));
+      }
+    }
   }
+  for (std::string_view line : {help_overview()}) CHECK(!line.empty());
+}
+
+TEST_CASE("every word of the language is spelled in one source file: its declaration's") {
+  // The words and the files that declare them: a command's in commands/<command>.cpp (two
+  // commands may both have a FIRST), the projections and planes in commands/view.cpp, the
+  // answers in commands/answers.cpp.
+  std::map<std::string, std::set<std::string>> declared;
+  for (const Command* c : command_table()) {
+    std::string file = "commands/" + std::string(c->name) + ".cpp";
+    for (char& ch : file) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    declared[std::string(c->name)].insert(file);
+    for (const Choice& o : c->options) declared[std::string(o.word)].insert(file);
+  }
+  for (auto set : {projection_choices(), plane_choices()})
+    for (const Choice& c : set) declared[std::string(c.word)].insert("commands/view.cpp");
+  for (const Choice& c : yes_no()) declared[std::string(c.word)].insert("commands/answers.cpp");
+  // HPGL is also the type of the files PLOT writes (PLOTnnnn.HPGL).
+  declared["HPGL"].insert("commands/plot.cpp");
+  std::set<std::string> words;
+  for (const auto& [word, files] : declared) words.insert(word);
+  // Every string literal of the sources (raw strings, the help texts, are prose and left out).
+  const std::regex literal(R"re("((?:[^"\\\n]|\\.)*)")re");
+  std::map<std::string, std::set<std::string>> spelled;
+  for (const char* folder : {"commands", "interp", "devices", "workspace"}) {
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(source_dir() / folder)) {
+      const auto ext = entry.path().extension();
+      if (ext != ".cpp" && ext != ".h") continue;
+      std::string text = read_file(entry.path());
+      // Raw strings out first.
+      for (auto at = text.find("R\"("); at != std::string::npos; at = text.find("R\"(", at)) {
+        const auto end = text.find(")\"", at);
+        text.erase(at, end == std::string::npos ? std::string::npos : end + 2 - at);
+      }
+      for (std::sregex_iterator it(text.begin(), text.end(), literal), none; it != none; ++it) {
+        const std::string word = (*it)[1];
+        if (words.count(word))
+          spelled[word].insert(entry.path().lexically_relative(source_dir()).string());
+      }
+    }
+  }
+  for (const auto& [word, files] : spelled) {
+    CAPTURE(word);
+    for (const auto& file : files)
+      CHECK_MESSAGE(declared[word].count(file), word << " is spelled in " << file);
+  }
+  // And each is declared, not only spelled: a command's words in its command's file.
+  CHECK(spelled["GRID"] == std::set<std::string>{"commands/change.cpp"});
+  CHECK(spelled["CONIC"] == std::set<std::string>{"commands/view.cpp"});
+  CHECK(spelled["XZ"] == std::set<std::string>{"commands/view.cpp"});
 }
 
 }  // namespace igds::test

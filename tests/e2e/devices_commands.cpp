@@ -14,6 +14,7 @@
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
+#include "tests/support/fake_context.h"
 #include "tests/support/process.h"
 #include "workspace/disk/format.h"
 #include "workspace/error.h"
@@ -26,71 +27,22 @@ extern const Command erase_command;
 
 namespace igds::test::devices {
 
+using igds::test::FakeContext;
+
 namespace {
 
-// A Context with options to set, that records what reaches the terminal.
-class DeviceContext final : public Context {
- public:
-  explicit DeviceContext(const std::filesystem::path& dir) : disk_(dir) { opts.disk = dir; }
-
-  void type(std::vector<std::string> lines) {
-    for (auto& l : lines) typed_.push_back(std::move(l));
-  }
-  void run(const Command& command, int option, std::vector<std::string> words = {}) {
-    pending_ = std::move(words);
-    command.run(*this, option);
-  }
-
-  Options opts;
-  Workspace ws;
-  std::vector<std::string> prompts, said;
-  std::string terminal;
-  int erases = 0;
-
-  Workspace& workspace() override { return ws; }
-  const Options& options() const override { return opts; }
-  const Disk& disk() const override { return disk_; }
-  std::vector<std::string> ask(const Prompt& prompt) override {
-    if (!pending_.empty()) return std::exchange(pending_, {});
-    prompts.emplace_back(prompt.text);
-    if (typed_.empty()) throw EndOfInput{};
-    std::istringstream in(typed_.front());
-    typed_.pop_front();
-    std::vector<std::string> words;
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
-  }
-  void unread(std::vector<std::string> words) override {
-    words.insert(words.end(), pending_.begin(), pending_.end());
-    pending_ = std::move(words);
-  }
-  bool has_pending() const override { return !pending_.empty(); }
-  void say(std::string_view line) override { said.emplace_back(line); }
-  void report(std::string_view text) override { said.emplace_back(text); }
-  void show(const ImageRef&) override {}
-  void erase() override { ++erases; }
-  void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
-  void end_session(bool) override {}
-
- private:
-  Disk disk_;
-  std::deque<std::string> typed_;
-  std::vector<std::string> pending_;
-};
+using DeviceContext = FakeContext;
 
 // The report a command throws, or "" when it succeeds.
 template <class F>
 std::string report_of(F f) {
   try {
     f();
-  } catch (const Report& r) {
+  } catch (const Error& r) {
     return r.what();
   }
   return "";
 }
-
-enum { selectric, ebcdic };
-enum { svg, tek, hpgl };
 
 // Clears the write limit of the disk functions even when a check fails.
 struct WriteLimit {
@@ -120,7 +72,7 @@ struct FileSizeLimit {
 TEST_CASE("PLOT: IMAGE NOT FOUND first, nothing recorded") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  CHECK(report_of([&] { ctx.run(plot_command, selectric); }) == reports::image_not_found);
+  CHECK(report_of([&] { ctx.run(plot_command, "SELECTRIC"); }) == reports::image_not_found);
   CHECK(ctx.ws.status[1] == 0);
   CHECK(std::filesystem::is_empty(dir.path()));
 }
@@ -129,7 +81,7 @@ TEST_CASE("PLOT: new PLOTnnnn.HPGL files on the disk, the keyboard in STATUS[2]"
   TempDir dir;
   DeviceContext ctx(dir.path());
   ctx.ws.image = std::make_shared<const Image>(surface_image(5, 4));
-  ctx.run(plot_command, selectric);
+  ctx.run(plot_command, "SELECTRIC");
   CHECK(ctx.ws.status[1] == 1);
   Plot expected = plot_hpgl(*ctx.ws.image, {});
   CHECK(read_file(dir.path() / "PLOT0001.HPGL") == expected.hpgl);
@@ -140,12 +92,12 @@ TEST_CASE("PLOT: new PLOTnnnn.HPGL files on the disk, the keyboard in STATUS[2]"
                                    expected.stats.vectors, expected.stats.pen_lifts,
                                    expected.stats.pen_up_mm, expected.hpgl.size()));
   ctx.opts.plot.paper = Paper::a3;
-  ctx.run(plot_command, ebcdic);
+  ctx.run(plot_command, "EBCDIC");
   CHECK(ctx.ws.status[1] == 2);
   CHECK(read_file(dir.path() / "PLOT0002.HPGL") == plot_hpgl(*ctx.ws.image, {Paper::a3}).hpgl);
   // A freed number is used again: the next free one, counting from 1.
   std::filesystem::remove(dir.path() / "PLOT0001.HPGL");
-  ctx.run(plot_command, selectric);
+  ctx.run(plot_command, "SELECTRIC");
   CHECK(std::filesystem::exists(dir.path() / "PLOT0001.HPGL"));
   CHECK(ctx.said.back().rfind("PLOT0001.HPGL: ", 0) == 0);
 }
@@ -155,7 +107,7 @@ TEST_CASE("PLOT: on the terminal line, wrapped in ESC.( ... ESC.)") {
   DeviceContext ctx(dir.path());
   ctx.ws.image = std::make_shared<const Image>(input_image(3, 4));
   ctx.opts.plotter = "tty";
-  ctx.run(plot_command, ebcdic);
+  ctx.run(plot_command, "EBCDIC");
   CHECK(ctx.terminal == "\x1B.(" + plot_hpgl(*ctx.ws.image, {}).hpgl + "\x1B.)");
   CHECK(std::filesystem::is_empty(dir.path()));
   CHECK(ctx.said.at(0).rfind("PLOTTER: ", 0) == 0);
@@ -166,8 +118,8 @@ TEST_CASE("PLOT: a path is appended to, plot after plot") {
   DeviceContext ctx(dir.path());
   ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   ctx.opts.plotter = (elsewhere.path() / "plotter.hpgl").string();
-  ctx.run(plot_command, selectric);
-  ctx.run(plot_command, selectric);
+  ctx.run(plot_command, "SELECTRIC");
+  ctx.run(plot_command, "SELECTRIC");
   std::string one = plot_hpgl(*ctx.ws.image, {}).hpgl;
   CHECK(read_file(ctx.opts.plotter) == one + one);
   CHECK(ctx.said.at(1).rfind(ctx.opts.plotter + ": ", 0) == 0);
@@ -178,14 +130,14 @@ TEST_CASE("PLOT: a plotter that cannot be written, a full disk, words left: noth
   DeviceContext ctx(dir.path());
   ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   ctx.opts.plotter = (dir.path() / "no" / "such" / "folder").string();
-  std::string r = report_of([&] { ctx.run(plot_command, ebcdic); });
+  std::string r = report_of([&] { ctx.run(plot_command, "EBCDIC"); });
   CHECK(r == fmt::format("CANNOT OPEN PLOTTER {} (NO SUCH FILE OR DIRECTORY); NOTHING PLOTTED",
                          ctx.opts.plotter));
   CHECK(ctx.ws.status[1] == 0);
   // A device that takes nothing: /dev/full fails every write.
   if (std::filesystem::exists("/dev/full")) {
     ctx.opts.plotter = "/dev/full";
-    CHECK(report_of([&] { ctx.run(plot_command, ebcdic); }) ==
+    CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
           "CANNOT WRITE TO PLOTTER /dev/full (NO SPACE LEFT ON DEVICE); NOTHING PLOTTED");
     CHECK(ctx.ws.status[1] == 0);
   }
@@ -194,7 +146,7 @@ TEST_CASE("PLOT: a plotter that cannot be written, a full disk, words left: noth
     auto path = dir.path() / "short.hpgl";
     ctx.opts.plotter = path.string();
     FileSizeLimit limit(100);
-    CHECK(report_of([&] { ctx.run(plot_command, ebcdic); }) ==
+    CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
           fmt::format("CANNOT WRITE TO PLOTTER {} (FILE TOO LARGE); THE PLOT IS INCOMPLETE",
                       path.string()));
   }
@@ -203,12 +155,12 @@ TEST_CASE("PLOT: a plotter that cannot be written, a full disk, words left: noth
   ctx.opts.plotter = "";
   {
     WriteLimit full(10);
-    CHECK(report_of([&] { ctx.run(plot_command, ebcdic); }) ==
+    CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
           "CANNOT WRITE PLOT0001.HPGL (NO SPACE LEFT ON DEVICE); NOTHING PLOTTED");
   }
   CHECK(ctx.ws.status[1] == 0);
   CHECK(std::filesystem::is_empty(dir.path()));
-  CHECK(report_of([&] { ctx.run(plot_command, selectric, {"NOW"}); }) ==
+  CHECK(report_of([&] { ctx.run(plot_command, "SELECTRIC", {"NOW"}); }) ==
         reports::incorrect_command);
   CHECK(ctx.ws.status[1] == 0);
   CHECK(ctx.said.empty());
@@ -220,7 +172,7 @@ TEST_CASE("PLOT: every PLOTnnnn number taken") {
     std::ofstream(dir.path() / fmt::format("PLOT{:04}.HPGL", n)).put('x');
   DeviceContext ctx(dir.path());
   ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
-  CHECK(report_of([&] { ctx.run(plot_command, selectric); }) ==
+  CHECK(report_of([&] { ctx.run(plot_command, "SELECTRIC"); }) ==
         "NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
   CHECK(ctx.ws.status[1] == 0);
   CHECK(read_file(dir.path() / "PLOT0001.HPGL") == "x");
@@ -233,10 +185,10 @@ TEST_CASE("EXPORT: SVG, TEK and HPGL files of the current image") {
   ctx.opts.tek.bits = 12;
   ctx.opts.plot.paper = Paper::letter;
   Workspace before = ctx.ws;
-  ctx.run(export_command, svg, {"hull"});
-  ctx.run(export_command, tek, {"Hull"});
+  ctx.run(export_command, "SVG", {"hull"});
+  ctx.run(export_command, "TEK", {"Hull"});
   ctx.type({"", "hull"});  // an empty reply asks again
-  ctx.run(export_command, hpgl);
+  ctx.run(export_command, "HPGL");
   CHECK(ctx.prompts == std::vector<std::string>{"FILE NAME?", "FILE NAME?"});
   CHECK(read_file(dir.path() / "HULL.SVG") == svg_of(*ctx.ws.image));
   CHECK(read_file(dir.path() / "HULL.TEK") == tek_stream(*ctx.ws.image, {12}));
@@ -245,7 +197,7 @@ TEST_CASE("EXPORT: SVG, TEK and HPGL files of the current image") {
   CHECK(ctx.ws == before);
   // Replaced whole by the next export of the same name; no temporary left behind.
   ctx.ws.image = std::make_shared<const Image>(surface_image(2, 2));
-  ctx.run(export_command, svg, {"HULL"});
+  ctx.run(export_command, "SVG", {"HULL"});
   CHECK(read_file(dir.path() / "HULL.SVG") == svg_of(*ctx.ws.image));
   std::size_t files = 0;
   for (auto& e : std::filesystem::directory_iterator(dir.path())) ++files, (void)e;
@@ -255,19 +207,20 @@ TEST_CASE("EXPORT: SVG, TEK and HPGL files of the current image") {
 TEST_CASE("EXPORT: IMAGE NOT FOUND, INCORRECT PARAMETER, a full disk keeps the old file") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  CHECK(report_of([&] { ctx.run(export_command, svg, {"A"}); }) == reports::image_not_found);
+  CHECK(report_of([&] { ctx.run(export_command, "SVG", {"A"}); }) == reports::image_not_found);
   CHECK(ctx.prompts.empty());
   ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
   for (std::vector<std::string> words :
        std::vector<std::vector<std::string>>{{"../X"}, {"TOOLONGNAME"}, {"A.B"}, {"A", "B"}})
-    CHECK(report_of([&] { ctx.run(export_command, tek, words); }) == reports::incorrect_parameter);
+    CHECK(report_of([&] { ctx.run(export_command, "TEK", words); }) ==
+          reports::incorrect_parameter);
   CHECK(std::filesystem::is_empty(dir.path()));
-  ctx.run(export_command, hpgl, {"KEEP"});
+  ctx.run(export_command, "HPGL", {"KEEP"});
   std::string old = read_file(dir.path() / "KEEP.HPGL");
   ctx.ws.image = std::make_shared<const Image>(input_image(4, 4));
   {
     WriteLimit full(10);
-    CHECK(report_of([&] { ctx.run(export_command, hpgl, {"KEEP"}); }) ==
+    CHECK(report_of([&] { ctx.run(export_command, "HPGL", {"KEEP"}); }) ==
           "CANNOT WRITE KEEP.HPGL (NO SPACE LEFT ON DEVICE); NO FILE CHANGED");
   }
   CHECK(read_file(dir.path() / "KEEP.HPGL") == old);
@@ -276,19 +229,24 @@ TEST_CASE("EXPORT: IMAGE NOT FOUND, INCORRECT PARAMETER, a full disk keeps the o
 TEST_CASE("ERASE: the Context's erase, nothing else on the line") {
   TempDir dir;
   DeviceContext ctx(dir.path());
-  ctx.run(erase_command, -1);
+  ctx.run(erase_command, "");
   CHECK(ctx.erases == 1);
-  CHECK(report_of([&] { ctx.run(erase_command, -1, {"ALL"}); }) == reports::incorrect_command);
+  CHECK(report_of([&] { ctx.run(erase_command, "", {"ALL"}); }) == reports::incorrect_command);
   CHECK(ctx.erases == 1);
 }
 
 TEST_CASE("PLOT, EXPORT, ERASE: help texts and options as the table needs them") {
-  CHECK(plot_command.options == std::vector<std::string_view>{"SELECTRIC", "EBCDIC"});
-  CHECK(export_command.options == std::vector<std::string_view>{"SVG", "TEK", "HPGL"});
+  auto words = [](std::span<const Choice> choices) {
+    std::vector<std::string_view> out;
+    for (const Choice& c : choices) out.push_back(c.word);
+    return out;
+  };
+  CHECK(words(plot_command.options) == std::vector<std::string_view>{"SELECTRIC", "EBCDIC"});
+  CHECK(words(export_command.options) == std::vector<std::string_view>{"SVG", "TEK", "HPGL"});
   CHECK(erase_command.options.empty());
   CHECK(plot_command.long_help.find("no longer changes the output") != std::string_view::npos);
   for (const Command* c : {&plot_command, &export_command, &erase_command}) {
-    CHECK(!c->short_help.empty());
+    CHECK(!c->summary.empty());
     CHECK(c->long_help.find("Example") != std::string_view::npos);
   }
 }

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "commands/command.h"
+#include "tests/support/fake_context.h"
 #include "tests/support/process.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
@@ -206,45 +207,6 @@ TEST_CASE("a disk that is not there") {
   CHECK(fs::is_empty(scratch.path()));
 }
 
-namespace {
-
-// A Context with no terminal: replies come from a list, what is said is collected.
-class ScriptedContext : public Context {
- public:
-  ScriptedContext(const Disk& disk, Workspace ws, std::vector<std::vector<std::string>> replies)
-      : disk_(disk), ws_(std::move(ws)), replies_(std::move(replies)) {}
-  Workspace& workspace() override { return ws_; }
-  const Options& options() const override { return options_; }
-  const Disk& disk() const override { return disk_; }
-  std::vector<std::string> ask(const Prompt& prompt) override {
-    asked.emplace_back(prompt.text);
-    if (replies_.empty()) throw EndOfInput{};
-    auto words = replies_.front();
-    replies_.erase(replies_.begin());
-    return words;
-  }
-  void unread(std::vector<std::string> words) override {
-    replies_.insert(replies_.begin(), std::move(words));
-  }
-  bool has_pending() const override { return false; }
-  void say(std::string_view line) override { said.emplace_back(line); }
-  void report(std::string_view text) override { said.emplace_back(text); }
-  void show(const ImageRef&) override {}
-  void erase() override {}
-  void send_to_terminal(std::string_view) override {}
-  void end_session(bool) override {}
-
-  std::vector<std::string> asked, said;
-
- private:
-  const Disk& disk_;
-  Options options_;
-  Workspace ws_;
-  std::vector<std::vector<std::string>> replies_;
-};
-
-}  // namespace
-
 namespace igds {
 extern const Command restore_command, save_command, write_command;
 }  // namespace igds
@@ -259,30 +221,43 @@ TEST_CASE("the commands through the Context alone") {
   for (double& v : ws.intpn.ravel) v = 1;
   ws.intpn.ravel[4] = -123456.5;  // the only value too wide for F10.3
 
-  ScriptedContext write(disk, ws, {{}, {"one"}});
-  write_command.run(write, -1);
-  CHECK(write.asked == std::vector<std::string>{"FILE NAME?", "FILE NAME?"});
+  test::FakeContext write(dir.path(), ws);
+  write.type({"", "one"});
+  write.run(write_command, "");
+  CHECK(write.prompts == std::vector<std::string>{"FILE NAME?", "FILE NAME?"});
   CHECK(write.said ==
         std::vector<std::string>{"1 VALUE DOES NOT FIT F10.3: WRITTEN AS **********"});
   CHECK(fs::exists(dir.path() / "ONE.IGDSCHAR"));
 
-  ScriptedContext save(disk, ws, {{"keep"}});
-  save_command.run(save, -1);
+  test::FakeContext save(dir.path(), ws);
+  save.type({"keep"});
+  save.run(save_command, "");
   CHECK(save.said.empty());
 
-  ScriptedContext restore(disk, Workspace{}, {{"KEEP"}});
-  restore_command.run(restore, -1);
+  test::FakeContext restore(dir.path());
+  restore.type({"KEEP"});
+  restore.run(restore_command, "");
   CHECK(restore.said == std::vector<std::string>{"NOCUR 2 NOSTR 2 INTCU 1 INTST 0"});
   test::check_same_surface(restore.workspace(), ws);
 
-  ScriptedContext two(disk, ws, {{"A", "B"}});
-  CHECK_THROWS_WITH_AS(save_command.run(two, -1), "INCORRECT PARAMETER", Report);
-  ScriptedContext empty(disk, Workspace{}, {{"X"}});
-  CHECK_THROWS_WITH_AS(write_command.run(empty, -1), "INPUT NOT FOUND", Report);
-  CHECK(empty.asked.empty());
+  // A bad name typed at the question: the reason, and the question again.
+  test::FakeContext two(dir.path(), ws);
+  two.type({"A B", "ok"});
+  two.run(save_command, "");
+  CHECK(two.said == std::vector<std::string>{
+                        "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _"});
+  CHECK(fs::exists(dir.path() / "OK.IGDSDATA"));
+  // On the command line: the report ends the command.
+  test::FakeContext line(dir.path(), ws);
+  CHECK_THROWS_WITH_AS(line.run(save_command, "", {"A.B"}),
+                       "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _",
+                       Error);
+  test::FakeContext empty(dir.path());
+  empty.type({"X"});
+  CHECK_THROWS_WITH_AS(empty.run(write_command, ""), "INPUT NOT FOUND", Report);
+  CHECK(empty.prompts.empty());
   // Ctrl-D at the prompt: the command ends, nothing written.
-  ScriptedContext ended(disk, ws, {});
-  CHECK_THROWS_AS(save_command.run(ended, -1), EndOfInput);
-  CHECK(restore_command.short_help.size() < 160);
+  test::FakeContext ended(dir.path(), ws);
+  CHECK_THROWS_AS(ended.run(save_command, ""), EndOfInput);
   CHECK(!save_command.long_help.empty());
 }

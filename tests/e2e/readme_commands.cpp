@@ -154,20 +154,23 @@ TEST_CASE("the README's table of abbreviations is the command table's") {
     if (pairs.size() != 1) continue;  // not a command row
     const auto& [name, abbr] = pairs[0];
     auto table = command_table();
-    std::vector<std::string_view> names;
-    for (const auto* c : table) names.push_back(c->name);
-    auto lookup = [&](const std::string& typed) { return lookup_prefix(names, typed); };
+    auto lookup = [&](const std::string& typed) {
+      const Command* c = find_command(typed);
+      return c ? static_cast<int>(std::find(table.begin(), table.end(), c) - table.begin()) : -1;
+    };
     check_shortest(name, abbr, lookup);
     int index = lookup(name);
     REQUIRE(index >= 0);
     listed.push_back(name);
-    const auto& options = table[static_cast<std::size_t>(index)]->options;
+    const auto options = table[static_cast<std::size_t>(index)]->options;
     auto option_pairs =
         abbreviations_in(cells.substr(bar + 3, cells.find(" | ", bar + 3) - bar - 3));
     CHECK(option_pairs.size() == options.size());
     for (const auto& [option, short_form] : option_pairs)
-      check_shortest(option, short_form,
-                     [&](const std::string& typed) { return lookup_prefix(options, typed); });
+      check_shortest(option, short_form, [&](const std::string& typed) {
+        const Choice* c = choose(options, typed);
+        return c ? static_cast<int>(c - options.data()) : -1;
+      });
   }
   std::vector<std::string> all;
   for (const auto* c : command_table()) all.emplace_back(c->name);
@@ -184,8 +187,8 @@ TEST_CASE("the README's table of abbreviations is the command table's") {
   CHECK(pairs.size() == 4);
   for (const auto& [word, abbr] : pairs)
     check_shortest(word, abbr, [](const std::string& typed) {
-      auto p = projection_named(typed);
-      return p ? static_cast<int>(*p) : -1;
+      const Choice* c = choose(projection_choices(), typed);
+      return c ? c->code : -1;
     });
 }
 

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "devices/tek_screen.h"
 #include "devices/terminal.h"
 #include "tests/e2e/e2e_support.h"
 
@@ -52,7 +53,8 @@ POINTS? 1  0 0 0   0 10 2   0 20 0
 POINTS? 4  10 0 2  10 10 0  10 20 2
 POINTS? 7  20 0 0  20 10 2  20 20 0 ⍝ the third curve
 POINTS? H S
-A point number k and x y z (more triplets go to k+1, k+2, ...); an empty line ends the points.
+A point number k and x y z (more triplets go to k+1, k+2, ...); an empty line
+ends the points.
 POINTS?
 TANGENTS? 1 0 1 0 1
 TANGENTS? 1 1 0 0
@@ -60,7 +62,7 @@ INCORRECT ENTRY: POINT 1 IS A CORNER: GIVE 1 (CURVE) OR 0 (STRINGER)
 TANGENTS? 1 1 0 0 0
 TANGENTS?
 INTERPOLATED CURVES AND STRINGERS? x 2
-INCORRECT ENTRY
+INCORRECT ENTRY: GIVE TWO WHOLE NUMBERS >= 0, INTCU AND INTST
 INTERPOLATED CURVES AND STRINGERS? 2 2
 READY
 d su a 110 130 120
@@ -144,12 +146,15 @@ BUILD
       "DISPLAY FIRST\nIMAGE NOT FOUND\nREADY\n",
       "STORE FIRST\nIMAGE NOT FOUND\nREADY\n",
       "DISPLAY FILE NOSUCH\nFILE NOT FOUND\nREADY\n",
-      "DISPLAY FILE ../ETC\nINCORRECT PARAMETER\nREADY\n",
+      "DISPLAY FILE ../ETC\nINCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - "
+      "_\nREADY\n",
       "RESTORE NOSUCH\nFILE NOT FOUND\nREADY\n",
       "SAVE\nINPUT NOT FOUND\nREADY\n",
-      "DISPLAY SURFACE PERSPECTIVE\nINCORRECT PARAMETER\nREADY\n",
-      "DISPLAY SURFACE CONIC 10 10 1\nINCORRECT PARAMETER\nREADY\n",
-      "NUMBER OF CURVES AND STRINGERS? 1 1\nINCORRECT ENTRY\n",
+      "DISPLAY SURFACE PERSPECTIVE\nINCORRECT PARAMETER: THE PROJECTION IS CONIC, ISOMETRIC, "
+      "ASSONOMETRIC OR ORTHOGONAL\nREADY\n",
+      "DISPLAY SURFACE CONIC 10 10 1\nINCORRECT PARAMETER: THE VIEW POINT IS INSIDE THE SURFACE'S "
+      "BOX\nREADY\n",
+      "NUMBER OF CURVES AND STRINGERS? 1 1\nINCORRECT ENTRY: A SURFACE NEEDS AT LEAST TWO POINTS\n",
   };
   for (const auto& e : expected) {
     CAPTURE(e);
@@ -200,12 +205,12 @@ CMS
   CHECK(r.out.find("GRID, TANGENTS OR POINTS? H\nCHANGE modifies the current surface") !=
         std::string::npos);
   CHECK(r.out.find("GRID, TANGENTS OR POINTS? HELP SHORT\nGRID: new numbers") != std::string::npos);
-  CHECK(r.out.find("NUMBER OF CURVES AND STRINGERS? H\nTwo whole numbers >= 2") !=
+  CHECK(r.out.find("NUMBER OF CURVES AND STRINGERS? H\nTwo whole numbers: NOCUR") !=
         std::string::npos);
   CHECK(r.out.find("NUMBER OF CURVES AND STRINGERS? HELP LONG\nBUILD defines a new current "
                    "surface") != std::string::npos);
   CHECK(r.out.find("POINTS? H S\nA point number k") != std::string::npos);
-  CHECK(r.out.find("TANGENTS? H S\nA border point number k") != std::string::npos);
+  CHECK(r.out.find("TANGENTS? H S\nA border point k") != std::string::npos);
   CHECK(r.out.find("INTERPOLATED CURVES AND STRINGERS? H S\nTwo whole numbers >= 0") !=
         std::string::npos);
   CHECK(r.out.find("FIRST, SECOND, FILE, INPUT OR SURFACE? H S\nINPUT or SURFACE") !=
@@ -213,7 +218,7 @@ CMS
   CHECK(r.out.find("PROJECTION? H S\nCONIC, ISOMETRIC") != std::string::npos);
   CHECK(r.out.find("AXIS AND ANGLE? H S\nThe axis to drop") != std::string::npos);
   CHECK(r.out.find("FILE NAME? H S\nA name for the image file") != std::string::npos);
-  CHECK(r.out.find("CHANGE GRID TOO? H S\nY to give new numbers") != std::string::npos);
+  CHECK(r.out.find("CHANGE GRID TOO? (Y OR N) H S\nY to give new numbers") != std::string::npos);
   CHECK(r.out.find("APL OR CMS? H S\nAPL: look at") != std::string::npos);
   CHECK(r.out.find("\nINCORRECT") == std::string::npos);
   // HELP SHORT was the last setting: it is kept for the next session.
@@ -230,7 +235,7 @@ TEST_CASE("--strict stops at the first error report of a command file") {
   // An entry error counts too.
   auto entry = run_commands(disk, "BUILD\n1 1\n2 2\n\n\n0 0\nHELP\n", {"--strict"});
   CHECK(entry.status == 3);
-  CHECK(entry.out.ends_with("INCORRECT ENTRY\n"));
+  CHECK(entry.out.ends_with("INCORRECT ENTRY: A SURFACE NEEDS AT LEAST TWO POINTS\n"));
   // And an APL error.
   auto apl = run_commands(disk, "END APL\nNOSUCH\nSTART\nHELP SHORT\n", {"--strict"});
   CHECK(apl.status == 3);
@@ -314,8 +319,8 @@ TEST_CASE("tek mode: the output is what a 4013 receives") {
   CHECK(r.out.find('\x1d') != std::string::npos);
   CHECK(r.out.find("NOT DRAWN") == std::string::npos);
   // The dialogue starts at the top left of the screen, without erasing it.
-  const std::string home = TekDialogue({}).home();
-  CHECK(r.out.starts_with(home + "READY\r\n"));
+  const std::string home = TekScreen({}, true).begin();
+  CHECK(r.out.starts_with(home + "READY"));
   CHECK(home.starts_with('\x1d'));
   CHECK(home.ends_with('\x1f'));
   // A 4013 starts a line at the left margin only after CR LF: no bare LF reaches it.

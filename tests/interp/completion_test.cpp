@@ -3,8 +3,10 @@
 
 #include <algorithm>
 
+#include "commands/picture.h"
 #include "interp/interpreter.h"
 #include "tests/support/process.h"
+#include "tests/support/scripted.h"
 
 namespace igds::test {
 
@@ -20,7 +22,9 @@ TEST_CASE("completion: commands, then their options, then projections") {
   TempDir dir;
   Disk disk(dir.path());
   Session session(disk);
-  Interpreter interpreter(Options{}, disk, session, session.load());
+  StringOutput out;
+  Terminal terminal(TermMode::none, {}, out);
+  Interpreter interpreter(Options{}, disk, session, session.load(), terminal);
 
   auto commands = interpreter.completions({});
   CHECK(commands.size() == command_table().size());
@@ -39,13 +43,13 @@ TEST_CASE("completion: commands, then their options, then projections") {
   CHECK(has(projections, "XZ"));
 }
 
-TEST_CASE("describe_image: what the none mode prints for a DISPLAY") {
-  CHECK(describe_image({0, Projection::orthogonal, {3, 0, 0}}) == "IMAGE: INPUT, ORTHOGONAL YZ");
-  CHECK(describe_image({1, Projection::conic, {100, -50, 80}}) ==
+TEST_CASE("describe_line: what the none mode prints for a DISPLAY") {
+  CHECK(describe_line({0, Projection::orthogonal, {3, 0, 0}}) == "IMAGE: INPUT, ORTHOGONAL YZ");
+  CHECK(describe_line({1, Projection::conic, {100, -50, 80}}) ==
         "IMAGE: SURFACE, CONIC, VIEW POINT 100 ¯50 80");
-  CHECK(describe_image({1, Projection::isometric, {3, 30, 0}}) ==
+  CHECK(describe_line({1, Projection::isometric, {3, 30, 0}}) ==
         "IMAGE: SURFACE, ISOMETRIC, AXIS 3 ANGLE 30");
-  CHECK(describe_image({0, Projection::assonometric, {110, 130, 120}}) ==
+  CHECK(describe_line({0, Projection::assonometric, {110, 130, 120}}) ==
         "IMAGE: INPUT, ASSONOMETRIC 110 130 120");
 }
 

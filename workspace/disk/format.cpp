@@ -305,7 +305,8 @@ std::string surface_shape_error(const Workspace& ws) {
                  ws.inptg.empty() && ws.patches.empty() && ws.intpn.empty();
     return empty ? "" : "SHAPES";
   }
-  if (ws.nocur < 2 || ws.nostr < 2 || ws.intcu < 0 || ws.intst < 0) return "SHAPES";
+  if (ws.nocur < 1 || ws.nostr < 1 || ws.nocur * ws.nostr < 2 || ws.intcu < 0 || ws.intst < 0)
+    return "SHAPES";
   using S = std::vector<std::size_t>;
   auto cu = static_cast<std::size_t>(ws.nocur), st = static_cast<std::size_t>(ws.nostr);
   auto ic = static_cast<std::size_t>(ws.intcu), is = static_cast<std::size_t>(ws.intst);

@@ -7,6 +7,7 @@
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
 #include "workspace/kernels/limits.h"
+#include "workspace/kernels/spline.h"
 
 namespace igds {
 
@@ -49,7 +50,9 @@ std::size_t tangent_point(const SurfaceInput& in, std::size_t row) {
 
 // What every interpolation needs: sizes, shapes, finite points (math.md, bad data).
 void check_grid(const SurfaceInput& in) {
-  if (in.nocur < 2 || in.nostr < 2) throw DataError(DataError::Problem::grid_too_small);
+  // One curve or one stringer is a surface too (manual 4.1: "two integer positive numbers").
+  if (in.nocur < 1 || in.nostr < 1 || double(in.nocur) * in.nostr < 2)
+    throw DataError(DataError::Problem::grid_too_small);
   if (in.intcu < 0 || in.intst < 0) throw DataError(DataError::Problem::negative_density);
   const double inputs = double(in.nocur) * in.nostr;
   const double points = grid_points(in.nocur, in.nostr, in.intcu, in.intst);
@@ -84,6 +87,33 @@ void check_patches(const SurfaceInput& in, const Array& patches) {
   }
 }
 
+// A single curve (NOCUR 1) or a single stringer (NOSTR 1): no patch; INTPN is the spline of its
+// points, clamped by its two end tangents, at the parameters a/(INT+1) of every arc.
+void interpolate_line(const SurfaceInput& in, Surface& out) {
+  const bool curve = in.nocur == 1;
+  const std::size_t n = curve ? std::size_t(in.nostr) : std::size_t(in.nocur);
+  const std::size_t inserted = std::size_t(curve ? in.intst : in.intcu);
+  const std::size_t first_row = curve ? 0 : 2 * std::size_t(in.nocur);
+  const Vec3View points = as_vec3(*in.inppn);
+  std::vector<Vec3> tangents(n);
+  spline_tangents(points, border_tangent(*in.inptg, first_row),
+                  border_tangent(*in.inptg, first_row + 1), tangents);
+  const std::size_t count = n + inserted * (n - 1);
+  out.patches = Array({std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
+  out.intpn =
+      Array(curve ? std::vector<std::size_t>{1, count, 3} : std::vector<std::size_t>{count, 1, 3});
+  MutableVec3View grid = as_vec3(out.intpn);
+  for (std::size_t k = 0; k + 1 < n; ++k) {
+    for (std::size_t a = 1; a <= inserted; ++a) {
+      const double s = double(a) / double(inserted + 1);
+      grid[k * (inserted + 1) + a] =
+          spline_arc_point(points[k], points[k + 1], tangents[k], tangents[k + 1], s);
+    }
+  }
+  // The input points come out bit-exact (math.md).
+  for (std::size_t k = 0; k < n; ++k) grid[k * (inserted + 1)] = points[k];
+}
+
 }  // namespace
 
 Surface interpolate(const SurfaceInput& input) {
@@ -95,6 +125,12 @@ Surface interpolate(const SurfaceInput& input) {
 void interpolate_into(const SurfaceInput& input, Surface& out) {
   check_grid(input);
   check_tangents(input);
+  if (input.nocur == 1 || input.nostr == 1) {
+    Surface line;
+    interpolate_line(input, line);
+    out = std::move(line);
+    return;
+  }
   if (&out.patches == input.inppn || &out.patches == input.inptg || &out.intpn == input.inppn ||
       &out.intpn == input.inptg) {
     // The output would overwrite the input while it is read: compute apart.
@@ -115,6 +151,14 @@ Array refit(const SurfaceInput& input, const Array& patches) {
 
 void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
   check_grid(input);
+  if (input.nocur == 1 || input.nostr == 1) {
+    // A line has no patches: its grid comes from its points and end tangents.
+    check_tangents(input);
+    Surface line;
+    interpolate_line(input, line);
+    intpn = std::move(line.intpn);
+    return;
+  }
   check_patches(input, patches);
   if (&intpn == input.inppn || &intpn == &patches) {
     intpn = refit(input, patches);

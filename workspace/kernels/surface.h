@@ -17,12 +17,15 @@ struct Surface {
   friend bool operator==(const Surface&, const Surface&) = default;
 };
 
-// COONS then FIT. Throws DataError (workspace/kernels/data_error.h) for data that cannot be
-// interpolated: a non-finite coordinate or tangent (naming the point), shapes that do not match.
+// COONS then FIT; for a single curve (NOCUR 1) or stringer (NOSTR 1) the spline of its points,
+// and PATCHES empty ((NOCUR-1) x (NOSTR-1) x 3 x 4 x 4 with a 0). Throws DataError
+// (workspace/kernels/data_error.h) for data that cannot be interpolated: a non-finite coordinate or
+// tangent (naming the point), shapes that do not match.
 Surface interpolate(const SurfaceInput& input);
 
 // FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
-// points are copied bit-exactly to their places in the grid.
+// points are copied bit-exactly to their places in the grid. A single curve or stringer has no
+// patches: its grid is made from INPPN and INPTG again.
 Array refit(const SurfaceInput& input, const Array& patches);
 
 // The same, written into arrays the caller already holds: their memory is reused when it is large

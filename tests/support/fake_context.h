@@ -1,41 +1,51 @@
-// A Context for driving commands in tests: scripted reply lines, a recorded dialogue, a scratch
-// disk.
+// A Context for driving commands in tests: scripted reply lines (split into words by the
+// interpreter's own word splitting), a recorded dialogue, what reaches the terminal, a disk.
 #pragma once
 
 #include <deque>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "commands/command.h"
 #include "commands/context.h"
+#include "interp/words.h"
 
 namespace igds::test {
 
 class FakeContext final : public Context {
  public:
-  explicit FakeContext(std::filesystem::path dir) : disk_(dir) { options_.disk = dir; }
+  explicit FakeContext(std::filesystem::path dir, Workspace workspace = {})
+      : ws(std::move(workspace)), disk_(dir) {
+    opts.disk = dir;
+  }
 
   // Lines the user will type, in order; a line "^C" is Ctrl-C.
   void type(std::vector<std::string> lines) {
     for (auto& l : lines) typed_.push_back(std::move(l));
   }
   // Runs a command line, as the interpreter does (without HELP and READY).
-  void run(const Command& command, int option, std::vector<std::string> words = {}) {
+  // `option` is the option's word, "" for a command without options.
+  void run(const Command& command, std::string_view option, std::vector<std::string> words = {}) {
     pending_ = std::move(words);
-    command.run(*this, option);
+    on_line_ = true;
+    const Choice* chosen = option.empty() ? nullptr : choose(command.options, option);
+    REQUIRE((option.empty() || chosen));
+    command.run(*this, chosen);
   }
 
   Workspace ws;
+  Options opts;                      // the command line's options, as the test sets them
   std::vector<std::string> prompts;  // every prompt shown
   std::vector<std::string> said;     // say() and report() lines
   std::vector<Image> shown;
   int reports = 0;
   int ends = -1;  // end_session: 1 APL, 0 CMS
+  int erases = 0;
+  std::string terminal;  // bytes sent to the terminal as they are
 
   Workspace& workspace() override { return ws; }
-  const Options& options() const override { return options_; }
+  const Options& options() const override { return opts; }
   const Disk& disk() const override { return disk_; }
   std::vector<std::string> ask(const Prompt& prompt) override {
     if (!pending_.empty()) return std::exchange(pending_, {});
@@ -44,33 +54,40 @@ class FakeContext final : public Context {
     std::string line = typed_.front();
     typed_.pop_front();
     if (line == "^C") throw Abandon{};
-    std::vector<std::string> words;
-    std::istringstream in(line);
-    for (std::string w; in >> w;) words.push_back(w);
-    return words;
+    on_line_ = false;
+    // The interpreter's own word splitting: blanks and commas, comments dropped.
+    return split_words(line);
   }
   void unread(std::vector<std::string> words) override {
     words.insert(words.end(), pending_.begin(), pending_.end());
     pending_ = std::move(words);
   }
   bool has_pending() const override { return !pending_.empty(); }
+  bool pending_from_command_line() const override { return !pending_.empty() && on_line_; }
   void say(std::string_view line) override { said.emplace_back(line); }
+  void document(std::string_view text) override {
+    while (!text.empty()) {
+      const auto end = text.find('\n');
+      said.emplace_back(text.substr(0, end));
+      text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    }
+  }
   void report(std::string_view text) override {
     said.emplace_back(text);
     ++reports;
   }
   void show(const ImageRef& image) override { shown.push_back(*image); }
-  void erase() override {}
-  void send_to_terminal(std::string_view) override {}
+  void erase() override { ++erases; }
+  void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
   void end_session(bool apl) override { ends = apl ? 1 : 0; }
 
   std::size_t unread_lines() const { return typed_.size(); }
 
  private:
-  Options options_;
   Disk disk_;
   std::deque<std::string> typed_;
   std::vector<std::string> pending_;
+  bool on_line_ = false;
 };
 
 }  // namespace igds::test

@@ -1,0 +1,359 @@
+#include "devices/tek_screen.h"
+
+#include <algorithm>
+
+namespace igds {
+
+namespace {
+
+// Rows of the dialogue kept on a new page when the old one is full: enough to see the question
+// being answered and the last replies.
+constexpr int carried_rows = 3;
+
+bool blank(char32_t c) {
+  return c == U' ';
+}
+
+}  // namespace
+
+std::u32string utf32(std::string_view s) {
+  std::u32string out;
+  out.reserve(s.size());
+  for (std::size_t i = 0; i < s.size();) {
+    const auto b = static_cast<unsigned char>(s[i]);
+    int extra = b < 0x80             ? 0
+                : (b & 0xE0) == 0xC0 ? 1
+                : (b & 0xF0) == 0xE0 ? 2
+                : (b & 0xF8) == 0xF0 ? 3
+                                     : -1;
+    if (extra < 0 || i + static_cast<std::size_t>(extra) >= s.size() + (extra == 0 ? 1 : 0)) {
+      out += U'\uFFFD';
+      ++i;
+      continue;
+    }
+    char32_t c = extra == 0 ? b : (b & (0x3F >> extra));
+    bool ok = true;
+    for (int k = 1; k <= extra; ++k) {
+      const auto t = static_cast<unsigned char>(s[i + static_cast<std::size_t>(k)]);
+      if ((t & 0xC0) != 0x80) ok = false;
+      c = (c << 6) | (t & 0x3F);
+    }
+    out += ok ? c : U'\uFFFD';
+    i += ok ? static_cast<std::size_t>(extra) + 1 : 1;
+  }
+  return out;
+}
+
+std::string utf8(std::u32string_view text) {
+  std::string out;
+  for (char32_t c : text) {
+    if (c < 0x80) {
+      out += static_cast<char>(c);
+    } else if (c < 0x800) {
+      out += static_cast<char>(0xC0 | (c >> 6));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else if (c < 0x10000) {
+      out += static_cast<char>(0xE0 | (c >> 12));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      out += static_cast<char>(0xF0 | (c >> 18));
+      out += static_cast<char>(0x80 | ((c >> 12) & 0x3F));
+      out += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      out += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  return out;
+}
+
+TekScreen::TekScreen(TekOptions tek, bool dialogue)
+    : options_(tek),
+      unit_(tek.bits == 12 ? 4 : 1),
+      dialogue_(dialogue),
+      tek_(tek.bits),
+      layout_(dialogue ? dialogue_layout() : full_layout()) {}
+
+TekScreen::Flow TekScreen::flow() const {
+  if (picture_ && !in_document_)
+    return {0, layout_.dialogue_top, text_columns, layout_.dialogue_rows};
+  return {0, tek_screen::text_top, text_columns, text_rows};
+}
+
+int TekScreen::rows_per_page() const {
+  return flow().rows;
+}
+
+std::vector<std::u32string> TekScreen::wrap(const std::u32string& line, int columns) {
+  std::vector<std::u32string> rows;
+  const auto width = static_cast<std::size_t>(columns);
+  std::u32string row;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (blank(line[i])) {
+      std::size_t j = i;
+      while (j < line.size() && blank(line[j])) ++j;
+      // Blanks at a break are dropped; blanks that end the line are kept (a prompt's).
+      if (row.size() + (j - i) > width && j < line.size()) {
+        rows.push_back(row);
+        row.clear();
+      } else {
+        row.append(line, i, std::min(j - i, width - std::min(width, row.size())));
+      }
+      i = j;
+      continue;
+    }
+    std::size_t j = i;
+    while (j < line.size() && !blank(line[j])) ++j;
+    std::u32string_view word(line.data() + i, j - i);
+    if (row.size() + word.size() > width && !row.empty()) {
+      // The word goes to the next row; the blanks before it stay behind.
+      while (!row.empty() && blank(row.back())) row.pop_back();
+      rows.push_back(row);
+      row.clear();
+    }
+    while (word.size() > width) {  // a word longer than a row is cut
+      rows.emplace_back(word.substr(0, width));
+      word.remove_prefix(width);
+    }
+    row += word;
+    i = j;
+  }
+  rows.push_back(row);
+  return rows;
+}
+
+int TekScreen::rows_of_lines() const {
+  int n = 0;
+  for (const auto& line : lines_) n += static_cast<int>(wrap(line, flow().columns).size());
+  return n;
+}
+
+int TekScreen::rows_left() const {
+  return flow().rows - rows_of_lines();
+}
+
+void TekScreen::emit(int row, int column, std::u32string_view text) {
+  const Flow f = flow();
+  if (row >= f.rows) return;  // a line longer than the page shows its first rows only
+  const int x = f.x + column * tek_screen::char_width;
+  const int y = f.top - row * tek_screen::line_height;
+  tek_.alpha_at(at(x, y));
+  std::string ascii;
+  // The 4013's alpha characters are 7-bit; what it cannot show is a question mark.
+  for (char32_t c : text) ascii += (c >= 0x20 && c < 0x7F) ? static_cast<char>(c) : '?';
+  tek_.append_text(ascii);
+}
+
+void TekScreen::draw_picture_and_captions() {
+  if (!picture_) return;
+  draw_picture(*picture_, tek_, unit_, layout_);
+  int y = layout_.caption_top;
+  for (const auto& line : captions_) {
+    if (!line.empty()) tek_.text(at(layout_.caption_x, y), line);
+    y -= tek_screen::line_height;
+  }
+}
+
+void TekScreen::new_page() {
+  tek_.page();
+  ++pages_;
+  if (!in_document_) draw_picture_and_captions();
+  int row = 0;
+  for (const auto& line : lines_) {
+    for (const auto& r : wrap(line, flow().columns)) emit(row++, 0, r);
+  }
+  // The alpha cursor where the dialogue goes on.
+  if (!open_) tek_.alpha_at(at(flow().x, flow().top - row * tek_screen::line_height));
+}
+
+void TekScreen::turn_page(int reserve, int carry) {
+  const int columns = flow().columns;
+  std::vector<std::u32string> kept;
+  int rows = 0;
+  std::size_t i = lines_.size();
+  if (open_ && i > 0) {
+    kept.push_back(lines_.back());
+    rows = static_cast<int>(wrap(lines_.back(), columns).size());
+    --i;
+  }
+  int carried = 0;
+  for (; i > 0; --i) {
+    const int n = static_cast<int>(wrap(lines_[i - 1], columns).size());
+    if (carried + n > carry || rows + n + reserve > flow().rows) break;
+    kept.insert(kept.begin(), lines_[i - 1]);
+    carried += n;
+    rows += n;
+  }
+  lines_ = std::move(kept);
+  if (lines_.empty()) open_ = false;
+  new_page();
+}
+
+void TekScreen::make_room(int more) {
+  if (rows_of_lines() + more > flow().rows) turn_page(more, carried_rows);
+}
+
+void TekScreen::append(std::u32string_view text) {
+  if (!open_) {
+    make_room(1);
+    lines_.emplace_back();
+    open_ = true;
+  }
+  const int columns = flow().columns;
+  const auto before = wrap(lines_.back(), columns);
+  lines_.back() += text;
+  const auto after = wrap(lines_.back(), columns);
+  int first = 0;  // the row where the line being written starts
+  for (std::size_t i = 0; i + 1 < lines_.size(); ++i)
+    first += static_cast<int>(wrap(lines_[i], columns).size());
+  if (first + static_cast<int>(after.size()) > flow().rows && first > 0) {
+    turn_page(0, carried_rows);  // the page is full: a new one, with this line whole
+    return;
+  }
+  // What is already on the screen must stay: every row but the last the same, the last a prefix.
+  bool kept = after.size() >= before.size();
+  for (std::size_t r = 0; kept && r < before.size(); ++r) {
+    const bool last = r + 1 == before.size();
+    kept = last ? after[r].compare(0, before[r].size(), before[r]) == 0 : after[r] == before[r];
+  }
+  if (!kept) {
+    new_page();  // a word moved to the next row: a storage tube cannot take it back
+    return;
+  }
+  for (std::size_t r = before.size() - 1; r < after.size(); ++r) {
+    const std::size_t from = r + 1 == before.size() ? before[r].size() : 0;
+    if (from < after[r].size())
+      emit(first + static_cast<int>(r), static_cast<int>(from),
+           std::u32string_view(after[r]).substr(from));
+  }
+}
+
+std::string TekScreen::begin() {
+  tek_.alpha_at(at(flow().x, flow().top));
+  return take();
+}
+
+std::string TekScreen::text(std::string_view text) {
+  typed_.clear();
+  const std::u32string all = utf32(text);
+  std::size_t start = 0;
+  while (start <= all.size()) {
+    const std::size_t end = all.find(U'\n', start);
+    const std::u32string_view piece(all.data() + start,
+                                    (end == std::u32string::npos ? all.size() : end) - start);
+    if (!piece.empty()) append(piece);
+    if (end == std::u32string::npos) break;
+    if (!open_) {  // an empty line
+      make_room(1);
+      lines_.emplace_back();
+      tek_.alpha_at(at(flow().x, flow().top - rows_of_lines() * tek_screen::line_height));
+    }
+    open_ = false;
+    start = end + 1;
+  }
+  return take();
+}
+
+std::string TekScreen::type(std::string_view character) {
+  const std::u32string c = utf32(character);
+  append(c);
+  typed_ += c;
+  return take();
+}
+
+std::string TekScreen::untype() {
+  if (typed_.empty() || !open_ || lines_.empty()) return {};
+  typed_.pop_back();
+  lines_.back().pop_back();
+  new_page();  // a storage tube cannot take a character back: the page is drawn again
+  return take();
+}
+
+std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
+  const bool shown = picture_ && !in_document_;
+  const int needed = static_cast<int>(picture->caption.size()) + (captions_.empty() ? 0 : 1);
+  picture_ = std::move(picture);
+  in_document_ = false;
+  if (!shown || static_cast<int>(captions_.size()) + needed > layout_.caption_rows) {
+    // A picture page, keeping below the picture the last rows of dialogue that fit (one row
+    // stays free for what follows).
+    captions_ = picture_->caption;
+    if (!dialogue_) lines_.clear();
+    open_ = open_ && !lines_.empty();
+    turn_page(1, layout_.dialogue_rows - 1);
+    return take();
+  }
+  // On the page already showing a picture: drawn over it, as a storage tube does, the caption
+  // below the ones in the column.
+  captions_.emplace_back();
+  int y = layout_.caption_top - static_cast<int>(captions_.size()) * tek_screen::line_height;
+  draw_picture(*picture_, tek_, unit_, layout_);
+  for (const auto& line : picture_->caption) {
+    tek_.text(at(layout_.caption_x, y), line);
+    captions_.push_back(line);
+    y -= tek_screen::line_height;
+  }
+  // Back to where the dialogue goes on.
+  const int rows = rows_of_lines();
+  if (open_) {
+    const auto last = wrap(lines_.back(), flow().columns);
+    emit(rows - 1, static_cast<int>(last.back().size()), U"");
+  } else {
+    tek_.alpha_at(at(flow().x, flow().top - rows * tek_screen::line_height));
+  }
+  return take();
+}
+
+std::string TekScreen::erase() {
+  picture_.reset();
+  captions_.clear();
+  lines_.clear();
+  open_ = false;
+  in_document_ = false;
+  new_page();
+  return take();
+}
+
+std::string TekScreen::document_page() {
+  if (!picture_ || in_document_) return {};
+  saved_lines_ = lines_;
+  saved_open_ = open_;
+  in_document_ = true;
+  lines_.clear();
+  open_ = false;
+  new_page();
+  return take();
+}
+
+std::string TekScreen::end_document() {
+  if (!in_document_) return {};
+  in_document_ = false;
+  lines_ = std::move(saved_lines_);
+  open_ = saved_open_;
+  new_page();
+  return take();
+}
+
+std::string TekScreen::repaint() {
+  new_page();
+  return take();
+}
+
+std::vector<TekScreen::Row> TekScreen::rows() const {
+  std::vector<Row> out;
+  if (picture_ && !in_document_) {
+    int y = layout_.caption_top;
+    for (const auto& line : captions_) {
+      if (!line.empty()) out.push_back({layout_.caption_x, y, utf32(line)});
+      y -= tek_screen::line_height;
+    }
+  }
+  const Flow f = flow();
+  int row = 0;
+  for (const auto& line : lines_)
+    for (const auto& r : wrap(line, f.columns))
+      out.push_back({f.x, f.top - row++ * tek_screen::line_height, r});
+  return out;
+}
+
+}  // namespace igds

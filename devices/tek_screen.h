@@ -1,0 +1,115 @@
+// The Tektronix screen as igds manages it (docs/devices.md, "The Tek screen"): the picture in
+// its square, the captions of the DISPLAYs in the column beside it, and the dialogue where
+// neither is, wrapped at word boundaries. Nothing is ever written over anything else on one
+// page: when the dialogue reaches the bottom, a new page is started and what belongs on it (the
+// current picture, its caption, the last lines of dialogue) is drawn again. A storage tube
+// could not do that; xterm's Tek window redraws a page at no cost.
+//
+// The screen is a model: every call returns the bytes that make the terminal show the change,
+// and the model can be read back (tests, picks). It does no input or output itself.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "devices/layout.h"
+#include "devices/tek4013.h"
+#include "devices/terminal.h"
+#include "workspace/drawing/drawing.h"
+
+namespace igds {
+
+class TekScreen {
+ public:
+  // `dialogue`: the dialogue is on this screen too (tek mode); false for the Tek window of
+  // --term xterm, which shows pictures only.
+  TekScreen(TekOptions tek, bool dialogue);
+
+  // The start of a session: the alpha cursor to the first line, nothing erased.
+  std::string begin();
+
+  // Dialogue text, UTF-8; '\n' ends a line. Lines are wrapped at blanks (a word longer than a
+  // line is cut); a new page is started when the page is full.
+  std::string text(std::string_view text);
+  // One character typed on the line being edited (igds echoes what is typed in tek mode), and
+  // taking the last one back. A character that moves a word to the next line, and any erasing,
+  // redraw the page.
+  std::string type(std::string_view character);
+  std::string untype();
+  // The characters typed on the current line since the last text() or end of line.
+  const std::u32string& typed() const { return typed_; }
+
+  // DISPLAY: the picture drawn over what the square shows, its caption below the captions
+  // already in the column; a new page when the dialogue is in the way or the column is full.
+  std::string picture(std::shared_ptr<const Picture> picture);
+  // ERASE: a clean page; the current picture no longer belongs on the screen.
+  std::string erase();
+  // A page of its own for a long text (HELP LONG, a listing) over the full screen, and back to
+  // the page as it was afterwards.
+  std::string document_page();
+  std::string end_document();
+  bool in_document() const { return in_document_; }
+
+  // The same page once more (after a terminal was cleared by something else).
+  std::string repaint();
+
+  // Rows of dialogue still free on the page, and on a new page.
+  int rows_left() const;
+  int rows_per_page() const;
+  bool shows_picture() const { return picture_ != nullptr; }
+
+  // What the page shows: each row of text with the baseline-left point of its first character,
+  // in 4013 points.
+  struct Row {
+    int x = 0, y = 0;
+    std::u32string text;
+  };
+  std::vector<Row> rows() const;
+  int pages() const { return pages_; }  // pages started (ESC FF) so far
+
+ private:
+  struct Flow {
+    int x = 0, top = 0, columns = 0, rows = 0;
+  };
+  Flow flow() const;
+  // `line` wrapped into rows of `columns` characters at blanks.
+  static std::vector<std::u32string> wrap(const std::u32string& line, int columns);
+  int rows_of_lines() const;
+  // Sends the characters of `text` at row `row`, column `column` of the flow.
+  void emit(int row, int column, std::u32string_view text);
+  // The page again: the picture and captions that belong on it, then the dialogue lines.
+  void new_page();
+  // A new page keeping of the dialogue the line being written, whole, and before it the last
+  // lines that fit in `carry` rows, with `reserve` rows free after them.
+  void turn_page(int reserve, int carry);
+  // Room for `more` rows after the last line: a new page if there is not.
+  void make_room(int more);
+  // Appends to the open line and shows the change, redrawing when rows already shown change.
+  void append(std::u32string_view text);
+  void draw_picture_and_captions();
+  std::string take() { return tek_.take(); }
+  DevicePoint at(int x, int y) const { return {unit_ * x, unit_ * y}; }
+
+  TekOptions options_;
+  int unit_;
+  bool dialogue_;
+  TekEncoder tek_;
+  TekLayout layout_;
+  std::shared_ptr<const Picture> picture_;  // the current picture, while it is on the screen
+  std::vector<std::string> captions_;       // the caption column of this page, line by line
+  std::vector<std::u32string> lines_;       // the dialogue of this page, line by line
+  bool open_ = false;                       // the last line is still being written
+  std::u32string typed_;
+  bool in_document_ = false;
+  std::vector<std::u32string> saved_lines_;  // the dialogue before a document
+  bool saved_open_ = false;
+  int pages_ = 0;
+};
+
+// UTF-8 to code points and back (a malformed byte is U+FFFD).
+std::u32string utf32(std::string_view utf8);
+std::string utf8(std::u32string_view text);
+
+}  // namespace igds

@@ -1,0 +1,188 @@
+#include "interp/terminal.h"
+
+#include "devices/tek4013.h"
+
+namespace igds {
+
+namespace {
+
+// xterm: into the Tek window and, at the end, alpha mode and back to the VT window.
+std::string for_xterm(std::string_view bytes) {
+  return "\x1b[?38h" + std::string(bytes) + std::string{tek_us, tek_esc, tek_etx};
+}
+
+constexpr std::string_view more_prompt = "MORE: PRESS RETURN";
+constexpr std::string_view back_prompt = "PRESS RETURN TO GO BACK TO THE PICTURE";
+
+// Control keys of the line editor in tek mode.
+constexpr char backspace = '\b', rubout = 0x7F, kill_line = 0x15, end_of_input = 0x04;
+
+}  // namespace
+
+Terminal::Terminal(TermMode mode, TekOptions tek, Output& out) : mode_(mode), out_(out) {
+  if (mode != TermMode::none) screen_ = std::make_unique<TekScreen>(tek, mode == TermMode::tek);
+}
+
+void Terminal::begin() {
+  if (mode_ == TermMode::tek) out_.write(screen_->begin());
+}
+
+void Terminal::write_dialogue(std::string_view text) {
+  if (mode_ == TermMode::tek)
+    out_.write(screen_->text(text));
+  else
+    out_.write(text);
+}
+
+void Terminal::say(std::string_view line) {
+  write_dialogue(line);
+  write_dialogue("\n");
+}
+
+bool Terminal::wait_for_return() {
+  // Only a person reading needs the pause; a command file goes on.
+  if (!input_ || input_->command_file()) return true;
+  out_.flush();
+  for (;;) {
+    Event e = input_->gives_keys() ? input_->key(std::nullopt) : input_->line("");
+    if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) return false;
+    if (e.kind == Event::Kind::line || e.text == "\r" || e.text == "\n") return true;
+  }
+}
+
+void Terminal::document(std::string_view text) {
+  if (mode_ != TermMode::tek) {
+    while (!text.empty()) {
+      const auto end = text.find('\n');
+      say(text.substr(0, end));
+      text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    }
+    return;
+  }
+  const bool picture = screen_->shows_picture();
+  out_.write(screen_->document_page());
+  bool go_on = true;
+  while (!text.empty() && go_on) {
+    const auto end = text.find('\n');
+    const std::string_view line = text.substr(0, end);
+    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    // The last row of a full page asks for RETURN before the next page.
+    const int rows = static_cast<int>(utf32(line).size()) / text_columns + 1;
+    if (screen_->rows_left() <= rows && !text.empty() && input_ && !input_->command_file()) {
+      say(more_prompt);
+      go_on = wait_for_return();
+      out_.write(screen_->text(""));
+    }
+    say(line);
+  }
+  if (picture) {
+    if (go_on) {
+      say(back_prompt);
+      wait_for_return();
+    }
+    out_.write(screen_->end_document());
+  }
+}
+
+void Terminal::show(std::shared_ptr<const Picture> picture, std::string_view line) {
+  switch (mode_) {
+    case TermMode::tek:
+      out_.write(screen_->picture(std::move(picture)));
+      return;
+    case TermMode::xterm:
+      out_.write(for_xterm(screen_->picture(std::move(picture))));
+      return;
+    case TermMode::none:
+      if (!told_how_to_see_) {
+        told_how_to_see_ = true;
+        say("IMAGES ARE NOT DRAWN ON THIS TERMINAL. TO SEE THEM RUN IGDS IN AN XTERM");
+        say("(xterm -t -e igds), OR WRITE THEM TO FILES WITH EXPORT SVG, TEK OR HPGL.");
+      }
+      say(line);
+      return;
+  }
+}
+
+void Terminal::erase() {
+  switch (mode_) {
+    case TermMode::tek:
+      out_.write(screen_->erase());
+      return;
+    case TermMode::xterm:
+      out_.write(for_xterm(screen_->erase()));
+      return;
+    case TermMode::none:
+      return;
+  }
+}
+
+void Terminal::raw(std::string_view bytes) {
+  out_.write(bytes);
+}
+
+Event Terminal::read_line(std::string_view prompt, std::string_view above) {
+  if (!input_) return {};
+  if (input_->echoes() && !input_->gives_keys()) {
+    // Readline shows READY and the prompt itself.
+    std::string shown = above.empty() ? std::string() : std::string(above) + "\n";
+    out_.flush();
+    return input_->line(shown + std::string(prompt));
+  }
+  if (!above.empty()) say(above);
+  if (input_->gives_keys()) return edit_line(prompt);
+  if (!input_->command_file()) {
+    write_dialogue(prompt);
+    out_.flush();
+    return input_->line(prompt);
+  }
+  out_.flush();
+  Event e = input_->line(prompt);
+  if (e.kind == Event::Kind::line) {
+    // The transcript shows the line after its prompt, as on the screen.
+    std::string shown = std::string(prompt) + e.text;
+    shown.erase(shown.find_last_not_of(" \t") + 1);
+    say(shown);
+  }
+  return e;
+}
+
+Event Terminal::edit_line(std::string_view prompt) {
+  write_dialogue(prompt);
+  std::string line;
+  for (;;) {
+    out_.flush();
+    Event e = input_->key(std::nullopt);
+    if (e.kind != Event::Kind::key) {
+      if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) write_dialogue("\n");
+      return e;
+    }
+    const char c = e.text.empty() ? 0 : e.text[0];
+    if (c == '\r' || c == '\n') {
+      write_dialogue("\n");
+      return {Event::Kind::line, line};
+    }
+    if (c == backspace || c == rubout) {
+      if (line.empty()) continue;
+      // One character back (a UTF-8 character is several bytes).
+      std::size_t cut = line.size() - 1;
+      while (cut > 0 && (static_cast<unsigned char>(line[cut]) & 0xC0) == 0x80) --cut;
+      line.erase(cut);
+      out_.write(screen_->untype());
+      continue;
+    }
+    if (c == kill_line) {
+      while (!screen_->typed().empty()) out_.write(screen_->untype());
+      line.clear();
+      continue;
+    }
+    if (c == end_of_input && line.empty()) {
+      write_dialogue("\n");
+      return {Event::Kind::end, {}};
+    }
+    if (static_cast<unsigned char>(c) < 0x20) continue;  // other control keys do nothing
+    line += e.text;
+    out_.write(screen_->type(e.text));
+  }
+}
+
+}  // namespace igds

@@ -1,0 +1,99 @@
+// The terminal: one object, made at start and handed to whoever needs it, through which
+// everything igds shows and reads goes. It delivers events (a typed line, a key, an interrupt,
+// the end of the input, a timeout) from the input in use, and owns the screen: in the tek and
+// xterm modes a TekScreen (devices/tek_screen.h) that knows what is drawn where; in tek mode on a
+// terminal igds reads keys and echoes them itself, so that it always knows where the next
+// character goes.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "devices/tek_screen.h"
+#include "devices/terminal.h"
+
+namespace igds {
+
+struct Event {
+  enum class Kind { line, key, interrupt, end, timeout };
+  Kind kind = Kind::end;
+  std::string text;  // line: the line, without its end; key: the key's bytes (one character)
+};
+
+// Where input comes from: a command file or a pipe, the keyboard (lines through GNU Readline or
+// keys one by one), or a script in the tests.
+class EventSource {
+ public:
+  virtual ~EventSource() = default;
+  // The next line. Sources that show what is typed themselves (Readline) show `prompt` first;
+  // the others leave the prompt to the terminal.
+  virtual Event line(std::string_view prompt) = 0;
+  // The next key, waiting at most `timeout` (forever when not given); only for sources that give
+  // keys.
+  virtual Event key(std::optional<std::chrono::milliseconds> timeout) = 0;
+  // Keys one by one (a terminal in tek mode): the terminal edits and echoes the line itself.
+  virtual bool gives_keys() const { return false; }
+  // It shows what is typed and its prompts (Readline, a terminal's own echo).
+  virtual bool echoes() const { return false; }
+  // A command file or a pipe: lines are echoed after their prompt so that the output reads like
+  // the session, --strict applies, and nothing waits for a person.
+  virtual bool command_file() const = 0;
+};
+
+// Where output goes: the standard output, or a string in the tests.
+class Output {
+ public:
+  virtual ~Output() = default;
+  virtual void write(std::string_view bytes) = 0;
+  // Everything written so far reaches the terminal (before igds waits for input).
+  virtual void flush() {}
+};
+
+class Terminal {
+ public:
+  Terminal(TermMode mode, TekOptions tek, Output& out);
+
+  TermMode mode() const { return mode_; }
+  // The input in use: the command files one after the other, then the keyboard.
+  void use_input(EventSource* input) { input_ = input; }
+  EventSource* input() const { return input_; }
+  bool command_file() const { return input_ && input_->command_file(); }
+
+  // The start of the session (tek mode: the alpha cursor to the first line).
+  void begin();
+  // A line of dialogue.
+  void say(std::string_view line);
+  // A long text (HELP LONG, listings). In tek mode it gets a page of its own when a picture is
+  // on the screen, and when it is longer than the screen and a person reads it, it stops at
+  // each full page (MORE) and at its end until RETURN.
+  void document(std::string_view text);
+  // DISPLAY: the picture on the screen, or (none mode) `line` saying what it shows.
+  void show(std::shared_ptr<const Picture> picture, std::string_view line);
+  // ERASE.
+  void erase();
+  // Bytes for the terminal as they are (a plotter on the terminal line).
+  void raw(std::string_view bytes);
+
+  // The next line after `prompt`; `above` is a line written before the prompt (READY), which
+  // Readline shows as the first line of its prompt. Ends with Event::line, interrupt or end.
+  Event read_line(std::string_view prompt, std::string_view above = {});
+
+  // The screen of the tek and xterm modes (nullptr in none mode).
+  const TekScreen* screen() const { return screen_.get(); }
+
+ private:
+  void write_dialogue(std::string_view text);
+  Event edit_line(std::string_view prompt);
+  bool wait_for_return();
+
+  TermMode mode_;
+  Output& out_;
+  std::unique_ptr<TekScreen> screen_;
+  EventSource* input_ = nullptr;
+  bool told_how_to_see_ = false;
+};
+
+}  // namespace igds
