@@ -8,6 +8,7 @@
 
 #include "devices/hpgl.h"
 #include "devices/picture.h"
+#include "devices/plot_order.h"
 
 namespace igds {
 
@@ -73,11 +74,13 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
     t.y -= static_cast<int>(std::lround(layout.line));
   }
   const DevicePoint origin{0, 0};
-  std::vector<DevicePath> ordered = plot_order(placed.paths, pen);
+  PathList ordered;
+  plot_order(placed.paths, pen, ordered);
   // Never more pen-up travel than the drawing order.
   if (pen_up_travel(ordered, pen, origin) > pen_up_travel(placed.paths, pen, origin))
-    ordered = placed.paths;
-  for (const auto& path : ordered) draw_path(hpgl, path);
+    for (const auto& path : placed.paths) draw_path(hpgl, path);
+  else
+    for (std::size_t k = 0; k < ordered.size(); ++k) hpgl.polyline(ordered[k]);
   hpgl.finish();
   Plot plot{hpgl.bytes(), hpgl.stats()};
   plot.stats.clipped = clipped;
