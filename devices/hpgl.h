@@ -70,13 +70,5 @@ class HpglEncoder : public Device {
   double travel_units_ = 0;  // pen-up travel in plotter units
 };
 
-// Pen-up travel, in plotter units, of drawing `paths` in this order from `from`, then to `to`.
-double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, DevicePoint to);
-
-// The plot order of spec hpgl.md, Quality of a plot: duplicate segments dropped, paths whose
-// ends meet (two at a point) joined, then paths taken greedily by the nearest end from `start`
-// (reversed when that end is nearer); a path that starts where the last one ended continues it
-// without lifting the pen. Deterministic.
-std::vector<DevicePath> plot_order(const std::vector<DevicePath>& paths, DevicePoint start);
 
 }  // namespace igds

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "devices/hpgl.h"
+#include "devices/plot_order.h"
 
 namespace igds {
 
@@ -83,17 +84,23 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
   for (const auto& p : placed.paths)
     if (std::find(styles.begin(), styles.end(), p.style) == styles.end()) styles.push_back(p.style);
   std::vector<DevicePath> paths;
+  PathList ordered;
+  const DevicePoint origin{0, 0};
   for (const Style& style : styles) {
     paths.clear();
     for (auto& p : placed.paths)
       if (p.style == style) paths.push_back(std::move(p.points));
-    const DevicePoint origin{0, 0};
-    std::vector<DevicePath> ordered = plot_order(paths, pen);
-    // Never more pen-up travel than the drawing order.
-    if (pen_up_travel(ordered, pen, origin) > pen_up_travel(paths, pen, origin)) ordered = paths;
+    plot_order(paths, pen, ordered);
     hpgl.style(style);
-    for (const auto& path : ordered) hpgl.polyline(path);
-    if (!ordered.empty() && !ordered.back().empty()) pen = ordered.back().back();
+    // Never more pen-up travel than the drawing order.
+    if (pen_up_travel(ordered, pen, origin) > pen_up_travel(paths, pen, origin)) {
+      for (const auto& path : paths) hpgl.polyline(path);
+      if (!paths.empty() && !paths.back().empty()) pen = paths.back().back();
+    } else {
+      for (std::size_t k = 0; k < ordered.size(); ++k) hpgl.polyline(ordered[k]);
+      if (ordered.size() > 0 && !ordered[ordered.size() - 1].empty())
+        pen = ordered[ordered.size() - 1].back();
+    }
   }
   for (const auto& t : placed.texts) {
     hpgl.style(t.style);

@@ -1,10 +1,12 @@
 // Size and speed of the device streams for a DISPLAY SURFACE of a 200 x 200 grid (ORTHOGONAL
 // XY): bytes per vector of the 4013 stream and of the HP-GL plot, against gnuplot's tek40xx and
 // hpgl terminals drawing the same grid when gnuplot is installed; pen-up travel of the plot
-// order against the drawing order; encoding speed.
+// order against the drawing order; encoding speed. And the plot order alone on the placed
+// polylines of 1000 x 1000 and 2000 x 2000 grids, against the reference it replaced.
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -17,9 +19,11 @@
 #include "devices/hpgl.h"
 #include "devices/plot.h"
 #include "devices/render.h"
+#include "devices/plot_order.h"
 #include "devices/tek4013.h"
 #include "devices/terminal.h"
 #include "tests/bench/bench.h"
+#include "tests/devices/plot_order_reference.h"
 #include "tests/devices/support.h"
 
 namespace {
@@ -153,4 +157,53 @@ IGDS_BENCH("devices") {
   double p = igds::bench::best_seconds(
       3, [&] { bytes = igds::plot_hpgl(igds::picture_of(im), {}).hpgl.size(); });
   fmt::print("hpgl_plot_ms {:.1f}\n", p * 1e3);
+}
+
+IGDS_BENCH("plot_order") {
+  double ms[2] = {0, 0};
+  std::size_t segments[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const std::size_t n = 1000 * (k + 1);
+    // The polylines PLOT orders: curves then stringers, placed on A4 in plotter units.
+    igds::Picture pic = igds::picture_of(igds::test::devices::flat_grid(n));
+    igds::PlotLayout layout = igds::plot_layout(pic, {});
+    igds::DevicePoint lim = igds::hp7475a.limit(igds::Paper::a4);
+    const igds::Placed styled =
+        igds::place(pic.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)},
+                    {.point = igds::plot_point_mm / igds::hp7475a.unit_mm});
+    struct {
+      std::vector<igds::DevicePath> paths;
+    } placed;
+    for (const auto& p : styled.paths) placed.paths.push_back(p.points);
+    pic = {};
+    for (const auto& p : placed.paths) segments[k] += p.size() - 1;
+    // A fresh output each time, as PLOT has.
+    igds::PathList ordered;
+    ms[k] = 1e3 * igds::bench::best_seconds(3, [&] {
+              ordered = {};
+              igds::plot_order(placed.paths, {0, 0}, ordered);
+            });
+    std::vector<igds::DevicePath> reference;
+    double ref = 1e3 * igds::bench::best_seconds(1, [&] {
+                   reference = igds::test::reference::plot_order(placed.paths, {0, 0});
+                 });
+    bool same = reference.size() == ordered.size();
+    for (std::size_t i = 0; same && i < ordered.size(); ++i)
+      same = std::equal(reference[i].begin(), reference[i].end(), ordered[i].begin(),
+                        ordered[i].end());
+    fmt::print("plot_order_{0}x{0}_segments {1}\n", n, segments[k]);
+    fmt::print("plot_order_{0}x{0}_ms {1:.1f}\n", n, ms[k]);
+    fmt::print("plot_order_{0}x{0}_reference_ms {1:.1f}\n", n, ref);
+    fmt::print("plot_order_{0}x{0}_same_as_reference {1}\n", n, same ? 1 : 0);
+  }
+  // The whole PLOT of the 2000 x 2000 grid: picture, placement, clipping, order, HP-GL.
+  const igds::Image im = igds::test::devices::flat_grid(2000);
+  std::size_t bytes = 0;
+  double plot = igds::bench::best_seconds(
+      2, [&] { bytes = igds::plot_hpgl(igds::picture_of(im), {}).hpgl.size(); });
+  fmt::print("hpgl_plot_2000x2000_ms {:.1f}\n", plot * 1e3);
+  fmt::print("hpgl_plot_2000x2000_mb_per_s {:.1f}\n", double(bytes) / plot / 1e6);
+  // 1.0 when the time grows as the number of segments does.
+  fmt::print("plot_order_time_growth_per_segment_growth {:.2f}\n",
+             (ms[1] / ms[0]) / (double(segments[1]) / double(segments[0])));
 }

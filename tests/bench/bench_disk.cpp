@@ -1,7 +1,7 @@
 // Speed of the disk: the autosave after a CHANGE GRID and after a STATUS-only change (HELP
 // SHORT), the bytes that one writes, and RESTORE, on a surface of 100 x 100 input points with
 // INTCU = INTST = 10 (INTPN 1090 x 1090 x 3, 28.5 MB), in a scratch folder of the system's
-// temporary disk (fsync included).
+// temporary disk (fsync included). And WRITE's card text of the same surface, in MB/s.
 #include <fmt/core.h>
 #include <stdlib.h>
 
@@ -11,6 +11,7 @@
 #include <string>
 
 #include "tests/bench/bench.h"
+#include "workspace/disk/cards.h"
 #include "workspace/disk/disk.h"
 #include "workspace/disk/session.h"
 #include "workspace/kernels/surface.h"
@@ -129,4 +130,13 @@ IGDS_BENCH("disk") {
   fmt::print("restore_100x100_int10_ms {:.3f}\n", restore * 1e3);
   double save = bench::best_seconds(10, [&] { save_surface(disk, "HULL", fine); });
   fmt::print("save_100x100_int10_ms {:.3f}\n", save * 1e3);
+}
+
+IGDS_BENCH("cards") {
+  const Workspace fine = surface(10, 10);  // INTPN 1090 x 1090 x 3
+  std::size_t overflow = 0, bytes = 0;
+  double s = bench::best_seconds(5, [&] { bytes = disk::char_cards(fine, &overflow).size(); });
+  fmt::print("cards_100x100_int10_bytes {}\n", bytes);
+  fmt::print("cards_100x100_int10_ms {:.1f}\n", s * 1e3);
+  fmt::print("cards_100x100_int10_mb_per_s {:.0f}\n", double(bytes) / s / 1e6);
 }

@@ -1,5 +1,7 @@
-// The HP-GL encoder, the plot order and the plot layout (devices/hpgl.h, devices/plot.h).
+// The HP-GL encoder, the plot order and the plot layout (devices/hpgl.h, devices/plot_order.h,
+// devices/plot.h).
 #include "devices/hpgl.h"
+#include "devices/plot_order.h"
 
 #include <doctest/doctest.h>
 

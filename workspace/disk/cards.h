@@ -18,6 +18,11 @@ std::string format_i(long long value, int width);
 // "Infinity", "-Infinity".
 std::string format_f10_3(double value, bool* fits);
 
+// The same fields written at `out`: exactly `width` (put_i) or 10 (put_f10_3) characters, by
+// integer arithmetic. They return false, having written asterisks, when the number does not fit.
+bool put_i(char* out, long long value, int width);
+bool put_f10_3(char* out, double value);
+
 // The whole IGDSCHAR text of `ws`, cards ended by LF; `*overflow` counts F10.3 asterisks.
 std::string char_cards(const Workspace& ws, std::size_t* overflow);
 

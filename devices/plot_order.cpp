@@ -1,0 +1,460 @@
+#include "devices/plot_order.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
+namespace igds {
+
+namespace {
+
+using u64 = std::uint64_t;
+constexpr std::size_t none = std::numeric_limits<std::size_t>::max();
+
+double distance(DevicePoint a, DevicePoint b) {
+  return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
+}
+
+// A sort key and what it belongs to.
+struct Keyed {
+  u64 key, value;
+};
+
+// Asks for transparent huge pages over the whole pages of a large buffer, where the system
+// allows (Linux): on a virtual machine, faulting in 4 KB pages one by one costs more than the
+// sort that fills them. Advice only: a refusal leaves the ordinary pages.
+void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
+#ifdef __linux__
+  const std::uintptr_t page = 4096;
+  const auto from = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
+  const auto to = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
+  if (to > from && to - from >= (std::uintptr_t(1) << 22))
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#endif
+}
+
+template <class T>
+void reserve_large(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
+
+// Room for `size` elements of a trivially copyable T, left unwritten: a sort fills it.
+template <class T>
+struct Buffer {
+  explicit Buffer(std::size_t n) : data(std::make_unique_for_overwrite<T[]>(n)), size(n) {
+    advise_huge_pages(data.get(), n * sizeof(T));
+  }
+  T* begin() const { return data.get(); }
+  std::unique_ptr<T[]> data;
+  std::size_t size;
+};
+
+// Stable LSD radix sort by the low `bits` bits of a key, in passes of at most 11 bits; the
+// keys are counted as the elements are made (add), then sorted (sort).
+class RadixSort {
+ public:
+  explicit RadixSort(int bits)
+      : passes_((std::max(bits, 0) + 10) / 11),
+        digit_(passes_ ? (bits + passes_ - 1) / passes_ : 0),
+        count_(static_cast<std::size_t>(passes_) << digit_, 0) {}
+
+  void add(u64 key) {
+    const std::size_t mask = (std::size_t{1} << digit_) - 1;
+    for (int p = 0; p < passes_; ++p)
+      ++count_[(static_cast<std::size_t>(p) << digit_) + ((key >> (p * digit_)) & mask)];
+  }
+
+  // Sorts the n elements of a, whose keys were added, through `scratch` (as long as a); a pass
+  // whose digit is the same for every element is skipped. Returns a or scratch, whichever holds
+  // the sorted elements.
+  template <class T, class Key>
+  T* sort(T* a, T* scratch, std::size_t n, Key key) {
+    const std::size_t buckets = std::size_t{1} << digit_, mask = buckets - 1;
+    for (int p = 0; p < passes_ && n > 1; ++p) {
+      std::size_t* c = count_.data() + (static_cast<std::size_t>(p) << digit_);
+      if (std::find(c, c + buckets, n) != c + buckets) continue;
+      std::size_t sum = 0;
+      for (std::size_t b = 0; b < buckets; ++b) sum += std::exchange(c[b], sum);
+      const int shift = p * digit_;
+      for (const T* r = a; r != a + n; ++r) scratch[c[(key(*r) >> shift) & mask]++] = *r;
+      std::swap(a, scratch);
+    }
+    return a;
+  }
+
+ private:
+  int passes_, digit_;
+  std::vector<std::size_t> count_;
+};
+
+// Each point of the paths as its place in their bounding box: W * H ids, `bits` wide.
+struct PointIds {
+  long long x0 = 0, y0 = 0;
+  u64 h = 1;
+  int bits = 0;
+
+  explicit PointIds(std::span<const DevicePath> paths) {
+    long long x1 = 0, y1 = 0;
+    bool first = true;
+    for (const auto& path : paths)
+      for (DevicePoint p : path) {
+        if (first) x0 = x1 = p.x, y0 = y1 = p.y, first = false;
+        x0 = std::min<long long>(x0, p.x), x1 = std::max<long long>(x1, p.x);
+        y0 = std::min<long long>(y0, p.y), y1 = std::max<long long>(y1, p.y);
+      }
+    h = static_cast<u64>(y1 - y0) + 1;
+    bits = std::bit_width(static_cast<u64>(x1 - x0) * h + static_cast<u64>(y1 - y0));
+  }
+  u64 operator()(DevicePoint p) const {
+    return static_cast<u64>(p.x - x0) * h + static_cast<u64>(p.y - y0);
+  }
+};
+
+// A run of segments of one input path, points first..last, drawn for the first time.
+struct Piece {
+  std::size_t path, first, last;
+};
+
+// fresh[s] for each segment s of the paths in drawing order: it has a length and was not drawn
+// before in either direction. The segments are sorted by their lower end, and compared by their
+// higher end within each group, first drawn first. Returns the number of fresh segments.
+std::size_t mark_fresh(std::span<const DevicePath> paths, const PointIds& ids,
+                       std::vector<std::uint8_t>& fresh) {
+  std::size_t n = 0;
+  for (const auto& path : paths) n += path.empty() ? 0 : path.size() - 1;
+  reserve_large(fresh, n);
+  fresh.assign(n, 1);
+  std::size_t count = n;
+  auto drop = [&](std::size_t s) { fresh[s] = 0, --count; };
+  if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max()) {
+    struct Segment {
+      std::uint32_t lo, hi, s;
+    };
+    Buffer<Segment> records(n);
+    RadixSort sorter(ids.bits);
+    std::size_t m = 0;
+    std::uint32_t s = 0;
+    for (const auto& path : paths)
+      for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
+        auto a = static_cast<std::uint32_t>(ids(path[i])),
+             b = static_cast<std::uint32_t>(ids(path[i + 1]));
+        if (a == b) {
+          drop(s);
+          continue;
+        }
+        records.data[m++] = {std::min(a, b), std::max(a, b), s};
+        sorter.add(std::min(a, b));
+      }
+    Buffer<Segment> scratch(m);
+    std::span<Segment> segments(sorter.sort(records.begin(), scratch.begin(), m,
+                                            [](const Segment& g) { return u64{g.lo}; }),
+                                m);
+    for (std::size_t i = 0; i < segments.size();) {
+      std::size_t j = i + 1;
+      while (j < segments.size() && segments[j].lo == segments[i].lo) ++j;
+      if (j - i <= 16) {
+        // Few segments share an end: compare each with those drawn before it.
+        for (std::size_t k = i + 1; k < j; ++k)
+          for (std::size_t e = i; e < k; ++e)
+            if (segments[e].hi == segments[k].hi) {
+              drop(segments[k].s);
+              break;
+            }
+      } else {
+        std::sort(segments.begin() + long(i), segments.begin() + long(j),
+                  [](const Segment& a, const Segment& b) {
+                    return a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
+                  });
+        for (std::size_t k = i + 1; k < j; ++k)
+          if (segments[k].hi == segments[k - 1].hi) drop(segments[k].s);
+      }
+      i = j;
+    }
+    return count;
+  }
+  // Coordinates too far apart, or too many segments, for 32-bit ids: a comparison sort.
+  struct Wide {
+    u64 lo, hi, s;
+  };
+  std::vector<Wide> wide;
+  wide.reserve(n);
+  u64 s = 0;
+  for (const auto& path : paths)
+    for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
+      u64 a = ids(path[i]), b = ids(path[i + 1]);
+      if (a == b)
+        drop(s);
+      else
+        wide.push_back({std::min(a, b), std::max(a, b), s});
+    }
+  std::sort(wide.begin(), wide.end(), [](const Wide& a, const Wide& b) {
+    return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
+  });
+  for (std::size_t k = 1; k < wide.size(); ++k)
+    if (wide[k].lo == wide[k - 1].lo && wide[k].hi == wide[k - 1].hi) drop(wide[k].s);
+  return count;
+}
+
+// The ends of the paths to order in a uniform grid of cells, stored flat, for nearest-end
+// queries; end 2j is the first point of path j, 2j + 1 its last.
+class EndGrid {
+ public:
+  EndGrid(std::span<const DevicePoint> ends, DevicePoint start) : ends_(ends) {
+    std::size_t n = ends.size() / 2;
+    x0_ = x1_ = start.x, y0_ = y1_ = start.y;
+    for (DevicePoint e : ends) {
+      x0_ = std::min<long>(x0_, e.x), x1_ = std::max<long>(x1_, e.x);
+      y0_ = std::min<long>(y0_, e.y), y1_ = std::max<long>(y1_, e.y);
+    }
+    long side = std::max<long>(1, static_cast<long>(std::sqrt(static_cast<double>(n))));
+    long span = std::max<long>(x1_ - x0_, y1_ - y0_) + 1;
+    cell_ = std::max<long>(1, (span + side - 1) / side);
+    nx_ = (x1_ - x0_) / cell_ + 1, ny_ = (y1_ - y0_) / cell_ + 1;
+    std::size_t cells = static_cast<std::size_t>(nx_ * ny_);
+    first_.assign(cells + 1, 0);
+    for (DevicePoint e : ends) ++first_[cell_of(e) + 1];
+    for (std::size_t c = 0; c < cells; ++c) first_[c + 1] += first_[c];
+    end_.assign(first_.begin(), first_.end() - 1);
+    slot_.resize(ends.size());
+    where_.resize(ends.size());
+    for (std::size_t id = 0; id < ends.size(); ++id) {
+      std::size_t w = end_[cell_of(ends[id])]++;
+      slot_[w] = id, where_[id] = w;
+    }
+    next_.resize(n + 1), prev_.resize(n + 1);
+    // A list of the paths not yet taken, for the queries that the grid would make slow.
+    for (std::size_t i = 0; i <= n; ++i) next_[i] = (i + 1) % (n + 1), prev_[i] = (i + n) % (n + 1);
+    left_ = n;
+  }
+
+  // The end nearest to q: smallest distance, then smallest id. Rings of cells around q's cell
+  // until no nearer end can be left, or a plain search when the rings would take longer.
+  std::size_t nearest(DevicePoint q) const {
+    Best best;
+    long qx = (q.x - x0_) / cell_, qy = (q.y - y0_) / cell_;
+    std::size_t budget = 4 * left_ + 64, scanned = 0;
+    long rings = std::max(nx_, ny_);
+    for (long r = 0; r <= rings; ++r) {
+      if (best.id != none && r >= 1) {
+        double reach = static_cast<double>((r - 1) * cell_);
+        if (reach * reach > best.d2) break;
+      }
+      for (long cx = qx - r; cx <= qx + r; ++cx)
+        for (long cy = qy - r; cy <= qy + r; ++cy) {
+          if (std::max(std::labs(cx - qx), std::labs(cy - qy)) != r) {
+            cy = qy + r - 1;  // inside the ring: jump to its top row
+            continue;
+          }
+          if (cx < 0 || cy < 0 || cx >= nx_ || cy >= ny_) continue;
+          std::size_t c = static_cast<std::size_t>(cx * ny_ + cy);
+          for (std::size_t w = first_[c]; w < end_[c]; ++w) consider(best, q, slot_[w]);
+          if (++scanned > budget) return brute(q);
+        }
+    }
+    return best.id;
+  }
+
+  void take(std::size_t path) {
+    for (std::size_t id : {2 * path, 2 * path + 1}) {
+      std::size_t last = --end_[cell_of(ends_[id])], w = where_[id];
+      slot_[w] = slot_[last], where_[slot_[w]] = w;
+    }
+    next_[prev_[path]] = next_[path];
+    prev_[next_[path]] = prev_[path];
+    --left_;
+  }
+
+ private:
+  struct Best {
+    double d2 = std::numeric_limits<double>::infinity();
+    std::size_t id = none;
+  };
+
+  void consider(Best& best, DevicePoint q, std::size_t id) const {
+    DevicePoint e = ends_[id];
+    double dx = double(e.x) - q.x, dy = double(e.y) - q.y, d2 = dx * dx + dy * dy;
+    if (d2 < best.d2 || (d2 == best.d2 && id < best.id)) best = {d2, id};
+  }
+
+  std::size_t brute(DevicePoint q) const {
+    Best best;
+    std::size_t n = ends_.size() / 2;
+    for (std::size_t i = next_[n]; i != n; i = next_[i]) {
+      consider(best, q, 2 * i);
+      consider(best, q, 2 * i + 1);
+    }
+    return best.id;
+  }
+
+  std::size_t cell_of(DevicePoint p) const {
+    return static_cast<std::size_t>((p.x - x0_) / cell_ * ny_ + (p.y - y0_) / cell_);
+  }
+
+  std::span<const DevicePoint> ends_;
+  long x0_, x1_, y0_, y1_, cell_, nx_, ny_;
+  std::vector<std::size_t> first_, end_;   // by cell: its slots, and the end of the live ones
+  std::vector<std::size_t> slot_, where_;  // the ends by cell; the slot of each end
+  std::vector<std::size_t> next_, prev_;
+  std::size_t left_ = 0;
+};
+
+}  // namespace
+
+double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, DevicePoint to) {
+  double travel = 0;
+  DevicePoint at = from;
+  for (const auto& path : paths) {
+    if (path.empty()) continue;
+    travel += distance(at, path.front());
+    at = path.back();
+  }
+  return travel + distance(at, to);
+}
+
+double pen_up_travel(const PathList& paths, DevicePoint from, DevicePoint to) {
+  double travel = 0;
+  DevicePoint at = from;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    auto path = paths[k];
+    if (path.empty()) continue;
+    travel += distance(at, path.front());
+    at = path.back();
+  }
+  return travel + distance(at, to);
+}
+
+void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& out) {
+  out.clear();
+  const PointIds ids(paths);
+  std::vector<std::uint8_t> fresh;
+  const std::size_t segments = mark_fresh(paths, ids, fresh);
+  if (segments == 0) return;
+
+  // The pieces: runs of fresh segments within a path.
+  std::vector<Piece> pieces;
+  std::size_t s = 0;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    bool in_run = false;
+    for (std::size_t i = 0; i + 1 < paths[k].size(); ++i, ++s) {
+      if (!fresh[s])
+        in_run = false;
+      else if (in_run)
+        pieces.back().last = i + 1;
+      else
+        pieces.push_back({k, i, i + 1}), in_run = true;
+    }
+  }
+  std::vector<std::uint8_t>().swap(fresh);
+  // End e of the pieces: the first point of piece e / 2 when e is even, its last when odd.
+  auto end_point = [&](std::size_t e) {
+    const Piece& p = pieces[e / 2];
+    return paths[p.path][e % 2 ? p.last : p.first];
+  };
+
+  // Pieces whose ends meet, two at a point and no more, are joined (a point where three or more
+  // ends meet is left to the ordering): mate[e] is the one other end at e's point.
+  const std::size_t n_ends = 2 * pieces.size();
+  std::vector<std::size_t> mate(n_ends, none);
+  {
+    Buffer<Keyed> records(n_ends), scratch(n_ends);
+    RadixSort sorter(ids.bits);
+    for (std::size_t e = 0; e < n_ends; ++e) {
+      records.data[e] = {ids(end_point(e)), e};
+      sorter.add(records.data[e].key);
+    }
+    const Keyed* keyed =
+        sorter.sort(records.begin(), scratch.begin(), n_ends, [](const Keyed& k) { return k.key; });
+    for (std::size_t i = 0; i < n_ends;) {
+      std::size_t j = i + 1;
+      while (j < n_ends && keyed[j].key == keyed[i].key) ++j;
+      if (j - i == 2)
+        mate[keyed[i].value] = keyed[i + 1].value, mate[keyed[i + 1].value] = keyed[i].value;
+      i = j;
+    }
+  }
+  // The joined paths, each a run of refs: ref r is piece r / 2, reversed when r is odd (so its
+  // first point is end_point(r) and its last end_point(r ^ 1)). Each starts at the earliest
+  // piece not yet used, the pieces following its last point then those before its first.
+  std::vector<std::size_t> refs, joined{0}, after, before;
+  refs.reserve(pieces.size());
+  std::vector<std::uint8_t> used(pieces.size(), 0);
+  auto chain = [&](std::size_t p, std::size_t e, std::vector<std::size_t>& ids_out) {
+    ids_out.clear();
+    for (std::size_t other = mate[e]; other != none; other = mate[e]) {
+      if (other / 2 == p || used[other / 2]) break;
+      used[other / 2] = 1;
+      ids_out.push_back(other);
+      e = other ^ 1;
+    }
+  };
+  for (std::size_t p = 0; p < pieces.size(); ++p) {
+    if (used[p]) continue;
+    used[p] = 1;
+    chain(p, 2 * p + 1, after);
+    chain(p, 2 * p, before);
+    // A piece before p is entered from p's side: drawn towards p, the other way round.
+    for (std::size_t k = before.size(); k-- > 0;) refs.push_back(before[k] ^ 1);
+    refs.push_back(2 * p);
+    refs.insert(refs.end(), after.begin(), after.end());
+    joined.push_back(refs.size());
+  }
+  std::vector<std::uint8_t>().swap(used);
+  std::vector<std::size_t>().swap(mate);
+
+  // The greedy order by nearest end over the joined paths.
+  const std::size_t m = joined.size() - 1;
+  std::vector<DevicePoint> ends(2 * m);
+  for (std::size_t j = 0; j < m; ++j) {
+    ends[2 * j] = end_point(refs[joined[j]]);
+    ends[2 * j + 1] = end_point(refs[joined[j + 1] - 1] ^ 1);
+  }
+  EndGrid grid(ends, start);
+  reserve_large(out.points, segments + m);
+  auto emit = [&](std::size_t r, bool skip_first) {
+    const Piece& p = pieces[r / 2];
+    auto begin = paths[p.path].begin();
+    std::size_t first = p.first, last = p.last;
+    if (r % 2 == 0)
+      out.points.insert(out.points.end(), begin + long(first + skip_first), begin + long(last + 1));
+    else
+      out.points.insert(out.points.end(),
+                        std::make_reverse_iterator(begin + long(last + 1 - skip_first)),
+                        std::make_reverse_iterator(begin + long(first)));
+  };
+  DevicePoint at = start;
+  for (std::size_t k = 0; k < m; ++k) {
+    std::size_t id = grid.nearest(at), j = id / 2;
+    grid.take(j);
+    // Ends that meet make one path: the pen stays down.
+    bool goes_on = !out.points.empty() && out.points.back() == ends[id];
+    if (!goes_on && !out.points.empty()) out.starts.push_back(out.points.size());
+    bool skip = goes_on;
+    if (id % 2 == 0)
+      for (std::size_t i = joined[j]; i < joined[j + 1]; ++i, skip = true) emit(refs[i], skip);
+    else
+      for (std::size_t i = joined[j + 1]; i-- > joined[j]; skip = true) emit(refs[i] ^ 1, skip);
+    at = ends[id ^ 1];
+  }
+  out.starts.push_back(out.points.size());
+}
+
+std::vector<DevicePath> plot_order(const std::vector<DevicePath>& paths, DevicePoint start) {
+  PathList list;
+  plot_order(paths, start, list);
+  std::vector<DevicePath> out;
+  out.reserve(list.size());
+  for (std::size_t k = 0; k < list.size(); ++k) out.emplace_back(list[k].begin(), list[k].end());
+  return out;
+}
+
+}  // namespace igds
