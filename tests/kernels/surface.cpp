@@ -368,7 +368,8 @@ TEST_CASE("non-finite points and tangents are refused, naming the point") {
 
 TEST_CASE("sizes and shapes that do not match are refused") {
   Grid g = wavy_grid(3, 4, 20);
-  CHECK(error_of({1, 4, 0, 0, &g.inppn, &g.inptg}) == "the grid is too small");
+  CHECK(error_of({1, 1, 0, 0, &g.inppn, &g.inptg}) == "the grid is too small");
+  CHECK(error_of({0, 4, 0, 0, &g.inppn, &g.inptg}) == "the grid is too small");
   CHECK(error_of({3, 4, -1, 0, &g.inppn, &g.inptg}) == "INTCU or INTST is negative");
   CHECK(error_of({3, 4, 0, 0, nullptr, &g.inptg}) == "INPPN is missing");
   CHECK(error_of({3, 4, 0, 0, &g.inppn, nullptr}) == "INPTG is missing");
@@ -483,4 +484,39 @@ TEST_CASE("an output that is also an input is computed apart") {
   aliased.intpn = h.inppn;
   interpolate_into(in, aliased);
   CHECK(aliased == s);
+}
+
+TEST_CASE("a single curve or stringer is the spline of its points, without patches") {
+  for (bool curve : {true, false}) {
+    const int n = 4, inserted = 2;
+    Grid g = wavy_grid(curve ? 1 : n, curve ? n : 1, 40);
+    Surface s = run(g, curve ? 7 : inserted, curve ? inserted : 7);  // the other density is moot
+    const std::size_t count = n + inserted * (n - 1);
+    CHECK(s.intpn.shape ==
+          (curve ? std::vector<std::size_t>{1, count, 3} : std::vector<std::size_t>{count, 1, 3}));
+    CHECK(s.patches.size() == 0);
+    CHECK(s.patches.shape ==
+          std::vector<std::size_t>{curve ? 0u : n - 1u, curve ? n - 1u : 0u, 3, 4, 4});
+    // The line's end tangents: INPTG rows 0 and 1 for a curve, 2 NOCUR and 2 NOCUR + 1 for a
+    // stringer.
+    const std::size_t row = curve ? 0 : 2 * n;
+    const double* t = g.inptg.data();
+    const Vec3 first{t[4 * row], t[4 * row + 1], t[4 * row + 2]};
+    const Vec3 last{t[4 * row + 4], t[4 * row + 5], t[4 * row + 6]};
+    std::vector<Vec3> tangents(n);
+    spline_tangents(as_vec3(std::as_const(g.inppn)), first, last, tangents);
+    const auto pts = as_vec3(std::as_const(g.inppn));
+    const auto grid = as_vec3(std::as_const(s.intpn));
+    for (int k = 0; k < n; ++k) CHECK(Vec3(grid[std::size_t(k) * (inserted + 1)]) == pts[k]);
+    for (int k = 0; k + 1 < n; ++k)
+      for (int a = 1; a <= inserted; ++a) {
+        const Vec3 expected = spline_arc_point(pts[k], pts[k + 1], tangents[k], tangents[k + 1],
+                                               double(a) / (inserted + 1));
+        CHECK(distance(grid[std::size_t(k) * (inserted + 1) + a], expected) < 1e-12);
+      }
+    // CHANGE GRID on a line makes the grid again from the points.
+    Array again = refit({g.nocur, g.nostr, curve ? 0 : 1, curve ? 1 : 0, &g.inppn, &g.inptg},
+                        s.patches);
+    CHECK(again.shape[curve ? 1 : 0] == std::size_t(n + (n - 1)));
+  }
 }

@@ -1,5 +1,7 @@
 #include "workspace/kernels/coons.h"
 
+#include <cassert>
+
 #include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/spline.h"
@@ -45,12 +47,18 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
 }
 
 void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
-                   Array& patches) {
+                   Array& patches, Vec3View twists) {
   const std::size_t nc = nocur, ns = nostr;
   const std::size_t count = (nc - 1) * (ns - 1) * 48;
   reuse_for_output(patches, {nc - 1, ns - 1, 3, 4, 4}, threads_for(count));
   const auto& tu = tangents.along_curves;
   const auto& tv = tangents.along_stringers;
+  const bool per_chord = tangents.units == TangentUnits::per_chord;
+  // The factor of the tangents of an arc: its chord (math.md), or 1 for tangents per unit of
+  // parameter, 0 on a zero-length arc either way so that the arc is its point.
+  auto scale = [per_chord](double chord) { return per_chord ? chord : chord > 0 ? 1.0 : 0.0; };
+  assert(twists.empty() || twists.size() == nc * ns);
+  auto twist = [&](std::size_t k) { return twists.empty() ? Vec3{} : Vec3(twists[k]); };
   auto patch_rows = [&](std::size_t first, std::size_t last) {
     double* m = patches.data() + first * (ns - 1) * 48;
     for (std::size_t i = first; i < last; ++i) {
@@ -58,15 +66,16 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
         const std::size_t k00 = i * ns + j, k10 = k00 + 1, k01 = k00 + ns, k11 = k01 + 1;
         // P(a,b) = P[i+b][j+a]; Pu(a,b) is scaled by the chord of curve i+b's arc j, Pv(a,b) by
         // the chord of stringer j+a's arc i (math.md), the same chords the splines used.
-        const double lu0 = chord_length(points[k00], points[k10]);
-        const double lu1 = chord_length(points[k01], points[k11]);
-        const double lv0 = chord_length(points[k00], points[k01]);
-        const double lv1 = chord_length(points[k10], points[k11]);
+        const double lu0 = scale(chord_length(points[k00], points[k10]));
+        const double lu1 = scale(chord_length(points[k01], points[k11]));
+        const double lv0 = scale(chord_length(points[k00], points[k01]));
+        const double lv1 = scale(chord_length(points[k10], points[k11]));
+        // The twists T(a,b) of corner P(a,b) fill the lower right block (marks.md).
         const Vec3 rows[4][4] = {
             {points[k00], points[k01], lv0 * tv[k00], lv0 * tv[k01]},
             {points[k10], points[k11], lv1 * tv[k10], lv1 * tv[k11]},
-            {lu0 * tu[k00], lu1 * tu[k01], Vec3{}, Vec3{}},
-            {lu0 * tu[k10], lu1 * tu[k11], Vec3{}, Vec3{}},
+            {lu0 * tu[k00], lu1 * tu[k01], twist(k00), twist(k01)},
+            {lu0 * tu[k10], lu1 * tu[k11], twist(k10), twist(k11)},
         };
         for (int r = 0; r < 4; ++r) {
           for (int c = 0; c < 4; ++c) {

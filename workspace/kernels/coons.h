@@ -10,11 +10,17 @@
 
 namespace igds {
 
-// Tangents per unit of chord length at every input point, NOCUR x NOSTR in point-number order:
-// along the curves (the rows) and along the stringers (the columns).
+// What a tangent is measured against: IGDS's splines give tangents per unit of chord length, which
+// PATCHES scales by the chord of each arc (math.md); Marks's tangents (marks.h) are already per
+// unit of the patch parameter and go into PATCHES as they are.
+enum class TangentUnits { per_chord, per_parameter };
+
+// Tangents at every input point, NOCUR x NOSTR in point-number order: along the curves (the rows)
+// and along the stringers (the columns).
 struct GridTangents {
   std::vector<Vec3> along_curves;
   std::vector<Vec3> along_stringers;
+  TangentUnits units = TangentUnits::per_chord;
 };
 
 // The border tangent of INPTG row `row` (x y z; column 4, the point number, is not used: the
@@ -26,9 +32,12 @@ Vec3 border_tangent(const Array& inptg, std::size_t row);
 GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg);
 
 // PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of math.md,
-// corners, then tangents scaled by the chord length of their arc, zero twists. Written into
-// `patches`, whose memory is reused when it is large enough (large_array.h).
+// corners, then the tangents (per_chord: scaled by the chord length of their arc; per_parameter:
+// as they are, but zero along a zero-length arc, which is its point), then the twists: `twists`
+// holds one per input point (per unit of both patch parameters, marks.md), or is empty for the
+// zero twists of the manual. Written into `patches`, whose memory is reused when it is large
+// enough (large_array.h).
 void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
-                   Array& patches);
+                   Array& patches, Vec3View twists = {});
 
 }  // namespace igds
