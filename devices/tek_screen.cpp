@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "devices/tek_glyphs.h"
+
 namespace igds {
 
 namespace {
@@ -135,18 +137,48 @@ int TekScreen::rows_left() const {
 void TekScreen::emit(int row, int column, std::u32string_view text) {
   const Flow f = flow();
   if (row >= f.rows) return;  // a line longer than the page shows its first rows only
-  const int x = f.x + column * tek_screen::char_width;
+  int x = f.x + column * tek_screen::char_width;
   const int y = f.top - row * tek_screen::line_height;
-  tek_.alpha_at(at(x, y));
+  // Runs of 7-bit characters in alpha mode; an APL symbol (the 4013 had them, xterm's Tek
+  // window has not) drawn as strokes in its cell; anything else a question mark.
   std::string ascii;
-  // The 4013's alpha characters are 7-bit; what it cannot show is a question mark.
-  for (char32_t c : text) ascii += (c >= 0x20 && c < 0x7F) ? static_cast<char>(c) : '?';
-  tek_.append_text(ascii);
+  int run_x = x;
+  auto flush = [&] {
+    if (ascii.empty()) return;
+    // Where the alpha cursor already is (the next character of a line being typed), nothing
+    // needs to move it.
+    if (!(cursor_ && *cursor_ == DevicePoint{run_x, y})) tek_.alpha_at(at(run_x, y));
+    tek_.append_text(ascii);
+    cursor_ = DevicePoint{run_x + static_cast<int>(ascii.size()) * tek_screen::char_width, y};
+    ascii.clear();
+  };
+  for (char32_t c : text) {
+    if (c >= 0x80 && has_tek_glyph(c)) {
+      flush();
+      draw_tek_glyph(tek_, at(x, y), c, unit_);
+      cursor_.reset();
+    } else {
+      if (ascii.empty()) run_x = x;
+      ascii += (c >= 0x20 && c < 0x7F) ? static_cast<char>(c) : '?';
+    }
+    x += tek_screen::char_width;
+  }
+  flush();
+  // The alpha cursor where the next character goes.
+  move_cursor(x, y);
+}
+
+void TekScreen::move_cursor(int x, int y) {
+  if (cursor_ && *cursor_ == DevicePoint{x, y}) return;
+  tek_.alpha_at(at(x, y));
+  cursor_ = DevicePoint{x, y};
 }
 
 void TekScreen::draw_picture_and_captions() {
   if (!picture_) return;
+  for (const auto& p : overlaid_) draw_picture(*p, tek_, unit_, layout_);
   draw_picture(*picture_, tek_, unit_, layout_);
+  cursor_.reset();
   int y = layout_.caption_top;
   for (const auto& line : captions_) {
     if (!line.empty()) tek_.text(at(layout_.caption_x, y), line);
@@ -155,6 +187,7 @@ void TekScreen::draw_picture_and_captions() {
 }
 
 void TekScreen::new_page() {
+  cursor_.reset();
   tek_.page();
   ++pages_;
   if (!in_document_) draw_picture_and_captions();
@@ -163,10 +196,13 @@ void TekScreen::new_page() {
     for (const auto& r : wrap(line, flow().columns)) emit(row++, 0, r);
   }
   // The alpha cursor where the dialogue goes on.
-  if (!open_) tek_.alpha_at(at(flow().x, flow().top - row * tek_screen::line_height));
+  if (!open_) move_cursor(flow().x, flow().top - row * tek_screen::line_height);
 }
 
 void TekScreen::turn_page(int reserve, int carry) {
+  // A new page shows the current picture alone, with its caption.
+  overlaid_.clear();
+  if (picture_) captions_ = picture_->caption;
   const int columns = flow().columns;
   std::vector<std::u32string> kept;
   int rows = 0;
@@ -229,7 +265,7 @@ void TekScreen::append(std::u32string_view text) {
 }
 
 std::string TekScreen::begin() {
-  tek_.alpha_at(at(flow().x, flow().top));
+  move_cursor(flow().x, flow().top);
   return take();
 }
 
@@ -246,7 +282,7 @@ std::string TekScreen::text(std::string_view text) {
     if (!open_) {  // an empty line
       make_room(1);
       lines_.emplace_back();
-      tek_.alpha_at(at(flow().x, flow().top - rows_of_lines() * tek_screen::line_height));
+      move_cursor(flow().x, flow().top - rows_of_lines() * tek_screen::line_height);
     }
     open_ = false;
     start = end + 1;
@@ -272,19 +308,20 @@ std::string TekScreen::untype() {
 std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
   const bool shown = picture_ && !in_document_;
   const int needed = static_cast<int>(picture->caption.size()) + (captions_.empty() ? 0 : 1);
+  if (shown) overlaid_.push_back(picture_);
   picture_ = std::move(picture);
   in_document_ = false;
   if (!shown || static_cast<int>(captions_.size()) + needed > layout_.caption_rows) {
     // A picture page, keeping below the picture the last rows of dialogue that fit (one row
     // stays free for what follows).
-    captions_ = picture_->caption;
     if (!dialogue_) lines_.clear();
     open_ = open_ && !lines_.empty();
-    turn_page(1, layout_.dialogue_rows - 1);
+    turn_page(1, carried_rows);
     return take();
   }
   // On the page already showing a picture: drawn over it, as a storage tube does, the caption
   // below the ones in the column.
+  cursor_.reset();
   captions_.emplace_back();
   int y = layout_.caption_top - static_cast<int>(captions_.size()) * tek_screen::line_height;
   draw_picture(*picture_, tek_, unit_, layout_);
@@ -299,13 +336,14 @@ std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
     const auto last = wrap(lines_.back(), flow().columns);
     emit(rows - 1, static_cast<int>(last.back().size()), U"");
   } else {
-    tek_.alpha_at(at(flow().x, flow().top - rows * tek_screen::line_height));
+    move_cursor(flow().x, flow().top - rows * tek_screen::line_height);
   }
   return take();
 }
 
 std::string TekScreen::erase() {
   picture_.reset();
+  overlaid_.clear();
   captions_.clear();
   lines_.clear();
   open_ = false;
@@ -330,6 +368,13 @@ std::string TekScreen::end_document() {
   in_document_ = false;
   lines_ = std::move(saved_lines_);
   open_ = saved_open_;
+  new_page();
+  return take();
+}
+
+std::string TekScreen::clear() {
+  lines_.clear();
+  open_ = false;
   new_page();
   return take();
 }

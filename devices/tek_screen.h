@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -54,6 +55,9 @@ class TekScreen {
 
   // The same page once more (after a terminal was cleared by something else).
   std::string repaint();
+  // A new page without the dialogue (the picture stays when it is shown): the next page of a
+  // long text.
+  std::string clear();
 
   // Rows of dialogue still free on the page, and on a new page.
   int rows_left() const;
@@ -89,6 +93,8 @@ class TekScreen {
   // Appends to the open line and shows the change, redrawing when rows already shown change.
   void append(std::u32string_view text);
   void draw_picture_and_captions();
+  // The alpha cursor to (x, y) in 4013 points, unless it is there already.
+  void move_cursor(int x, int y);
   std::string take() { return tek_.take(); }
   DevicePoint at(int x, int y) const { return {unit_ * x, unit_ * y}; }
 
@@ -98,14 +104,18 @@ class TekScreen {
   TekEncoder tek_;
   TekLayout layout_;
   std::shared_ptr<const Picture> picture_;  // the current picture, while it is on the screen
-  std::vector<std::string> captions_;       // the caption column of this page, line by line
-  std::vector<std::u32string> lines_;       // the dialogue of this page, line by line
-  bool open_ = false;                       // the last line is still being written
+  // Pictures drawn on this page before the current one (DISPLAYs one over the other): a page
+  // drawn again shows them too; a new page only the current one.
+  std::vector<std::shared_ptr<const Picture>> overlaid_;
+  std::vector<std::string> captions_;  // the caption column of this page, line by line
+  std::vector<std::u32string> lines_;  // the dialogue of this page, line by line
+  bool open_ = false;                  // the last line is still being written
   std::u32string typed_;
   bool in_document_ = false;
   std::vector<std::u32string> saved_lines_;  // the dialogue before a document
   bool saved_open_ = false;
   int pages_ = 0;
+  std::optional<DevicePoint> cursor_;  // where the alpha cursor is, in 4013 points, when known
 };
 
 // UTF-8 to code points and back (a malformed byte is U+FFFD).

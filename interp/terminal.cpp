@@ -40,14 +40,19 @@ void Terminal::say(std::string_view line) {
 }
 
 bool Terminal::wait_for_return() {
-  // Only a person reading needs the pause; a command file goes on.
-  if (!input_ || input_->command_file()) return true;
+  // Only a person reading needs the pause; a command file goes on, and so does a person who has
+  // already typed on.
+  if (!input_ || input_->command_file() || !typed_ahead_.empty()) return true;
   out_.flush();
-  for (;;) {
-    Event e = input_->gives_keys() ? input_->key(std::nullopt) : input_->line("");
-    if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) return false;
-    if (e.kind == Event::Kind::line || e.text == "\r" || e.text == "\n") return true;
+  if (!input_->gives_keys()) {
+    const Event e = input_->line("");
+    return e.kind == Event::Kind::line;
   }
+  // Any key goes on; one that is not RETURN is the first of the next line.
+  const Event e = input_->key(std::nullopt);
+  if (e.kind != Event::Kind::key) return false;
+  if (e.text != "\r" && e.text != "\n") typed_ahead_.push_back(e.text);
+  return true;
 }
 
 void Terminal::document(std::string_view text) {
@@ -71,12 +76,13 @@ void Terminal::document(std::string_view text) {
     if (screen_->rows_left() <= rows && !text.empty() && input_ && !input_->command_file()) {
       say(more_prompt);
       go_on = wait_for_return();
-      out_.write(screen_->text(""));
+      out_.write(screen_->clear());
     }
     say(line);
   }
   if (picture) {
-    if (go_on) {
+    // A person reads the text before the picture comes back; a command file goes on.
+    if (go_on && input_ && !input_->command_file()) {
       say(back_prompt);
       wait_for_return();
     }
@@ -151,7 +157,13 @@ Event Terminal::edit_line(std::string_view prompt) {
   std::string line;
   for (;;) {
     out_.flush();
-    Event e = input_->key(std::nullopt);
+    Event e;
+    if (!typed_ahead_.empty()) {
+      e = {Event::Kind::key, std::move(typed_ahead_.front())};
+      typed_ahead_.erase(typed_ahead_.begin());
+    } else {
+      e = input_->key(std::nullopt);
+    }
     if (e.kind != Event::Kind::key) {
       if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) write_dialogue("\n");
       return e;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "devices/tek_screen.h"
 #include "devices/terminal.h"
@@ -94,6 +95,7 @@ class Terminal {
   std::unique_ptr<TekScreen> screen_;
   EventSource* input_ = nullptr;
   bool told_how_to_see_ = false;
+  std::vector<std::string> typed_ahead_;  // keys typed at a pause, for the next line
 };
 
 }  // namespace igds

@@ -213,7 +213,7 @@ TEST_CASE("EXPORT: IMAGE NOT FOUND, INCORRECT PARAMETER, a full disk keeps the o
   for (std::vector<std::string> words :
        std::vector<std::vector<std::string>>{{"../X"}, {"TOOLONGNAME"}, {"A.B"}, {"A", "B"}})
     CHECK(report_of([&] { ctx.run(export_command, "TEK", words); }) ==
-          reports::incorrect_parameter);
+          "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _");
   CHECK(std::filesystem::is_empty(dir.path()));
   ctx.run(export_command, "HPGL", {"KEEP"});
   std::string old = read_file(dir.path() / "KEEP.HPGL");

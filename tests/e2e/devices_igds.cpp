@@ -7,6 +7,7 @@
 
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
+#include "tests/support/tek_decoder.h"
 
 namespace igds::test::devices {
 
@@ -50,12 +51,6 @@ RunResult tek2plot(const std::filesystem::path& file) {
   return run({"tek2plot", "-T", "svg", file.string()}, options);
 }
 
-bool contains(const std::vector<DevicePath>& all, const std::vector<DevicePath>& part) {
-  for (const auto& p : part)
-    if (std::find(all.begin(), all.end(), p) == all.end()) return false;
-  return true;
-}
-
 }  // namespace
 
 TEST_CASE("igds --term tek: the whole session is a 4013 stream tek2plot renders") {
@@ -68,25 +63,40 @@ TEST_CASE("igds --term tek: the whole session is a 4013 stream tek2plot renders"
   RunResult t = tek2plot(disk.path() / "out.tek");
   CHECK(t.status == 0);
   CHECK(t.err == "");
-  CHECK(!svg_paths(t.out).empty());
-  auto session = decode_tek(r.out, 10);
-  CHECK(session.pages == 1);  // ERASE; DISPLAY never erases
-  // The last DISPLAY is what EXPORT TEK wrote: every one of its vectors is in the session.
+  // Page by page, nothing over anything, nothing off the screen.
+  const TekDrawing pages = test::decode_tek(r.out);
+  RunOptions options;
+  options.timeout_seconds = 60;
+  RunResult last_page =
+      run({"tek2plot", "-T", "svg", "--page-number", std::to_string(pages.pages.size() - 1),
+           (disk.path() / "out.tek").string()},
+          options);
+  CHECK(last_page.status == 0);
+  CHECK(!svg_paths(last_page.out).empty());
+  CHECK(pages.errors.empty());
+  for (const auto& page : pages.pages)
+    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
+  // The last DISPLAY is the one EXPORT TEK wrote, in the square of the screen that keeps the
+  // dialogue below it: the same picture, drawn by the same code, smaller.
   std::string exported = read_file(disk.path() / "HULL.TEK");
   auto image = decode_tek(exported, 10);
   CHECK(image.pages == 1);
   CHECK(!image.paths.empty());
-  CHECK(contains(session.paths, image.paths));
+  const auto& last = pages.pages.back();
+  CHECK(!last.segments.empty());
+  for (const auto& s : last.segments)
+    for (const TekPoint& p : {s.a, s.b}) CHECK((p.x <= 583 && p.y >= 184 && p.y <= 767));
   CHECK(r.out.find("SURFACE") != std::string::npos);
   CHECK(r.out.find("ISOMETRIC") != std::string::npos);
   RunResult e = tek2plot(disk.path() / "HULL.TEK");
   CHECK(e.status == 0);
   CHECK(e.err == "");
-  // READY after a DISPLAY comes at the text column, below the description.
-  auto ready = std::find_if(session.texts.begin(), session.texts.end(), [](const auto& t) {
-    return t.second.rfind("READY", 0) == 0 && t.first.x == 780;
-  });
-  CHECK(ready != session.texts.end());
+  // READY after a DISPLAY comes in the dialogue below the picture; the caption beside it.
+  CHECK(std::any_of(last.texts.begin(), last.texts.end(), [](const TekText& t) {
+    return t.text == "READY" && t.at.x == 0 && t.at.y <= 160;
+  }));
+  CHECK(std::any_of(last.texts.begin(), last.texts.end(),
+                    [](const TekText& t) { return t.text == "ISOMETRIC" && t.at.x == 600; }));
 }
 
 TEST_CASE("igds: EXPORT and PLOT files read by xmllint and hp2xx, the PLOT summary") {
@@ -134,7 +144,17 @@ TEST_CASE("igds --tek 4014: 12-bit addresses, still read by tek2plot") {
   for (const auto& p : image.paths)
     for (auto q : p) largest = std::max({largest, q.x, q.y});
   CHECK(largest > 1023);
-  CHECK(contains(decode_tek(r.out, 12).paths, image.paths));
+  // The session at 12 bits is the session at 10 bits, four times finer.
+  RunResult r10 = run_session(disk, {"--term", "tek", "--tek", "4013"});
+  const auto fine = decode_tek(r.out, 12), coarse = decode_tek(r10.out, 10);
+  REQUIRE(fine.paths.size() == coarse.paths.size());
+  for (std::size_t i = 0; i < fine.paths.size(); ++i) {
+    REQUIRE(fine.paths[i].size() == coarse.paths[i].size());
+    for (std::size_t k = 0; k < fine.paths[i].size(); ++k) {
+      CHECK(std::abs(fine.paths[i][k].x - 4 * coarse.paths[i][k].x) <= 4);
+      CHECK(std::abs(fine.paths[i][k].y - 4 * coarse.paths[i][k].y) <= 4);
+    }
+  }
 }
 
 TEST_CASE("igds --term xterm and --plotter tty: the wrappings on the terminal") {

@@ -63,18 +63,19 @@ TEST_CASE("RESTORE, SAVE, WRITE: the dialogue and the reports") {
     auto r = igds_on(disk.path(),
                      "RESTORE ../X\nRESTORE /tmp/X\nRESTORE A.B\nRESTORE TOOLONGNAME\nRESTORE "
                      "CAF\xc3\xa9\nRESTORE A B\nRESTORE\n\nNONE\n");
-    CHECK(r.out ==
-          "READY\nRESTORE ../X\nINCORRECT PARAMETER\nREADY\nRESTORE /tmp/X\nINCORRECT "
-          "PARAMETER\nREADY\nRESTORE A.B\nINCORRECT PARAMETER\nREADY\nRESTORE TOOLONGNAME\n"
-          "INCORRECT PARAMETER\nREADY\nRESTORE CAF\xc3\xa9\nINCORRECT PARAMETER\nREADY\nRESTORE "
-          "A B\nINCORRECT PARAMETER\nREADY\nRESTORE\nFILE NAME?\nFILE NAME? NONE\nFILE NOT "
-          "FOUND\nREADY\n");
-    auto s = igds_on(disk.path(), std::string(build_3x3) + "SAVE ../X\nWRITE\nA.B\n");
-    CHECK(has(s.out, "SAVE ../X\nINCORRECT PARAMETER\nREADY\n"));
-    CHECK(has(s.out, "WRITE\nFILE NAME? A.B\nINCORRECT PARAMETER\nREADY\n"));
+    const std::string bad = "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _";
+    CHECK(r.out == "READY\nRESTORE ../X\n" + bad + "\nREADY\nRESTORE /tmp/X\n" + bad +
+                       "\nREADY\nRESTORE A.B\n" + bad + "\nREADY\nRESTORE TOOLONGNAME\n" + bad +
+                       "\nREADY\nRESTORE CAF\xc3\xa9\n" + bad + "\nREADY\nRESTORE A B\n" + bad +
+                       "\nREADY\nRESTORE\nFILE NAME?\nFILE NAME? NONE\nFILE NOT FOUND\nREADY\n");
+    // Typed at the question, a bad name is asked for again; on the command line it ends the
+    // command.
+    auto s = igds_on(disk.path(), std::string(build_3x3) + "SAVE ../X\nWRITE\nA.B\nOK\n");
+    CHECK(has(s.out, "SAVE ../X\n" + bad + "\nREADY\n"));
+    CHECK(has(s.out, "WRITE\nFILE NAME? A.B\n" + bad + "\nFILE NAME? OK\nREADY\n"));
     for (const auto& e : fs::directory_iterator(disk.path())) {
       std::string name = e.path().filename().string();
-      CHECK((name == "BINSAVE.IGDSCONT" || name.ends_with(".IGDSVARS")));
+      CHECK((name == "BINSAVE.IGDSCONT" || name.ends_with(".IGDSVARS") || name == "OK.IGDSCHAR"));
     }
   }
 }

@@ -171,6 +171,11 @@ TEST_CASE("every example's 4013 stream is rendered by tek2plot without complaint
     }
     auto drawing = decode_tek(r.out);
     CHECK(drawing.errors == std::vector<std::string>{});
+    // The screen as a person sees it: on no page is anything drawn over anything else.
+    for (std::size_t page = 0; page < drawing.pages.size(); ++page) {
+      CAPTURE(page);
+      for (const auto& fault : screen_faults(drawing.pages[page])) FAIL_CHECK(fault);
+    }
     REQUIRE(e.picture_page >= 0);
     REQUIRE(static_cast<std::size_t>(e.picture_page) < drawing.pages.size());
     // The page of the README's picture shows a drawing, not only text.

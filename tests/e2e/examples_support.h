@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "tests/support/tek_decoder.h"
+
 namespace igds::test {
 
 // One command file of scripts/examples/.
@@ -30,32 +32,5 @@ std::string compare_expected(const std::string& file, const std::string& actual)
 
 // `text` with every occurrence of the disk's path replaced by <DISK>.
 std::string without_disk(std::string text, const std::filesystem::path& disk);
-
-// What a 4013 stream draws, in 4013 points (10-bit addresses; 12-bit ones are divided by 4).
-struct TekPoint {
-  double x = 0, y = 0;
-};
-struct TekSegment {
-  TekPoint a, b;  // a == b: a point (FS point plot)
-};
-struct TekText {
-  TekPoint at;  // the baseline-left of the first character
-  std::string text;
-};
-struct TekPage {
-  std::vector<TekSegment> segments;
-  std::vector<TekText> texts;
-};
-struct TekDrawing {
-  std::vector<TekPage> pages;       // split at every ESC FF, as tek2plot --page-number counts
-  std::vector<std::string> errors;  // bytes a 4013 would not accept where they are
-};
-
-// Decodes a 4013 stream: GS/FS/US modes, shortened addresses (10 or 12 bits), ESC FF pages,
-// alpha text with CR/LF (4013 cell: 14 x 22 points, home at the top left).
-TekDrawing decode_tek(std::string_view stream);
-
-// The shortest distance from `p` to the segment.
-double distance(TekPoint p, const TekSegment& s);
 
 }  // namespace igds::test

@@ -24,9 +24,9 @@ class ScriptedSource final : public EventSource {
   // `keys`: the source gives keys (tek mode at a terminal); else lines. `command_file`: a command
   // file (lines echoed by the terminal, nothing waits for a person).
   ScriptedSource(bool keys, bool command_file) : keys_(keys), command_file_(command_file) {}
-  void line(std::string text) { events_.push_back({Event::Kind::line, std::move(text)}); }
+  void add_line(std::string text) { events_.push_back({Event::Kind::line, std::move(text)}); }
   void lines(const std::vector<std::string>& texts) {
-    for (const auto& t : texts) line(t);
+    for (const auto& t : texts) add_line(t);
   }
   void type(std::string_view text) {
     for (std::size_t i = 0; i < text.size();) {
