@@ -8,18 +8,19 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <memory>
-#include <optional>
-
 #include "interp/command_line.h"
 #include "interp/input.h"
 #include "interp/interpreter.h"
+#include "interp/version.h"
 #include "workspace/disk/session.h"
 #include "workspace/error.h"
+#include "workspace/kernels/fit.h"
 
 namespace igds {
 
@@ -63,7 +64,8 @@ int igds_main(int argc, char** argv) {
     return 0;
   }
   if (line.version) {
-    fmt::print("igds {}\n", IGDS_VERSION);
+    fmt::print("igds {}\nbuilt with {}, {}\nFIT loops: {}\n", IGDS_VERSION, IGDS_COMPILER,
+               IGDS_BUILD_TYPE, fit_code_in_use());
     return 0;
   }
   if (line.device_2250) {

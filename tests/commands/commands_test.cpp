@@ -214,9 +214,10 @@ TEST_CASE("DISPLAY projection parameters are checked") {
       {{"C", "1", "2"}, "GIVE THE VIEW POINT AS X Y Z"},
       {{"C", "x", "1", "2"}, "x IS NOT A NUMBER"},
       {{"C", "15", "10", "2.5"}, "A POINT IS BEHIND THE EYE"}};
-  for (const auto& [words, reason] : cases) {
-    CAPTURE(words.front());
-    CHECK(report_of(ctx, display_command, "SURFACE", words) == "INCORRECT PARAMETER: " + reason);
+  for (const auto& c : cases) {
+    CAPTURE(c.first.front());
+    CHECK(report_of(ctx, display_command, "SURFACE", c.first) ==
+          "INCORRECT PARAMETER: " + c.second);
   }
   CHECK(ctx.shown.empty());
   CHECK_FALSE(ctx.ws.image);

@@ -213,9 +213,10 @@ TEST_CASE("every word of the language is spelled in one source file: its declara
       }
     }
   }
-  for (const auto& [word, files] : spelled) {
+  for (const auto& spelling : spelled) {
+    const std::string& word = spelling.first;
     CAPTURE(word);
-    for (const auto& file : files)
+    for (const auto& file : spelling.second)
       CHECK_MESSAGE(declared[word].count(file), word << " is spelled in " << file);
   }
   // And each is declared, not only spelled: a command's words in its command's file.

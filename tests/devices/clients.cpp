@@ -12,6 +12,7 @@
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 
 namespace igds::test::devices {
 
@@ -62,7 +63,7 @@ std::vector<DevicePath> in_tek2plot_units(const std::vector<DevicePath>& paths, 
 }  // namespace
 
 TEST_CASE("tek2plot: a 10-bit point (x, y) appears at (4x, 4y + 488)") {
-  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  IGDS_SKIP_UNLESS(have_program("tek2plot"), "tek2plot (plotutils) is not installed");
   std::string s = cat({"\x1D", tek_address(100, 100), tek_address(500, 600), "\x1D",
                        tek_address(0, 0), tek_address(1023, 779), "\x1F"});
   auto paths = svg_paths(tek2plot_svg(s));
@@ -72,7 +73,7 @@ TEST_CASE("tek2plot: a 10-bit point (x, y) appears at (4x, 4y + 488)") {
 }
 
 TEST_CASE("tek2plot reads every 4013 and 4014 stream, vertices where they were meant") {
-  REQUIRE_MESSAGE(have_program("tek2plot"), "tek2plot (plotutils) is needed");
+  IGDS_SKIP_UNLESS(have_program("tek2plot"), "tek2plot (plotutils) is not installed");
   for (const Image& im : sample_images())
     for (int bits : {10, 12}) {
       int unit = bits == 12 ? 4 : 1;
@@ -123,7 +124,7 @@ Hp2xx hp2xx(const std::string& hpgl) {
 }  // namespace
 
 TEST_CASE("hp2xx reads every plot: within the paper, the same drawing absolute or relative") {
-  REQUIRE_MESSAGE(have_program("hp2xx"), "hp2xx is needed");
+  IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
   for (const Image& im : sample_images())
     for (Paper paper : {Paper::a4, Paper::a3, Paper::letter, Paper::b}) {
       Plot relative = plot_hpgl(im, {paper, false});
@@ -142,7 +143,7 @@ TEST_CASE("hp2xx reads every plot: within the paper, the same drawing absolute o
 }
 
 TEST_CASE("hp2xx reads a clipped plot: nothing beyond the hard-clip limits") {
-  REQUIRE_MESSAGE(have_program("hp2xx"), "hp2xx is needed");
+  IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
   Picture pic = picture_of(surface_image(4, 4));
   PlotLayout layout = plot_layout(pic, {});
   layout.at.scale *= 2.5;
@@ -156,7 +157,7 @@ TEST_CASE("hp2xx reads a clipped plot: nothing beyond the hard-clip limits") {
 }
 
 TEST_CASE("xmllint reads the SVG; its coordinates are the Tek ones, y flipped") {
-  REQUIRE_MESSAGE(have_program("xmllint"), "xmllint (libxml2-utils) is needed");
+  IGDS_SKIP_UNLESS(have_program("xmllint"), "xmllint (libxml2-utils) is not installed");
   for (const Image& im : sample_images()) {
     std::string svg = svg_of(im);
     TempDir dir;

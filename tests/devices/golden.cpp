@@ -9,37 +9,10 @@
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
+#include "tests/support/golden.h"
 #include "tests/support/process.h"
 
 namespace igds::test::devices {
-
-namespace {
-
-// Where two byte strings first differ, and their sizes.
-std::string difference(const std::string& was, const std::string& now) {
-  std::size_t i = 0;
-  while (i < was.size() && i < now.size() && was[i] == now[i]) ++i;
-  if (i == was.size() && i == now.size()) return "unchanged";
-  return fmt::format("{} -> {} bytes, first difference at byte {}", was.size(), now.size(), i);
-}
-
-void check_golden(const std::string& name, const std::string& bytes) {
-  std::filesystem::path path = std::filesystem::path(IGDS_GOLDEN_DIR) / name;
-  const char* update = std::getenv("IGDS_UPDATE_GOLDEN");
-  if (update && std::string(update) == "1") {
-    std::string was = std::filesystem::exists(path) ? read_file(path) : "";
-    write_file(path, bytes);
-    MESSAGE(fmt::format("golden {}: {}", name, difference(was, bytes)));
-    return;
-  }
-  INFO("golden file " << path.string() << " (IGDS_UPDATE_GOLDEN=1 rewrites it)");
-  REQUIRE(std::filesystem::exists(path));
-  std::string expected = read_file(path);
-  INFO(difference(expected, bytes));
-  CHECK(expected == bytes);
-}
-
-}  // namespace
 
 // The golden images: small, one of each kind.
 Image golden_input() {
@@ -65,6 +38,29 @@ TEST_CASE("golden: HP-GL plots") {
 TEST_CASE("golden: SVG") {
   check_golden("input_3x4.svg", svg_of(golden_input()));
   check_golden("surface_5x4.svg", svg_of(golden_surface()));
+}
+
+}  // namespace igds::test::devices
+
+namespace igds::test::devices {
+
+TEST_CASE("a golden difference shows the first record that differs, expected and actual") {
+  CHECK(first_difference("a\nb\n", "a\nb\n").empty());
+  const std::string text = first_difference("a\nb\nc\n", "a\nB\nc\n");
+  CHECK(text.find("record 2") != std::string::npos);
+  CHECK(text.find("expected: b\\x0A") != std::string::npos);
+  CHECK(text.find("actual:   B\\x0A") != std::string::npos);
+  const std::string tek = first_difference(
+      "\x1D"
+      "abc\x1F"
+      "READY",
+      "\x1D"
+      "abd\x1F"
+      "READY");
+  CHECK(tek.find("expected: \\x1Dabc") != std::string::npos);
+  CHECK(tek.find("actual:   \\x1Dabd") != std::string::npos);
+  CHECK(first_difference("IN;SP1;PD1,2;", "IN;SP1;PD1,3;").find("expected: PD1,2;") !=
+        std::string::npos);
 }
 
 }  // namespace igds::test::devices

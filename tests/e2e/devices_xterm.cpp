@@ -19,6 +19,7 @@
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 
 namespace igds::test::devices {
 
@@ -206,10 +207,7 @@ std::optional<Shot> show_in_xterm(const Xvfb& x, const std::string& stream, cons
 }  // namespace
 
 TEST_CASE("xterm Tek window: the vectors are where they must be, nothing where they must not") {
-  if (!have_program("Xvfb")) {
-    MESSAGE("Xvfb is not installed: the xterm test is skipped");
-    return;
-  }
+  IGDS_SKIP_UNLESS(have_program("Xvfb"), "Xvfb is not installed");
   for (const char* program : {"xterm", "xdotool", "import", "convert", "identify"})
     REQUIRE_MESSAGE(have_program(program), program << " is needed");
   Xvfb x;

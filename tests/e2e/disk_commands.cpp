@@ -10,6 +10,7 @@
 #include "commands/command.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/session.h"
@@ -47,10 +48,7 @@ bool has(const std::string& out, const std::string& part) {
 }  // namespace
 
 TEST_CASE("RESTORE, SAVE, WRITE: the dialogue and the reports") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir disk;
 
   SUBCASE("no surface: INPUT NOT FOUND before any name is asked") {
@@ -81,10 +79,7 @@ TEST_CASE("RESTORE, SAVE, WRITE: the dialogue and the reports") {
 }
 
 TEST_CASE("SAVE then RESTORE with the binary: the surface back, images and STATUS kept") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir disk;
   auto r = igds_on(disk.path(), std::string(build_3x3) + "SAVE hull\nWRITE\nhull\n");
   CHECK(has(r.out, "SAVE hull\nREADY\nWRITE\nFILE NAME? hull\nREADY\n"));
@@ -110,10 +105,7 @@ TEST_CASE("SAVE then RESTORE with the binary: the surface back, images and STATU
 }
 
 TEST_CASE("WRITE says how many values did not fit F10.3, and the file agrees") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir disk;
   auto r =
       igds_on(disk.path(), "BUILD\n2 2\n1 0 0 0 0 1 0 1 0 0 1 1 12345678\n\n\n1 1\nWRITE BIG\n");
@@ -131,10 +123,7 @@ TEST_CASE("WRITE says how many values did not fit F10.3, and the file agrees") {
 }
 
 TEST_CASE("a damaged file is reported word for word and the surface is kept") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir disk;
   igds_on(disk.path(), std::string(build_3x3) + "SAVE HULL\nCHANGE GRID 2 2\n");
   std::string good = test::read_file(disk.path() / "HULL.IGDSDATA");
@@ -154,10 +143,7 @@ TEST_CASE("a damaged file is reported word for word and the surface is kept") {
 }
 
 TEST_CASE("a damaged session at start: said before READY, kept aside, igds goes on") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir disk;
   igds_on(disk.path(), build_3x3);
   std::string good = test::read_file(disk.path() / "BINSAVE.IGDSCONT");
@@ -173,16 +159,10 @@ TEST_CASE("a damaged session at start: said before READY, kept aside, igds goes 
 }
 
 TEST_CASE("a disk that fills up: the command's report, and the last session kept") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir scratch;
   test::SmallDisk small(scratch.path() / "disk", 96);
-  if (!small.mounted()) {
-    MESSAGE("cannot mount a tmpfs here (not root?): the unit tests simulate a full disk instead");
-    return;
-  }
+  IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
   igds_on(small.path(), build_3x3);
   Workspace before = session_on(small.path());
   auto r = igds_on(small.path(), "CHANGE GRID 40 40\nSAVE HULL\n");
@@ -197,10 +177,7 @@ TEST_CASE("a disk that fills up: the command's report, and the last session kept
 }
 
 TEST_CASE("a disk that is not there") {
-  if (!fs::exists(test::igds_binary())) {
-    MESSAGE("the igds binary is not built: skipped");
-    return;
-  }
+  REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir scratch;
   auto r = test::run_igds({"--disk", (scratch.path() / "none").string(), "--term", "none"});
   CHECK(r.status == 1);

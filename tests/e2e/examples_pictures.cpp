@@ -7,15 +7,14 @@
 
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 
 namespace igds::test {
 
 TEST_CASE("the README's pictures of the examples are the ones igds draws now") {
   for (const char* tool : {"tek2plot", "compare"}) {
-    if (!have_program(tool)) {
-      MESSAGE(tool << " is not installed (plotutils, imagemagick): skipped");
-      return;
-    }
+    IGDS_SKIP_UNLESS(have_program(tool),
+                     std::string(tool) + " is not installed (plotutils, imagemagick)");
   }
   TempDir fresh;
   auto made = run({(source_dir() / "scripts/pictures").string(), "--igds", igds_binary().string(),

@@ -13,6 +13,7 @@
 
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 
 namespace igds::test {
 
@@ -150,10 +151,7 @@ TEST_CASE("the six examples are there, each with a picture page in its header") 
 }
 
 TEST_CASE("every example's 4013 stream is rendered by tek2plot without complaint") {
-  if (!have_program("tek2plot")) {
-    MESSAGE("tek2plot is not installed (plotutils): skipped");
-    return;
-  }
+  IGDS_SKIP_UNLESS(have_program("tek2plot"), "tek2plot is not installed (plotutils)");
   for (const auto& e : examples()) {
     CAPTURE(e.name);
     TempDir disk;
@@ -238,10 +236,7 @@ TEST_CASE("hull: saved, written as IGDSCHAR cards, and plotted on HP-GL that hp2
     if (std::regex_match(entry.path().filename().string(), std::regex(R"(PLOT\d{4}\.HPGL)")))
       plots.push_back(entry.path());
   REQUIRE(plots.size() == 1);
-  if (!have_program("hp2xx")) {
-    MESSAGE("hp2xx is not installed: the plot is not decoded");
-    return;
-  }
+  IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
   auto dump = run({"hp2xx", "-t", "-m", "hpgl", "-f", "-", plots[0].string()});
   CHECK(dump.status == 0);
   // hp2xx exits 0 even when it understood nothing: its log and its dump say whether it did.

@@ -20,6 +20,7 @@
 
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 
 namespace igds::test {
 
@@ -327,10 +328,7 @@ void check_picture(const std::string& display, const std::string& window, const 
 }
 
 bool x_tools_present() {
-  if (!have_program("Xvfb")) {
-    MESSAGE("Xvfb is not installed: the xterm session is skipped");
-    return false;
-  }
+  if (!have_program("Xvfb") && skip_now("Xvfb is not installed")) return false;
   for (const char* tool : {"xterm", "xdotool", "import", "convert", "identify"}) {
     CAPTURE(tool);
     REQUIRE(have_program(tool));

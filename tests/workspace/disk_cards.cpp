@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "workspace/disk/cards.h"
 #include "workspace/disk/disk.h"
@@ -127,10 +128,7 @@ TEST_CASE("WRITE of a surface not interpolated yet: zero shape cards and no valu
 }
 
 TEST_CASE("WRITE agrees with gfortran writing the same values with the same formats") {
-  if (!test::have_program("gfortran")) {
-    MESSAGE("gfortran not installed: the hand-checked cards above stand alone");
-    return;
-  }
+  IGDS_SKIP_UNLESS(test::have_program("gfortran"), "gfortran is not installed");
   test::TempDir dir;
   Workspace ws = test::make_workspace(3, 4, 2, 1, false);
   ws.inppn.ravel[0] = -0.0005;

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/disk.h"
@@ -244,10 +245,7 @@ TEST_CASE("a disk that refuses a write: clear report, old file kept, no temporar
 TEST_CASE("a really full disk and a read-only disk (tmpfs; needs the right to mount)") {
   test::TempDir dir;
   test::SmallDisk small(dir.path() / "disk", 64);
-  if (!small.mounted()) {
-    MESSAGE("cannot mount a tmpfs here (not root?): the simulated full disk above stands in");
-    return;
-  }
+  IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
   Disk disk(small.path());
   Workspace fits = test::make_workspace(2, 2, 1, 1, false);
   save_surface(disk, "HULL", fits);

@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "tests/support/process.h"
+#include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/format.h"
@@ -332,10 +333,7 @@ TEST_CASE("a disk that refuses the session: report, and the last saved session s
 TEST_CASE("a really full disk (tmpfs; needs the right to mount)") {
   test::TempDir dir;
   test::SmallDisk small(dir.path() / "disk", 200);
-  if (!small.mounted()) {
-    MESSAGE("cannot mount a tmpfs here (not root?): the simulated full disk above stands in");
-    return;
-  }
+  IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
   Disk disk(small.path());
   Workspace first = test::make_workspace(3, 3, 4, 4);
   Workspace big = test::make_workspace(10, 10, 10, 10);  // about 500 KB in all
@@ -447,10 +445,8 @@ TEST_CASE("the session holds whatever the workspace held, even what RESTORE woul
 TEST_CASE("a read-only disk cannot hold a session: said at once (tmpfs; needs mount)") {
   test::TempDir dir;
   test::SmallDisk small(dir.path() / "disk", 64);
-  if (!small.mounted() || !small.make_read_only()) {
-    MESSAGE("cannot mount a read-only tmpfs here: skipped");
-    return;
-  }
+  IGDS_SKIP_UNLESS(small.mounted() && small.make_read_only(),
+                   "cannot mount a read-only tmpfs here");
   Disk disk(small.path());
   CHECK_THROWS_WITH_AS(
       Session{disk},
@@ -485,10 +481,7 @@ TEST_CASE("a bad session that cannot even be put aside stays where it is (needs 
   Scratch s;
   // A mount point cannot be renamed: the session "file" is a folder with a tmpfs on it.
   test::SmallDisk in_the_way(s.session(), 16);
-  if (!in_the_way.mounted()) {
-    MESSAGE("cannot mount a tmpfs here: skipped");
-    return;
-  }
+  IGDS_SKIP_UNLESS(in_the_way.mounted(), "cannot mount a tmpfs here (root can)");
   test::write_file(s.dir.path() / "B0000001.IGDSVARS", "a variable of the bad session");
   std::vector<std::string> notices;
   CHECK(load_fresh(s.disk, &notices) == Workspace{});

@@ -247,6 +247,15 @@ void use_fit_code(FitCode code) {
   fit_code.store(code);
 }
 
+const char* fit_code_in_use() {
+#if IGDS_X86
+  if (fit_code.load() == FitCode::best && has_avx2_fma()) return "AVX2 and FMA";
+  return "SSE2";
+#else
+  return "portable";
+#endif
+}
+
 void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
          Array& intpn) {
   const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);

@@ -28,5 +28,7 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3V
 // baseline one everywhere (so that tests exercise both on a machine that has AVX2).
 enum class FitCode { best, baseline };
 void use_fit_code(FitCode code);
+// The compiled form FIT uses on this processor, in words (for igds --version).
+const char* fit_code_in_use();
 
 }  // namespace igds

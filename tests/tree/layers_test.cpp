@@ -1,0 +1,76 @@
+// The tree: each layer includes nothing of a layer above it (interp -> commands -> devices ->
+// workspace; workspace/kernels -> nothing of igds), and every source file of a layer is built.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <map>
+#include <regex>
+#include <set>
+#include <string>
+
+#include "tests/support/process.h"
+
+namespace igds::test {
+
+namespace {
+
+// The layers, lowest first, and what each may include besides itself and the layers below.
+int rank(const std::string& path) {
+  if (path.starts_with("workspace/kernels/")) return 0;
+  if (path.starts_with("workspace/")) return 1;
+  if (path.starts_with("devices/")) return 2;
+  if (path.starts_with("commands/")) return 3;
+  if (path.starts_with("interp/")) return 4;
+  return -1;
+}
+
+std::vector<std::string> sources() {
+  std::vector<std::string> out;
+  for (const char* folder : {"workspace", "devices", "commands", "interp"})
+    for (const auto& e : std::filesystem::recursive_directory_iterator(source_dir() / folder)) {
+      const auto ext = e.path().extension();
+      if (ext == ".cpp" || ext == ".h") out.push_back(e.path().lexically_relative(source_dir()));
+    }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("no layer includes a layer above it") {
+  const std::regex include(R"re(#include "([^"]+)")re");
+  int checked = 0;
+  for (const auto& file : sources()) {
+    const int own = rank(file);
+    REQUIRE(own >= 0);
+    const std::string text = read_file(source_dir() / file);
+    for (std::sregex_iterator it(text.begin(), text.end(), include), end; it != end; ++it) {
+      const std::string target = (*it)[1];
+      const int other = rank(target);
+      if (other < 0) continue;  // generated headers
+      CAPTURE(file);
+      CAPTURE(target);
+      CHECK(other <= own);
+      ++checked;
+    }
+  }
+  CHECK(checked > 100);
+}
+
+TEST_CASE("every source file is listed in CMakeLists.txt, and every listed file exists") {
+  const std::string cmake = read_file(source_dir() / "CMakeLists.txt");
+  std::set<std::string> listed;
+  const std::regex entry(R"re((?:^|\s)((?:workspace|devices|commands|interp)/[\w/]+\.cpp))re");
+  for (std::sregex_iterator it(cmake.begin(), cmake.end(), entry), end; it != end; ++it)
+    listed.insert((*it)[1]);
+  for (const auto& file : sources()) {
+    if (!file.ends_with(".cpp")) continue;
+    CAPTURE(file);
+    CHECK(listed.count(file) == 1);
+  }
+  for (const auto& file : listed) {
+    CAPTURE(file);
+    CHECK(std::filesystem::exists(source_dir() / file));
+  }
+}
+
+}  // namespace igds::test
