@@ -521,6 +521,33 @@ TEST_CASE("the writer's lines have the spec's field widths") {
         "        7  6  4 1   0.000   3.000                 A TEXT\n");
 }
 
+TEST_CASE("records whose numbers overflow their fields are still read back") {
+  // A full field touches its neighbour; once one overflows, the columns are lost and every
+  // number of the record gets a blank before it.
+  DuctPicture p = read_duct(small_picture);
+  p.reals = {0.00001, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200};
+  p.counters[7] = -12345;
+  std::string text = write_duct(p);
+  CHECK(text.find("\n  0.0000 18772.2300 -1234.5678 123456.7890 0.0000 5.0000 1.E200\n") !=
+        std::string::npos);
+  DuctPicture back = read_duct(text);
+  CHECK(back.reals == std::array<double, 7>{0, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200});
+  CHECK(back.counters == p.counters);
+  p.reals = {0.00001, 18772.23, -1234.5678, 0, 0, 5, 0};
+  text = write_duct(p);
+  CHECK(text.find("\n     0.000018772.2300-1234.5678    0.0000") != std::string::npos);
+  CHECK(read_duct(text).reals[1] == 18772.23);
+  // Texts keep their column 51 whatever their numbers.
+  p.counters[0] = 6;
+  p.texts = {{5, -1000, 77777, 725.5, 1e6, "TEXT"}};
+  p.dimensions = {{{1, 1, 0, 1, 2, 0, 5, 123456789, 1, 2, 0}, 0}};
+  back = read_duct(write_duct(p));
+  REQUIRE(back.texts.size() == 1);
+  CHECK(back.texts[0] == DuctText{5, -99, 99, 5.5, 9999.999, "TEXT"});
+  CHECK(back.dimensions == p.dimensions);
+  CHECK_THROWS_AS(read_duct(write_duct(p) + "x"), DuctError);
+}
+
 TEST_CASE("a drawing written and read back gives the same items") {
   Drawing3 d;
   const double open[] = {0, 0, 0, 3, 1, 2, 5, -2, 4};

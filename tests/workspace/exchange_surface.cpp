@@ -47,8 +47,9 @@ std::vector<double> expanded(const CubicBspline& c) {
 }  // namespace
 
 TEST_CASE("every curve and stringer of the drawing passes through INTPN at its parameters") {
-  for (const auto& [nc, ns, ic, is] :
+  for (const auto& shape :
        std::vector<std::array<int, 4>>{{5, 4, 2, 2}, {7, 6, 3, 1}, {3, 9, 0, 4}, {2, 2, 5, 0}}) {
+    const int nc = shape[0], ns = shape[1], ic = shape[2], is = shape[3];
     CAPTURE(nc);
     CAPTURE(ns);
     const TestSurface t = test_surface(nc, ns, ic, is);

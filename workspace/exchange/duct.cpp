@@ -917,6 +917,12 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
     p.header.push_back(title);
   }
 
+  // Room for every pixel at once: a picture of millions of them is not copied as it grows.
+  std::size_t pixels = 0;
+  for (const auto& item : drawing.items()) pixels += item.count + (item.closed ? 1 : 0);
+  p.xyz.reserve(3 * pixels);
+  p.instructions.reserve(drawing.size());
+
   BoxBuilder box;
   std::vector<std::pair<std::size_t, double>> shapes;  // pixel, shape factor
   bool all_lines = true;
@@ -1129,6 +1135,45 @@ DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Proj
 // ---------------------------------------------------------------------------------------------
 // Writing.
 
+namespace {
+
+// A record of fields with no blank between them ((1X,10I6), (1X,7F10.4), ...): as FORTRAN
+// writes it when every value fits its field, so that fixed columns read it; when one does not,
+// every value after a blank, so that list-directed readers read it (columns being lost anyway).
+class WrittenRecord {
+ public:
+  void integer(std::int64_t v, int width) {
+    fields_.push_back({{}, width});
+    put_integer(fields_.back().text, v, 1);
+  }
+  void fixed(double v, int width, int decimals) {
+    fields_.push_back({{}, width});
+    put_fixed(fields_.back().text, v, 1, decimals);
+  }
+  void write(std::string& out) const {
+    bool fits = true;
+    for (const auto& f : fields_) fits = fits && trimmed(f.text).size() <= std::size_t(f.width);
+    out += ' ';  // 1X
+    for (const auto& f : fields_) {
+      const std::string_view text = trimmed(f.text);
+      if (fits)
+        out.append(std::size_t(f.width) - text.size(), ' ');
+      else
+        out += ' ';
+      out += text;
+    }
+  }
+
+ private:
+  struct Field {
+    std::string text;
+    int width;
+  };
+  std::vector<Field> fields_;
+};
+
+}  // namespace
+
 void append_duct(std::string& out, const DuctPicture& p) {
   // About 46 characters a pixel line (68 with T U), 20 an instruction.
   out.reserve(out.size() + 200 + 20 * p.instructions.size() +
@@ -1137,11 +1182,15 @@ void append_duct(std::string& out, const DuctPicture& p) {
     out += line;
     out += '\n';
   }
-  out += " *\n ";
-  for (std::int64_t v : p.counters) put_integer(out, v, 6);
-  out += "\n ";
-  for (double v : p.reals) put_fixed(out, v, 10, 4);
+  out += " *\n";
+  WrittenRecord counters, reals;
+  for (std::int64_t v : p.counters) counters.integer(v, 6);
+  for (double v : p.reals) reals.fixed(v, 10, 4);
+  counters.write(out);
   out += '\n';
+  reals.write(out);
+  out += '\n';
+  // Instructions and pixels have a blank before every field.
   for (const auto& in : p.instructions) {
     out += ' ';
     put_integer(out, in.code(), 11);
@@ -1149,48 +1198,62 @@ void append_duct(std::string& out, const DuctPicture& p) {
     put_integer(out, std::int64_t(in.pixels), 6);
     out += '\n';
   }
+  // Pixel lines, the bulk of a picture, are made in a buffer and appended whole.
   const bool tu = !p.tu.empty();
+  std::string tail;
   for (std::size_t k = 0; k < p.pixel_count(); ++k) {
+    char line[64];
+    char* at = line;
     for (int i = 0; i < 3; ++i) {
-      out += ' ';
-      put_exponent(out, p.xyz[3 * k + std::size_t(i)], 14, 7);
+      char number[48];
+      const std::size_t n = format_exponent(number, p.xyz[3 * k + std::size_t(i)], 7);
+      *at++ = ' ';
+      for (std::size_t pad = n; pad < 14; ++pad) *at++ = ' ';
+      for (std::size_t c = 0; c < n; ++c) *at++ = number[c];
     }
+    out.append(line, std::size_t(at - line));
     if (tu) {
+      tail.clear();
       for (int i = 0; i < 2; ++i) {
-        out += ' ';
-        put_fixed(out, p.tu[2 * k + std::size_t(i)], 10, 4);
+        tail += ' ';
+        put_fixed(tail, p.tu[2 * k + std::size_t(i)], 10, 4);
       }
+      out += tail;
     }
     out += '\n';
   }
-  if (p.has_texts()) {
-    out += ' ';
-    put_integer(out, std::int64_t(p.texts.size()), 6);
-    put_integer(out, std::int64_t(p.dimensions.size()), 6);
+  if (!p.has_texts()) return;
+  WrittenRecord counts;
+  counts.integer(std::int64_t(p.texts.size()), 6);
+  counts.integer(std::int64_t(p.dimensions.size()), 6);
+  counts.write(out);
+  out += '\n';
+  for (const auto& t : p.texts) {
+    // The string starts in column 51 whatever the numbers: values its fields cannot hold (DUCT
+    // could not have written them) are brought into them.
+    WrittenRecord numbers;
+    numbers.integer(std::int64_t(t.pixel), 8);
+    numbers.integer(std::int64_t(t.text.size()), 3);
+    numbers.integer(std::clamp(t.colour, -99, 999), 3);
+    numbers.integer(std::clamp(t.units, -9, 99), 2);
+    numbers.fixed(std::isfinite(t.angle) ? std::fmod(t.angle, 360.0) : 0.0, 8, 3);
+    numbers.fixed(std::isfinite(t.height) ? std::clamp(t.height, -999.999, 9999.999) : 0.0, 8, 3);
+    numbers.write(out);
+    out.append(17, ' ');
+    out.append(t.text, 0, 30);
+    if (t.text.size() > 30) {
+      out += "\n ";
+      out.append(t.text, 30);
+    }
     out += '\n';
-    for (const auto& t : p.texts) {
-      out += ' ';
-      put_integer(out, std::int64_t(t.pixel), 8);
-      put_integer(out, std::int64_t(t.text.size()), 3);
-      put_integer(out, t.colour, 3);
-      put_integer(out, t.units, 2);
-      put_fixed(out, t.angle, 8, 3);
-      put_fixed(out, t.height, 8, 3);
-      out.append(17, ' ');
-      out.append(t.text, 0, 30);
-      if (t.text.size() > 30) {
-        out += "\n ";
-        out.append(t.text, 30);
-      }
-      out += '\n';
-    }
-    for (const auto& d : p.dimensions) {
-      static constexpr int widths[11] = {2, 8, 8, 2, 8, 8, 8, 3, 3, 3, 2};
-      out += ' ';
-      for (int k = 0; k < 11; ++k) put_integer(out, d.k[std::size_t(k)], widths[k]);
-      put_fixed(out, d.t, 8, 3);
-      out += '\n';
-    }
+  }
+  for (const auto& d : p.dimensions) {
+    static constexpr int widths[11] = {2, 8, 8, 2, 8, 8, 8, 3, 3, 3, 2};
+    WrittenRecord dimension;
+    for (int k = 0; k < 11; ++k) dimension.integer(d.k[std::size_t(k)], widths[k]);
+    dimension.fixed(d.t, 8, 3);
+    dimension.write(out);
+    out += '\n';
   }
 }
 

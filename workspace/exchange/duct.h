@@ -211,8 +211,10 @@ DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Proj
 
 // The picture in the fixed formats of duct.md: header lines, " *", (1X,10I6), (1X,7F10.4),
 // (1X,I11,1X,I6) per instruction, (3(1X,E14.7)) or (3(1X,E14.7),2(1X,F10.4)) per pixel, then
-// texts and dimensions when I1 says so. Lines end in LF. A number too wide for its field is
-// written in full after a blank (fields.h).
+// texts and dimensions when I1 says so. Lines end in LF. A record whose fields touch is written as
+// FORTRAN writes it; when a value does not fit its field, every value of that record follows a
+// blank (list-directed readers read both); a text's numbers are brought into their fields so that
+// its string stays in column 51. Whatever read_duct returns, this writes a text it reads back.
 std::string write_duct(const DuctPicture& picture);
 void append_duct(std::string& out, const DuctPicture& picture);
 

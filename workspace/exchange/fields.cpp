@@ -43,21 +43,16 @@ void put_fixed(std::string& out, double value, int width, int decimals) {
   put_field(out, buffer, length, width);
 }
 
-void put_exponent(std::string& out, double value, int width, int digits) {
-  char buffer[64];
+std::size_t format_exponent(char* buffer, double value, int digits) {
   char* p = buffer;
-  if (value == 0 || !std::isfinite(value)) {
-    if (!std::isfinite(value)) {
-      const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-      put_field(out, buffer, static_cast<std::size_t>(end - buffer), width);
-      return;
-    }
+  if (!std::isfinite(value))
+    return std::size_t(std::to_chars(buffer, buffer + 32, value).ptr - buffer);
+  if (value == 0) {
     *p++ = '0';
     *p++ = '.';
     for (int k = 0; k < digits; ++k) *p++ = '0';
     for (char c : {'E', '+', '0', '0'}) *p++ = c;
-    put_field(out, buffer, static_cast<std::size_t>(p - buffer), width);
-    return;
+    return static_cast<std::size_t>(p - buffer);
   }
   // d.dddddde+XX from the library (correctly rounded), rearranged as 0.ddddddd with the exponent
   // one higher.
@@ -82,7 +77,12 @@ void put_exponent(std::string& out, double value, int width, int digits) {
   if (magnitude >= 100) *p++ = static_cast<char>('0' + magnitude / 100);
   *p++ = static_cast<char>('0' + magnitude / 10 % 10);
   *p++ = static_cast<char>('0' + magnitude % 10);
-  put_field(out, buffer, static_cast<std::size_t>(p - buffer), width);
+  return static_cast<std::size_t>(p - buffer);
+}
+
+void put_exponent(std::string& out, double value, int width, int digits) {
+  char buffer[64];
+  put_field(out, buffer, format_exponent(buffer, value, digits), width);
 }
 
 std::size_t format_real(char* out, double value) {

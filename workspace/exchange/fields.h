@@ -24,6 +24,10 @@ void put_fixed(std::string& out, double value, int width, int decimals);
 // " 0.1250000E+02". Zero (of either sign) is 0.0000000E+00.
 void put_exponent(std::string& out, double value, int width, int digits);
 
+// The same into `buffer` (at least 40 characters, for digits up to 16), unpadded; returns the
+// length.
+std::size_t format_exponent(char* buffer, double value, int digits);
+
 // The shortest decimal that reads back as the same double, with a decimal point always (IGES
 // and STEP reals must have one): 1 -> "1.", 0.1 -> "0.1", 1e+20 -> "1.E20", -2.5e-07 ->
 // "-2.5E-7".

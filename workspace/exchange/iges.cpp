@@ -42,7 +42,7 @@ std::string hollerith(std::string_view text) {
 
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
-// the pointer back to its directory entry).
+// the pointer back to its directory entry). Each record is made in a buffer and appended whole.
 class Records {
  public:
   Records(std::string& out, char section, std::size_t width, std::size_t first_sequence)
@@ -57,10 +57,11 @@ class Records {
     de_ = de;
     first_ = sequence_;
   }
+  // A parameter and its delimiter (at most 71 characters together).
   void token(const char* text, std::size_t length, char delimiter) {
     if (used_ > 0 && used_ + length + 1 > width_) finish();
-    out_.append(text, length);
-    out_.push_back(delimiter);
+    for (std::size_t k = 0; k < length; ++k) line_[used_ + k] = text[k];
+    line_[used_ + length] = delimiter;
     used_ += length + 1;
   }
   void token(std::string_view text, char delimiter = ',') {
@@ -78,12 +79,17 @@ class Records {
   // Ends the current record; returns the number of records of the entity (P section).
   std::size_t finish() {
     if (used_ == 0) return sequence_ - first_;
-    out_.append(width_ - used_, ' ');
+    if (sequence_ > max_sequence) too_many_lines(sequence_);
+    for (std::size_t k = used_; k < width_; ++k) line_[k] = ' ';
+    std::size_t at = width_;
     if (section_ == 'P') {
-      out_.push_back(' ');
-      put_integer(out_, std::int64_t(de_), 7);
+      line_[at++] = ' ';
+      at = right_justified(at, de_, 7);
     }
-    end_record(out_, section_, sequence_++);
+    line_[at++] = section_;
+    at = right_justified(at, sequence_++, 7);
+    line_[at++] = '\n';
+    out_.append(line_, at);
     used_ = 0;
     return sequence_ - first_;
   }
@@ -91,9 +97,15 @@ class Records {
   std::size_t first() const { return first_; }
 
  private:
+  std::size_t right_justified(std::size_t at, std::size_t value, std::size_t width) {
+    for (std::size_t k = width; k-- > 0; value /= 10)
+      line_[at + k] = value > 0 || k == width - 1 ? char('0' + value % 10) : ' ';
+    return at + width;
+  }
   std::string& out_;
   char section_;
   std::size_t width_, used_ = 0, sequence_, de_ = 0, first_;
+  char line_[96];
 };
 
 struct Entity {
@@ -202,7 +214,12 @@ std::string write_iges(const SurfaceInput& input, const Array& patches, const Ca
 
   std::string out;
   // About 20 characters a coordinate and 3 a weight, in records of 64 of 81 characters.
-  out.reserve(4096 + std::size_t(double(net.xyz.size()) * 21 * 81 / 64 * 1.3));
+  // Room for the file at once (it may be hundreds of MB): about 20 characters a coordinate, 3 a
+  // weight, 4 a knot, in records of 64 of 81 characters; patches repeat their shared borders.
+  const double coordinates =
+      form == SurfaceForm::one ? double(net.xyz.size()) : 48.0 * double(nc - 1) * double(ns - 1);
+  const double curve_coordinates = 3.0 * double(2 * nc * ns + 2 * (nc + ns));
+  out.reserve(4096 + std::size_t((coordinates * 23 + curve_coordinates * 26) * 81 / 64));
 
   // Start section.
   std::size_t s_lines = 0;
@@ -280,9 +297,9 @@ std::string write_iges(const SurfaceInput& input, const Array& patches, const Ca
         entity(128, "PATCH", i * (ns - 1) + j + 1,
                [&] { write_surface(p, net, 3 * i, 4, 3 * j, 4); });
   }
-  for (const auto& [number, c] : curves) entity(126, "CURVE", number, [&] { write_curve(p, c); });
-  for (const auto& [number, c] : stringers)
-    entity(126, "STRINGER", number, [&] { write_curve(p, c); });
+  for (const auto& c : curves) entity(126, "CURVE", c.first, [&] { write_curve(p, c.second); });
+  for (const auto& c : stringers)
+    entity(126, "STRINGER", c.first, [&] { write_curve(p, c.second); });
   const std::size_t p_lines = p.next_sequence() - 1;
 
   std::string directory;

@@ -92,7 +92,10 @@ std::string write_step(const SurfaceInput& input, const Array& patches, const Ca
   }
 
   std::string out;
-  out.reserve(4096 + net.xyz.size() * 30);
+  // Room for the file at once: a point's instance about 75 characters, a patch's about 170, a
+  // curve's control point and its reference 85.
+  out.reserve(4096 + net.rows * net.cols * 75 + (nc - 1) * (ns - 1) * 170 +
+              (2 * nc * ns + 2 * (nc + ns)) * 85);
   Instances s(out);
   out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((";
   s.string("IGDS surface " + header.name);
