@@ -1,0 +1,43 @@
+// libFuzzer target of the DUCT reader (workspace/exchange/duct.h): whatever the bytes, read_duct
+// returns a picture or throws DuctError, in time and memory proportional to the input; what it
+// returns draws, writes and reads back; its drawing, in space and projected, writes and reads
+// back. Seeds: tests/fuzz/corpus/duct (the golden and the hand-written pictures).
+//   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DIGDS_FUZZ=ON
+//   cmake --build build-fuzz --target fuzz_duct
+//   build-fuzz/fuzz_duct -max_total_time=300 fuzz-work tests/fuzz/corpus/duct
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include "workspace/drawing/project.h"
+#include "workspace/exchange/duct.h"
+#include "workspace/kernels/data_error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace igds;
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  DuctPicture picture;
+  try {
+    picture = read_duct(text);
+  } catch (const DuctError& e) {
+    if (e.line == 0 || e.reason().empty()) std::abort();
+    return 0;
+  }
+  // Anything escaping from here is a finding: libFuzzer reports the uncaught exception.
+  const Drawing3 drawing = duct_drawing(picture);
+  const DuctPicture again = read_duct(write_duct(picture));
+  if (again.instructions != picture.instructions || again.counters != picture.counters ||
+      again.texts.size() != picture.texts.size() || again.pixel_count() != picture.pixel_count())
+    std::abort();
+  read_duct(write_duct(duct_picture(drawing, {"FUZZ", "", "AGAIN"})));
+  try {
+    const Drawing2 plane = project(drawing, {Projection::assonometric, {110, 130, 120}},
+                                   bounding_box(drawing).centre());
+    read_duct(write_duct(duct_picture(plane, {"FUZZ", "", ""}, Projection::assonometric)));
+  } catch (const DataError& e) {
+    // Coordinates so large that their projection overflows are refused, nothing else.
+    if (e.problem != DataError::Problem::point_not_finite) std::abort();
+  }
+  return 0;
+}

@@ -1,0 +1,805 @@
+// DUCT 4.4 picture files (workspace/exchange/duct.h): a picture written by hand from the spec,
+// read and drawn item by item; the tolerant reader; damaged pictures refused with their line and
+// reason; conic arcs; the writer's fields; round trips; the golden pictures of a surface.
+#include "workspace/exchange/duct.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "tests/workspace/exchange_support.h"
+#include "workspace/drawing/project.h"
+#include "workspace/exchange/fields.h"
+#include "workspace/exchange/surface_curves.h"
+#include "workspace/kernels/data_error.h"
+
+namespace igds::test::exchange {
+
+namespace {
+
+std::string hand_written() {
+  return read_file(source_dir() / "tests/workspace/data/hand_written.ductpic");
+}
+
+Vec3 point_of(const Drawing3& d, const Drawing3::Item& item, std::size_t k) {
+  return d.points(item)[k];
+}
+
+bool near(Vec3 a, Vec3 b, double tolerance) {
+  return norm(a - b) <= tolerance;
+}
+
+// A point of a rational quadratic span by de Casteljau in homogeneous coordinates.
+Vec3 conic_point(const Vec3 c[3], const double w[3], double t) {
+  const double s = 1 - t;
+  const double b0 = s * s * w[0], b1 = 2 * s * t * w[1], b2 = t * t * w[2];
+  return (1 / (b0 + b1 + b2)) * (b0 * c[0] + b1 * c[1] + b2 * c[2]);
+}
+
+// Every span of a degree-2 curve item sampled: the largest distance from `centre` minus `radius`.
+double off_circle(const Drawing3& d, const Drawing3::Item& item, Vec3 centre, double radius) {
+  const auto p = d.points(item);
+  const auto w = d.weights(item);
+  double worst = 0;
+  for (std::size_t k = 0; k + 2 < p.size(); k += 2) {
+    const Vec3 c[3] = {p[k], p[k + 1], p[k + 2]};
+    const double ws[3] = {w[k], w[k + 1], w[k + 2]};
+    for (int i = 0; i <= 64; ++i)
+      worst = std::max(worst, std::abs(norm(conic_point(c, ws, i / 64.0) - centre) - radius));
+  }
+  return worst;
+}
+
+// The error a picture refuses with (or none).
+std::optional<DuctError> refusal(const std::string& text) {
+  try {
+    read_duct(text);
+  } catch (const DuctError& e) {
+    return e;
+  }
+  return std::nullopt;
+}
+
+// A small good picture (line numbers in the damaged tests refer to it): two instructions, a
+// straight line and Bézier spans continuing it, five pixels.
+const std::string small_picture =
+    "SMALL 01 JAN 1975 00:00:00\n"                                              // 1
+    " *\n"                                                                      // 2
+    "      4     3    -1     2     5     0     3     0     0     0\n"           // 3
+    "    0.0000   10.0000    0.0000   10.0000    0.0000    0.0000    0.0000\n"  // 4
+    "        2048      2\n"                                                     // 5
+    "        3096      3\n"                                                     // 6
+    "  0.0000000E+00  0.0000000E+00  0.0000000E+00\n"                           // 7
+    "  0.1000000E+02  0.0000000E+00  0.0000000E+00\n"                           // 8
+    "  0.1000000E+02  0.5000000E+01  0.0000000E+00\n"                           // 9
+    "  0.5000000E+01  0.1000000E+02  0.0000000E+00\n"                           // 10
+    "  0.0000000E+00  0.1000000E+02  0.0000000E+00\n";                          // 11
+
+// `text` with line `number` (1-based) replaced by `line` (removed when nullopt).
+std::string with_line(const std::string& text, std::size_t number,
+                      std::optional<std::string> line) {
+  std::istringstream in(text);
+  std::string out, l;
+  for (std::size_t n = 1; std::getline(in, l); ++n) {
+    if (n == number) {
+      if (line) out += *line + "\n";
+    } else {
+      out += l + "\n";
+    }
+  }
+  return out;
+}
+
+void expect_refusal(const std::string& text, DuctError::Problem problem, std::size_t line) {
+  const auto e = refusal(text);
+  REQUIRE(e);
+  CAPTURE(e->what());
+  CHECK(e->problem == problem);
+  CHECK(e->line == line);
+  CHECK(e->reason().rfind("LINE " + std::to_string(line) + ": ", 0) == 0);
+}
+
+}  // namespace
+
+TEST_CASE("instruction codes decompose into their six parts and back") {
+  int valid = 0;
+  for (std::int64_t code = 0; code < 3 * 2048; ++code) {
+    const auto in = decompose_duct_code(code);
+    if (!in) continue;
+    ++valid;
+    CHECK(in->code() == code);
+  }
+  // Colours 0..2, 3 arc kinds, 5 marks, 2 positions, 4 pen codes, 3 dashes.
+  CHECK(valid == 3 * 3 * 5 * 2 * 4 * 3);
+  const auto a = decompose_duct_code(4897);  // the seed's example
+  REQUIRE(a);
+  CHECK(a->colour == 2);
+  CHECK(a->arc == DuctArc::conic);
+  CHECK(a->mark == DuctMark::diamond);
+  CHECK(a->mark_all);
+  CHECK(a->pen == DuctPen::move);
+  CHECK(a->dash == DuctDash::dashed);
+  for (std::int64_t bad : {std::int64_t(2051), std::int64_t(2048 + 1536), std::int64_t(2048 + 320),
+                           std::int64_t(-2048), std::int64_t(1) << 31})
+    CHECK_FALSE(decompose_duct_code(bad));
+}
+
+TEST_CASE("FORTRAN fields: widths, exponents, overflow, and the numbers readers accept") {
+  std::string s;
+  put_exponent(s, 12.5, 14, 7);
+  put_exponent(s, -0.001234567, 14, 7);
+  put_exponent(s, 0, 14, 7);
+  put_exponent(s, -0.0, 14, 7);
+  put_exponent(s, 1e100, 14, 7);
+  put_exponent(s, -2.5e-200, 14, 7);
+  put_exponent(s, 9.99999996, 14, 7);
+  CHECK(s ==
+        " 0.1250000E+02-0.1234567E-02 0.0000000E+00 0.0000000E+00 0.1000000+101-0.2500000-199"
+        " 0.1000000E+02");
+  s.clear();
+  put_fixed(s, -2.07107, 10, 4);
+  put_fixed(s, 123456.75, 10, 4);  // too wide: in full after a blank
+  put_fixed(s, -0.00001, 10, 4);
+  put_integer(s, -12345, 6);
+  put_integer(s, 1234567, 6);
+  CHECK(s == "   -2.0711 123456.7500   -0.0000-12345 1234567");
+  s.clear();
+  for (double v : {1.0, 0.1, 1e20, -2.5e-7, 0.0, -0.0, 123.456, 1e-300}) (put_real(s, v), s += ' ');
+  CHECK(s == "1. 0.1 1.E20 -2.5E-7 0. 0. 123.456 1.E-300 ");
+
+  for (const auto& [token, value] :
+       std::vector<std::pair<const char*, double>>{{"0.1250000E+02", 12.5},
+                                                   {"0.1D+02", 10},
+                                                   {"0.1d-02", 0.001},
+                                                   {"0.1000000+101", 1e100},
+                                                   {"0.25-3", 0.00025},
+                                                   {"+.5", 0.5},
+                                                   {"5.", 5},
+                                                   {"-7", -7},
+                                                   {"1E5", 1e5}})
+    CHECK(parse_fortran_real(token) == value);
+  for (const char* bad : {"", "1e", "e5", "1.2.3", "nan", "inf", "--1", "+-1", "1e999", "0x10",
+                          "1 2", "1,2", ".", "-", "1E+", "12a"})
+    CHECK_FALSE(parse_fortran_real(bad));
+  CHECK(parse_fortran_integer("+42") == 42);
+  CHECK(parse_fortran_integer("-2048") == -2048);
+  for (const char* bad : {"", "+", "-", "4.0", "1e3", "99999999999999999999", "+-3", "12 "})
+    CHECK_FALSE(parse_fortran_integer(bad));
+  CHECK(duct_date({1987, 9, 22, 9, 55, 50}) == "22 SEP 1987 09:55:50");
+  CHECK(iges_date({1987, 9, 22, 9, 55, 50}) == "19870922.095550");
+  CHECK(iso_date({1987, 9, 22, 9, 55, 50}) == "1987-09-22T09:55:50");
+}
+
+TEST_CASE("the hand-written picture is read as the spec says") {
+  const DuctPicture p = read_duct(hand_written());
+  REQUIRE(p.header.size() == 2);
+  CHECK(p.header[0] == "DUCT MARK 4.4 PICTURE FILE HANDWRITTEN 14 MAR 1988 10:15:00");
+  CHECK(p.counters == std::array<std::int64_t, 10>{7, 3, -1, 10, 30, 0, 3, 0, 0, 0});
+  CHECK(p.reals == std::array<double, 7>{-2.0711, 50, -5, 35, 0, 5, 0});
+  CHECK(p.has_tu());
+  CHECK(p.has_texts());
+  REQUIRE(p.instructions.size() == 10);
+  const std::vector<std::int64_t> codes = {2112, 2072,  4264, 4113, 6946,
+                                           2584, 10833, 9440, 3098, 2056};
+  const std::vector<std::size_t> pixels = {1, 2, 3, 2, 3, 4, 3, 7, 3, 2};
+  for (std::size_t n = 0; n < 10; ++n) {
+    CHECK(p.instructions[n].code() == codes[n]);
+    CHECK(p.instructions[n].pixels == pixels[n]);
+  }
+  const DuctInstruction& seventh = p.instructions[6];
+  CHECK(seventh.colour == 5);
+  CHECK(seventh.arc == DuctArc::conic);
+  CHECK(seventh.mark == DuctMark::cross);
+  CHECK_FALSE(seventh.mark_all);
+  CHECK(seventh.pen == DuctPen::visible);
+  CHECK(seventh.dash == DuctDash::dashed);
+  REQUIRE(p.pixel_count() == 30);
+  CHECK(Vec3::load(&p.xyz[3 * 9]) == Vec3{47.07107, 7.071068, 0});
+  CHECK(p.tu[2 * 9] == 1);
+  CHECK(p.tu[2 * 13] == -2);
+  CHECK(Vec3::load(&p.xyz[3 * 29]) == Vec3{40, -5, 0});
+  REQUIRE(p.texts.size() == 3);
+  CHECK(p.texts[0] ==
+        DuctText{29, 2, 1, 0, 3, "IGDS HAND-WRITTEN DUCT PICTURE FOR THE READER TESTS"});
+  CHECK(p.texts[1] == DuctText{1, 1, 2, 45, 2.5, "ORIGIN"});
+  CHECK(p.texts[2] == DuctText{30, 1, 0, 0, 3, "%mm"});
+  REQUIRE(p.dimensions.size() == 1);
+  CHECK(p.dimensions[0].k == std::array<std::int64_t, 11>{1, 1, 0, 1, 2, 0, 30, 1, 1, 2, 0});
+  CHECK(p.dimensions[0].t == 0);
+}
+
+TEST_CASE("the hand-written picture drawn item by item") {
+  const Drawing3 d = duct_drawing(read_duct(hand_written()));
+  const auto items = d.items();
+  REQUIRE(items.size() == 21);
+  using K = Drawing3::Kind;
+  auto check_item = [&](std::size_t k, K kind, int pen, Dash dash, int instruction) {
+    CAPTURE(k);
+    CHECK(items[k].kind == kind);
+    CHECK(items[k].style.pen == pen);
+    if (kind != K::mark) CHECK(items[k].style.dash == dash);
+    CHECK(items[k].id == Identity{Role::line, instruction});
+  };
+  auto check_mark = [&](std::size_t k, MarkShape shape, Vec3 at) {
+    CAPTURE(k);
+    CHECK(items[k].shape == shape);
+    CHECK(items[k].size == duct_mark_size);
+    CHECK(point_of(d, items[k], 0) == at);
+  };
+  const Vec3 origin{0, 0, 0};
+  // 1: 2112, an X on its one pixel; a single pixel draws no line.
+  check_item(0, K::mark, 1, Dash::solid, 1);
+  check_mark(0, MarkShape::cross, origin);
+  // 2: 2072, IUPDN 24: straight lines on from pixel 1.
+  check_item(1, K::polyline, 1, Dash::solid, 2);
+  REQUIRE(d.points(items[1]).size() == 3);
+  CHECK(point_of(d, items[1], 0) == origin);
+  CHECK(point_of(d, items[1], 2) == Vec3{10, 10, 0});
+  // 3: 4264, invisible, a plus on every pixel, colour 2.
+  for (std::size_t k = 2; k <= 4; ++k) check_item(k, K::mark, 2, Dash::solid, 3);
+  check_mark(2, MarkShape::plus, {20, 0, 0});
+  check_mark(4, MarkShape::plus, {30, 0, 0});
+  // 4: 4113, IUPDN 16: a visible line from the last pixel of 3, dashed, colour 2.
+  check_item(5, K::polyline, 2, Dash::dashed, 4);
+  REQUIRE(d.points(items[5]).size() == 3);
+  CHECK(point_of(d, items[5], 0) == Vec3{30, 0, 0});
+  CHECK(point_of(d, items[5], 2) == Vec3{40, 10, 0});
+  // 5: 6946, a quarter circle (s = 1, M equidistant), chain dashed, colour 3, diamonds at the
+  // span's ends.
+  check_item(6, K::curve, 3, Dash::chain, 5);
+  CHECK(items[6].degree == 2);
+  REQUIRE(d.points(items[6]).size() == 3);
+  CHECK(near(point_of(d, items[6], 1), {50, 10, 0}, 1e-5));
+  CHECK(d.weights(items[6])[1] == doctest::Approx(std::sqrt(0.5)).epsilon(1e-6));
+  CHECK(off_circle(d, items[6], {40, 0, 0}, 10) < 1e-5);
+  check_item(7, K::mark, 3, Dash::chain, 5);
+  check_mark(7, MarkShape::diamond, {50, 0, 0});
+  check_mark(8, MarkShape::diamond, {40, 10, 0});
+  // 6: 2584, IUPDN 24 conic arcs: a parabola (s = 0: weight 1, control 2M - Q), then s = -2,
+  // f < 0, the wrong half of the hyperbola: the two lines P0 M and M P1.
+  check_item(9, K::curve, 1, Dash::solid, 6);
+  REQUIRE(d.points(items[9]).size() == 7);
+  CHECK(point_of(d, items[9], 0) == Vec3{40, 10, 0});
+  CHECK(near(point_of(d, items[9], 1), {35, 15, 0}, 1e-12));
+  CHECK(point_of(d, items[9], 2) == Vec3{30, 10, 0});
+  CHECK(point_of(d, items[9], 3) == Vec3{27.5, 12.5, 0});
+  CHECK(point_of(d, items[9], 4) == Vec3{25, 15, 0});
+  CHECK(point_of(d, items[9], 5) == Vec3{22.5, 12.5, 0});
+  CHECK(point_of(d, items[9], 6) == Vec3{20, 10, 0});
+  for (double w : d.weights(items[9])) CHECK(w == 1);
+  // 7: 10833, IUPDN 16: a visible straight join, then three quarters of a circle (s = 1,
+  // f > 2: two spans), an X on the first pixel only, dashed, colour 5.
+  check_item(10, K::polyline, 5, Dash::dashed, 7);
+  CHECK(point_of(d, items[10], 0) == Vec3{20, 10, 0});
+  CHECK(point_of(d, items[10], 1) == Vec3{0, 20, 0});
+  check_item(11, K::curve, 5, Dash::dashed, 7);
+  REQUIRE(d.points(items[11]).size() == 5);
+  for (double w : d.weights(items[11])) CHECK(w > 0);
+  CHECK(off_circle(d, items[11], {5, 25, 0}, 5 * std::sqrt(2.0)) < 1e-5);
+  CHECK(near(point_of(d, items[11], 2), {5, 32.07107, 0}, 1e-12));
+  check_item(12, K::mark, 5, Dash::dashed, 7);
+  check_mark(12, MarkShape::cross, {0, 20, 0});
+  // 8: 9440, two Bézier spans, squares at the span ends (not the controls), colour 4.
+  check_item(13, K::curve, 4, Dash::solid, 8);
+  CHECK(items[13].degree == 3);
+  CHECK(d.weights(items[13]).empty());
+  REQUIRE(d.points(items[13]).size() == 7);
+  check_mark(14, MarkShape::square, {0, 30, 0});
+  check_mark(15, MarkShape::square, {10, 30, 0});
+  check_mark(16, MarkShape::square, {20, 30, 5});
+  // 9: 3098, IUPDN 24 Bézier span from pixel 25, chain dashed.
+  check_item(17, K::curve, 1, Dash::chain, 9);
+  REQUIRE(d.points(items[17]).size() == 4);
+  CHECK(point_of(d, items[17], 0) == Vec3{20, 30, 5});
+  CHECK(point_of(d, items[17], 3) == Vec3{30, 30, 5});
+  // 10: 2056, invisible and unmarked: nothing. The texts, at their pixels.
+  CHECK(items[18].kind == K::text);
+  CHECK(d.text(items[18]) == "IGDS HAND-WRITTEN DUCT PICTURE FOR THE READER TESTS");
+  CHECK(point_of(d, items[18], 0) == Vec3{0, -5, 0});
+  CHECK(items[18].style.pen == 2);
+  CHECK(items[18].id == Identity{Role::label, 1, 29});
+  CHECK(d.text(items[19]) == "ORIGIN");
+  CHECK(point_of(d, items[19], 0) == origin);
+  CHECK(d.text(items[20]) == "%mm");
+  CHECK(point_of(d, items[20], 0) == Vec3{40, -5, 0});
+}
+
+TEST_CASE("the reader is tolerant as list-directed FORTRAN reads are") {
+  const DuctPicture original = read_duct(hand_written());
+  // The numbers of the hand-written picture re-laid: separated by commas, tabs or single blanks,
+  // the counters on two lines, D exponents, a blank line between the sections, CR LF ends.
+  std::istringstream in(hand_written());
+  std::string line, text;
+  for (std::size_t n = 1; std::getline(in, line); ++n) {
+    if (n >= 4 && n <= 45) {
+      std::istringstream tokens(line);
+      std::vector<std::string> t;
+      for (std::string w; tokens >> w;) t.push_back(w);
+      for (auto& w : t)
+        if (n % 3 == 0) std::replace(w.begin(), w.end(), 'E', 'D');
+      std::string joined;
+      for (std::size_t k = 0; k < t.size(); ++k) {
+        if (n == 4 && k == 4)
+          joined += "\r\n";
+        else if (k > 0)
+          joined += n % 2 == 0 ? "," : (n % 5 == 0 ? "\t" : " ");
+        joined += t[k];
+      }
+      line = joined;
+    }
+    text += line + "\r\n";
+    if (n == 15) text += "   \r\n";
+  }
+  const DuctPicture relaid = read_duct(text);
+  CHECK(relaid == original);
+
+  // Fields packed in their columns: -12345 fills its I6, 12345.6789 its F10.4.
+  const std::string packed =
+      "PACKED\n *\n      4     3    -1     1     1     0     3-12345-12345-12345\n"
+      " -1234.5678 1234.5678-1234.5678-1234.5678-1234.5678-1234.5678-1234.5678\n"
+      "        2056      1\n  0.1000000E+01  0.2000000E+01  0.3000000E+01\n";
+  const DuctPicture p = read_duct(packed);
+  CHECK(p.counters[9] == -12345);
+  CHECK(p.reals[0] == -1234.5678);
+  CHECK(p.reals[1] == 1234.5678);
+  // A header of one line; trailing blank lines; the '*' anywhere on its line.
+  CHECK_NOTHROW(
+      read_duct("X\n   *  \n" + with_line(small_picture, 1, std::nullopt).substr(3) + "\n  \n"));
+}
+
+TEST_CASE("damaged pictures are refused with the line and the reason") {
+  using P = DuctError::Problem;
+  REQUIRE_NOTHROW(read_duct(small_picture));
+  expect_refusal(with_line(small_picture, 2, std::nullopt), P::no_star, 11);
+  expect_refusal("", P::no_star, 1);
+  expect_refusal(with_line(small_picture, 11, std::nullopt), P::truncated, 11);
+  expect_refusal(small_picture.substr(0, small_picture.find("3096") - 8), P::truncated, 6);
+  expect_refusal(with_line(small_picture, 8, "  0.1x00000E+02  0.0000000E+00  0.0000000E+00"),
+                 P::not_a_number, 8);
+  expect_refusal(with_line(small_picture, 5, "        2048      2.5"), P::not_a_number, 5);
+  expect_refusal(with_line(small_picture, 9, "  0.1E+02  0.5E+01  0.0E+00  0.0E+00"),
+                 P::too_many_numbers, 9);
+  expect_refusal(
+      with_line(small_picture, 3, "      3     3    -1     2     5     0     3     0     0     0"),
+      P::version, 3);
+  auto counter = [&](const char* line, int which) {
+    const auto e = refusal(with_line(small_picture, 3, std::string(line)));
+    REQUIRE(e);
+    CHECK(e->problem == P::counter);
+    CHECK(e->which == which);
+    CHECK(e->line == 3);
+  };
+  counter("      4     4    -1     2     5     0     3     0     0     0", 2);
+  counter("      4     3    -1     0     5     0     3     0     0     0", 4);
+  counter("      4     3    -1     2    -5     0     3     0     0     0", 5);
+  counter("      4     3    -1     2     5     0     5     0     0     0", 7);
+  expect_refusal(with_line(small_picture, 3,
+                           "      4     3    -1     2 5000000     0     3     0     0     0"),
+                 P::too_large, 3);
+  expect_refusal(with_line(small_picture, 5, "        2051      2"), P::code, 5);
+  expect_refusal(with_line(small_picture, 5, "        2048      0"), P::no_pixels, 5);
+  // Bézier spans of IUPDN 0 need 3n+1 pixels, conic arcs 2n+1 (2n after IUPDN 24).
+  expect_refusal(with_line(small_picture, 6, "        3072      3"), P::arc_pixels, 6);
+  expect_refusal(with_line(small_picture, 6, "        2584      3"), P::arc_pixels, 6);
+  expect_refusal(with_line(small_picture, 5, "        2072      2"), P::nothing_to_continue, 5);
+  expect_refusal(
+      with_line(small_picture, 3, "      4     3    -1     2     4     0     3     0     0     0"),
+      P::pixel_sum, 6);
+  expect_refusal(
+      with_line(small_picture, 3, "      4     3    -1     2     6     0     3     0     0     0") +
+          "  0.0000000E+00  0.1000000E+02  0.0000000E+00\n",
+      P::pixel_sum, 3);
+  expect_refusal(
+      with_line(small_picture, 3, "      4     3    -1     3     5     0     3     0     0     0") +
+          "  0.0000000E+00  0.1000000E+02  0.0000000E+00\n",
+      P::instruction_count, 7);
+  expect_refusal(
+      with_line(small_picture, 3, "      4     3    -1     2     5    -2     3     0     0     0"),
+      P::only_lines, 6);
+  const std::string with_text =
+      with_line(small_picture, 3, "      6     3    -1     2     5     0     3     0     0     0");
+  REQUIRE_NOTHROW(read_duct(with_text + "      1     0\n        5  2  1 1   0.000   3.000" +
+                            std::string(17, ' ') + "OK\n"));
+  expect_refusal(with_text + "      1     0\n        6  2  1 1   0.000   3.000" +
+                     std::string(17, ' ') + "NO\n",
+                 P::text_pixel, 13);
+  expect_refusal(with_text + "      1     0\n        5 81  1 1   0.000   3.000" +
+                     std::string(17, ' ') + "NO\n",
+                 P::text_length, 13);
+  expect_refusal(
+      with_text +
+          "      0     1\n  1       9       0 1       2       0       1  1  1  2 0   0.000\n",
+      P::text_pixel, 13);
+  expect_refusal(with_text + "     -1     0\n", P::text_counts, 12);
+  expect_refusal(small_picture + " 1 2 3\n", P::trailing, 12);
+}
+
+TEST_CASE("refusals come before any allocation for the counts") {
+  // Counts of four million pixels in a file of a dozen lines: refused as truncated at once.
+  const auto e = refusal(with_line(
+      small_picture, 3, "      4     3    -1     1 4000000     0     3     0     0     0"));
+  REQUIRE(e);
+  CHECK(e->problem == DuctError::Problem::truncated);
+  CHECK(e->expected == 4000001 - 7);
+}
+
+TEST_CASE("conic arcs: circles, parabolas, hyperbolas, the major arc and the fallback") {
+  // A quarter circle from s = 1 with M on the arc's middle stays within 1e-12 of the circle.
+  const double r = std::sqrt(0.5);
+  ConicSpans q = conic_spans({1, 0, 0}, {r, r, 0}, {0, 1, 0}, 1);
+  REQUIRE(q.spans == 1);
+  CHECK_FALSE(q.lines);
+  CHECK(std::abs(q.weights[1] - r) < 1e-15);
+  CHECK(norm(q.controls[1] - Vec3{1, 1, 0}) < 1e-15);
+  double worst = 0;
+  for (int i = 0; i <= 1000; ++i) {
+    const Vec3 c[3] = {q.controls[0], q.controls[1], q.controls[2]};
+    const double w[3] = {q.weights[0], q.weights[1], q.weights[2]};
+    worst = std::max(worst, std::abs(norm(conic_point(c, w, i / 1000.0)) - 1));
+  }
+  CHECK(worst < 1e-12);
+  // Arcs of every opening, up to almost the whole circle: s = 1 keeps them circular, f >= 2
+  // (beyond a half circle) as two spans of positive weights.
+  for (double half : {0.1, 0.7, 1.5, std::numbers::pi / 2, 2.0, 2.8, 3.1}) {
+    const Vec3 p0{std::cos(-half), std::sin(-half), 0}, p1{std::cos(half), std::sin(half), 0};
+    const ConicSpans c = conic_spans(p0, {1, 0, 0}, p1, 1);
+    if (std::abs(half - std::numbers::pi / 2) > 1e-9) CHECK(c.spans == (half > 1.6 ? 2 : 1));
+    double off = 0;
+    for (int s = 0; s < c.spans; ++s) {
+      const Vec3 ctl[3] = {c.controls[2 * s], c.controls[2 * s + 1], c.controls[2 * s + 2]};
+      const double w[3] = {c.weights[2 * s], c.weights[2 * s + 1], c.weights[2 * s + 2]};
+      CHECK(w[1] > 0);
+      for (int i = 0; i <= 200; ++i)
+        off = std::max(off, std::abs(norm(conic_point(ctl, w, i / 200.0)) - 1));
+    }
+    CAPTURE(half);
+    CHECK(off < 1e-12);
+  }
+  // s = 0: a parabola, weight 1, control 2M - Q.
+  const ConicSpans parabola = conic_spans({0, 0, 0}, {2, 1, 0}, {4, 0, 0}, 0);
+  CHECK(parabola.weights[1] == 1);
+  CHECK(parabola.controls[1] == Vec3{2, 2, 0});
+  // b = 1/2 here. s < 0 with f > 0: a hyperbola (weight above 1) through M at t = 1/2; f < 0:
+  // its wrong half, the two lines.
+  CHECK(conic_spans({0, 0, 0}, {2, 1, 0}, {4, 0, 0}, -5).lines);           // f = -1/4
+  const ConicSpans h2 = conic_spans({0, 0, 0}, {2, 1, 0}, {4, 0, 0}, -2);  // f = 1/2
+  REQUIRE_FALSE(h2.lines);
+  CHECK(h2.weights[1] == 3);
+  const Vec3 c3[3] = {h2.controls[0], h2.controls[1], h2.controls[2]};
+  const double w3[3] = {1, 3, 1};
+  CHECK(norm(conic_point(c3, w3, 0.5) - Vec3{2, 1, 0}) < 1e-15);
+  // f = 0 exactly, a chord of zero length, and overflowing numbers: the two lines.
+  CHECK(conic_spans({0, 0, 0}, {2, 1, 0}, {4, 0, 0}, -4).lines);
+  CHECK(conic_spans({1, 1, 1}, {2, 1, 0}, {1, 1, 1}, 1).lines);
+  CHECK(conic_spans({0, 0, 0}, {2, 1e200, 0}, {4, 0, 0}, 1e200).lines);
+  // conic_shape inverts conic_spans.
+  for (double s : {1.0, 0.0, -0.5, 0.3, 2.5}) {
+    const ConicSpans c = conic_spans({0, 0, 0}, {1.5, 1, 0.25}, {4, 0, 0}, s);
+    REQUIRE(c.spans == 1);
+    const ConicShape shape =
+        conic_shape(c.controls[0], c.controls[1], c.controls[2], 1, c.weights[1], 1);
+    CHECK(shape.shape == doctest::Approx(s).epsilon(1e-12));
+    CHECK(norm(shape.mid - Vec3{1.5, 1, 0.25}) < 1e-12);
+    // Scaled weights are the same curve.
+    const ConicShape scaled =
+        conic_shape(c.controls[0], c.controls[1], c.controls[2], 4, 2 * c.weights[1] * 3, 9);
+    CHECK(scaled.shape == doctest::Approx(s).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("the writer's lines have the spec's field widths") {
+  Drawing3 d;
+  const double line[] = {0, 0, 0, 10, 0, 0};
+  d.add_polyline(Vec3View(line, 2), {.pen = 2, .dash = Dash::dashed});
+  const double arc[] = {10, 0, 0, 10, 10, 0, 0, 10, 0};
+  const double w[] = {1, std::sqrt(0.5), 1};
+  d.add_curve(2, Vec3View(arc, 3), w, {.pen = 3, .dash = Dash::chain});
+  d.add_mark({5, 5, 5}, MarkShape::diamond, 3);
+  d.add_text({1, 2, 3}, "A TEXT", 1, {.pen = 4});
+  const std::string text = write_duct(duct_picture(d, {"ARC", "22 SEP 1987 09:55:50", "A TITLE"}));
+  CHECK(text ==
+        "IGDS PICTURE FILE ARC 22 SEP 1987 09:55:50\n"
+        "A TITLE\n"
+        " *\n"
+        "      7     3    -1     4     7     0     3     0     0     0\n"
+        "     0.0000   10.0000    0.0000   10.0000    0.0000    5.0000    0.0000\n"
+        "        4097      2\n"
+        "        6658      3\n"
+        "        2312      1\n"
+        "        8200      1\n"
+        "  0.0000000E+00  0.0000000E+00  0.0000000E+00     0.0000     0.0000\n"
+        "  0.1000000E+02  0.0000000E+00  0.0000000E+00     0.0000     0.0000\n"
+        "  0.1000000E+02  0.0000000E+00  0.0000000E+00     0.0000     0.0000\n"
+        "  0.7071068E+01  0.7071068E+01  0.0000000E+00     1.0000     0.0000\n"
+        "  0.0000000E+00  0.1000000E+02  0.0000000E+00     0.0000     0.0000\n"
+        "  0.5000000E+01  0.5000000E+01  0.5000000E+01     0.0000     0.0000\n"
+        "  0.1000000E+01  0.2000000E+01  0.3000000E+01     0.0000     0.0000\n"
+        "      1     0\n"
+        "        7  6  4 1   0.000   3.000                 A TEXT\n");
+}
+
+TEST_CASE("records whose numbers overflow their fields are still read back") {
+  // A full field touches its neighbour; once one overflows, the columns are lost and every
+  // number of the record gets a blank before it.
+  DuctPicture p = read_duct(small_picture);
+  p.reals = {0.00001, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200};
+  p.counters[7] = -12345;
+  std::string text = write_duct(p);
+  CHECK(text.find("\n  0.0000 18772.2300 -1234.5678 123456.7890 0.0000 5.0000 1.E200\n") !=
+        std::string::npos);
+  DuctPicture back = read_duct(text);
+  CHECK(back.reals == std::array<double, 7>{0, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200});
+  CHECK(back.counters == p.counters);
+  p.reals = {0.00001, 18772.23, -1234.5678, 0, 0, 5, 0};
+  text = write_duct(p);
+  CHECK(text.find("\n     0.000018772.2300-1234.5678    0.0000") != std::string::npos);
+  CHECK(read_duct(text).reals[1] == 18772.23);
+  // Texts keep their column 51 whatever their numbers.
+  p.counters[0] = 6;
+  p.texts = {{5, -1000, 77777, 725.5, 1e6, "TEXT"}};
+  p.dimensions = {{{1, 1, 0, 1, 2, 0, 5, 123456789, 1, 2, 0}, 0}};
+  back = read_duct(write_duct(p));
+  REQUIRE(back.texts.size() == 1);
+  CHECK(back.texts[0] == DuctText{5, -99, 99, 5.5, 9999.999, "TEXT"});
+  CHECK(back.dimensions == p.dimensions);
+  CHECK_THROWS_AS(read_duct(write_duct(p) + "x"), DuctError);
+}
+
+TEST_CASE("a drawing written and read back gives the same items") {
+  Drawing3 d;
+  const double open[] = {0, 0, 0, 3, 1, 2, 5, -2, 4};
+  d.add_polyline(Vec3View(open, 3), {.pen = 1});
+  const double square[] = {0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1};
+  d.add_polyline(Vec3View(square, 4), {.pen = 2, .dash = Dash::dashed}, {}, true);
+  const double cubic[] = {0, 0, 0, 1, 2, 0, 3, 2, 1, 4, 0, 1, 5, -2, 1, 7, -2, 0, 8, 0, 0};
+  d.add_curve(3, Vec3View(cubic, 7), {}, {.pen = 3, .dash = Dash::chain});
+  const double quarter[] = {1, 0, 0, 1, 1, 0, 0, 1, 0};
+  const double qw[] = {1, std::sqrt(0.5), 1};
+  d.add_curve(2, Vec3View(quarter, 3), qw, {.pen = 4});
+  const double parabola[] = {0, 0, 2, 1, 3, 2, 2, 0, 2, 3, -1, 2, 4, 0, 2};
+  d.add_curve(2, Vec3View(parabola, 5));
+  d.add_mark({1, 1, 1}, MarkShape::cross, duct_mark_size);
+  d.add_mark({2, 1, 1}, MarkShape::cross, duct_mark_size);
+  d.add_mark({3, 1, 1}, MarkShape::plus, duct_mark_size, {.pen = 2});
+  d.add_mark({4, 1, 1}, MarkShape::square, duct_mark_size);
+  d.add_mark({5, 1, 1}, MarkShape::diamond, duct_mark_size);
+  d.add_text({0, 5, 0}, "HELLO", 1, {.pen = 2});
+  d.add_text({0, 6, 0}, "A TEXT LONGER THAN THIRTY CHARACTERS, ON TWO LINES", 1);
+
+  const std::string text = write_duct(duct_picture(d, {"ROUND", "01 JAN 1975 00:00:00", ""}));
+  const Drawing3 back = duct_drawing(read_duct(text));
+  REQUIRE(back.size() == d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    CAPTURE(k);
+    const auto& a = d.items()[k];
+    const auto& b = back.items()[k];
+    CHECK(a.kind == b.kind);
+    CHECK(a.style == b.style);
+    CHECK(a.shape == b.shape);
+    CHECK(a.degree == b.degree);
+    auto pa = d.points(a);
+    auto pb = back.points(b);
+    const std::size_t closing = a.closed ? 1 : 0;
+    REQUIRE(pb.size() == pa.size() + closing);
+    for (std::size_t i = 0; i < pb.size(); ++i)
+      CHECK(near(pb[i], pa[i % pa.size()], 5e-7 * std::max(1.0, norm(pa[i % pa.size()]))));
+    const auto wa = d.weights(a), wb = back.weights(b);
+    for (std::size_t i = 0; i < wa.size(); ++i)
+      CHECK(wb[i] == doctest::Approx(wa[i]).epsilon(1e-6));
+    if (a.kind == Drawing3::Kind::text) CHECK(d.text(a) == back.text(b));
+  }
+  // The picture itself comes back the same: numbers read print to the same digits.
+  const DuctPicture once = read_duct(text);
+  CHECK(read_duct(write_duct(once)) == once);
+  CHECK(write_duct(read_duct(write_duct(once))) == write_duct(once));
+}
+
+TEST_CASE("a surface's picture: counters, the box and exact spans") {
+  const TestSurface t = golden_surface();
+  const Drawing3 d = surface_curves(t.input, t.surface);
+  const DuctPicture p = duct_picture(d, {"SURFACE", "22 SEP 1987 09:55:50", "SURFACE"});
+  // 13 curves and 10 stringers, the border, 18 tangents, one instruction for the 20 points.
+  CHECK(p.counters[0] == 4);
+  CHECK(p.counters[3] == 13 + 10 + 1 + 18 + 1);
+  CHECK(std::size_t(p.counters[4]) == p.pixel_count());
+  CHECK(p.pixel_count() == 13 * 10 + 10 * 13 + 15 + 2 * 18 + 20);
+  CHECK(p.counters[5] == 0);
+  CHECK(p.counters[6] == 3);
+  // R1..R6 hold the curves and are tight to F10.4's last digit: dense samples of every span
+  // lie inside, and come within 1e-4 of each limit.
+  std::array<double, 6> seen = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
+  for (const auto& item : d.items()) {
+    const auto pts = d.points(item);
+    auto see = [&](Vec3 v) {
+      const double c[3] = {v.x, v.y, v.z};
+      for (int k = 0; k < 3; ++k) {
+        seen[2 * k] = std::min(seen[2 * k], c[k]);
+        seen[2 * k + 1] = std::max(seen[2 * k + 1], c[k]);
+      }
+    };
+    if (item.kind == Drawing3::Kind::curve) {
+      for (std::size_t s = 0; s + 3 < pts.size(); s += 3) {
+        const Vec3 c[4] = {pts[s], pts[s + 1], pts[s + 2], pts[s + 3]};
+        for (int i = 0; i <= 400; ++i) see(bezier3(c, i / 400.0));
+      }
+    } else {
+      for (Vec3 v : pts) see(v);
+    }
+  }
+  for (int k = 0; k < 6; ++k) {
+    CAPTURE(k);
+    if (k % 2 == 0) {
+      CHECK(p.reals[k] <= seen[k]);
+      CHECK(p.reals[k] > seen[k] - 1.01e-4);
+    } else {
+      CHECK(p.reals[k] >= seen[k]);
+      CHECK(p.reals[k] < seen[k] + 1.01e-4);
+    }
+  }
+  // Read back, it draws the same spans (to E14.7's seven digits): the same vectors.
+  const Drawing3 back = duct_drawing(read_duct(write_duct(p)));
+  REQUIRE(back.size() == d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const auto a = d.points(d.items()[k]);
+    const auto b = back.points(back.items()[k]);
+    const std::size_t closing = d.items()[k].closed ? 1 : 0;
+    REQUIRE(b.size() == a.size() + closing);
+    for (std::size_t i = 0; i < a.size(); ++i)
+      CHECK(near(b[i], a[i], 5e-7 * std::max(1.0, norm(a[i]))));
+  }
+}
+
+TEST_CASE("the picture of an image is a projected picture at z = 0") {
+  const TestSurface t = golden_surface();
+  const Drawing3 space = surface_curves(t.input, t.surface);
+  const Vec3 centre = bounding_box(space).centre();
+  const Drawing2 plane = project(space, {Projection::assonometric, {110, 130, 120}}, centre);
+  const DuctPicture p =
+      duct_picture(plane, {"IMAGE", "22 SEP 1987 09:55:50", ""}, Projection::assonometric);
+  CHECK(p.counters[1] == 3);
+  CHECK(p.counters[6] == 2);
+  CHECK(p.counters[7] == 2);
+  CHECK(p.reals[4] == 0);
+  CHECK(p.reals[5] == 0);
+  for (std::size_t k = 0; k < p.pixel_count(); ++k) CHECK(p.xyz[3 * k + 2] == 0);
+  const Drawing3 back = duct_drawing(read_duct(write_duct(p)));
+  REQUIRE(back.size() == plane.size());
+  for (std::size_t k = 0; k < plane.size(); ++k) {
+    const auto a = plane.points(plane.items()[k]);
+    const auto b = back.points(back.items()[k]);
+    REQUIRE(b.size() >= a.size());
+    for (std::size_t i = 0; i < a.size(); ++i)
+      CHECK(near(b[i], {a[i].x, a[i].y, 0}, 5e-7 * std::max(1.0, std::hypot(a[i].x, a[i].y))));
+  }
+}
+
+TEST_CASE("rational cubics of a perspective become straight lines close to them") {
+  const TestSurface t = golden_surface();
+  const Drawing3 space = surface_curves(t.input, t.surface);
+  const Vec3 centre = bounding_box(space).centre();
+  const Drawing2 plane = project(space, {Projection::conic, {60, -80, 50}}, centre);
+  const DuctPicture p = duct_picture(plane, {"CONIC", "", ""}, Projection::conic);
+  CHECK(p.counters[5] == -2);  // straight lines only
+  // Every curve's samples lie within 1e-5 of the picture's extent (plus the seven digits of the
+  // pixels) of its polyline.
+  double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
+  for (const auto& item : plane.items())
+    for (Point2 v : plane.points(item))
+      lo_x = std::min(lo_x, v.x), hi_x = std::max(hi_x, v.x), lo_y = std::min(lo_y, v.y),
+      hi_y = std::max(hi_y, v.y);
+  const double extent = std::max(hi_x - lo_x, hi_y - lo_y);
+  std::size_t pixel = 0, checked = 0;
+  // Item k is instruction k up to the marks (which share one).
+  for (std::size_t k = 0; k < plane.size() && plane.items()[k].kind != Drawing2::Kind::mark; ++k) {
+    const auto& item = plane.items()[k];
+    const std::size_t n = p.instructions[k].pixels;
+    if (item.kind == Drawing2::Kind::curve) {
+      const auto c = plane.points(item);
+      const auto w = plane.weights(item);
+      REQUIRE(w.size() == c.size());
+      double worst = 0;
+      for (std::size_t s = 0; s + 3 < c.size(); s += 3) {
+        for (int i = 0; i <= 50; ++i) {
+          const double tt = i / 50.0, u = 1 - tt;
+          const double b[4] = {u * u * u, 3 * u * u * tt, 3 * u * tt * tt, tt * tt * tt};
+          double x = 0, y = 0, h = 0;
+          for (int j = 0; j < 4; ++j) {
+            const double wj = w[s + std::size_t(j)] * b[j];
+            x += wj * c[s + std::size_t(j)].x, y += wj * c[s + std::size_t(j)].y, h += wj;
+          }
+          x /= h, y /= h;
+          double best = INFINITY;
+          for (std::size_t q = pixel; q + 1 < pixel + n; ++q) {
+            const double ax = p.xyz[3 * q], ay = p.xyz[3 * q + 1], bx = p.xyz[3 * q + 3],
+                         by = p.xyz[3 * q + 4];
+            const double dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
+            const double f =
+                l2 > 0 ? std::clamp(((x - ax) * dx + (y - ay) * dy) / l2, 0.0, 1.0) : 0;
+            best = std::min(best, std::hypot(x - ax - f * dx, y - ay - f * dy));
+          }
+          worst = std::max(worst, best);
+        }
+      }
+      CHECK(worst <= 1e-5 * extent + 1e-6 * std::max(std::abs(hi_x), std::abs(hi_y)) * 10);
+      ++checked;
+    }
+    pixel += n;
+  }
+  CHECK(checked == 23);
+}
+
+TEST_CASE("nothing at all is one invisible pixel; points that are not finite are refused") {
+  const DuctPicture empty = duct_picture(Drawing3{}, {"EMPTY", "", ""});
+  CHECK(empty.instructions.size() == 1);
+  CHECK(empty.instructions[0].pen == DuctPen::invisible);
+  CHECK(duct_drawing(read_duct(write_duct(empty))).empty());
+  Drawing3 bad;
+  const double line[] = {0, 0, 0, NAN, 1, 1};
+  bad.add_polyline(Vec3View(line, 2));
+  try {
+    duct_picture(bad, {"BAD", "", ""});
+    FAIL("no refusal");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::point_not_finite);
+    CHECK(e.number == 1);
+  }
+}
+
+TEST_CASE("mutated pictures are read or refused, never more; what is read writes and reads back") {
+  const std::string base = hand_written();
+  Random random(13);
+  int accepted = 0, refused = 0;
+  for (int n = 0; n < 3000; ++n) {
+    std::string text = base;
+    const int mutations = 1 + int(random.uniform(0, 3));
+    for (int m = 0; m < mutations; ++m) {
+      const std::size_t at = std::size_t(random.uniform(0, double(text.size())));
+      const int kind = int(random.uniform(0, 5));
+      const char* alphabet = "0123456789 -+.E,*\n";
+      const char c = alphabet[std::size_t(random.uniform(0, 18))];
+      if (kind == 0) {
+        text[at] = c;
+      } else if (kind == 1) {
+        text.insert(at, 1, c);
+      } else if (kind == 2) {
+        text.erase(at, std::size_t(random.uniform(1, 40)));
+      } else if (kind == 3) {
+        text.resize(at);
+      } else {
+        const std::size_t from = text.rfind('\n', at), to = text.find('\n', at);
+        if (from != std::string::npos && to != std::string::npos)
+          text.insert(to, text.substr(from, to - from));
+      }
+    }
+    try {
+      const DuctPicture p = read_duct(text);
+      ++accepted;
+      const Drawing3 d = duct_drawing(p);
+      CHECK_NOTHROW(read_duct(write_duct(p)));
+      CHECK_NOTHROW(read_duct(write_duct(duct_picture(d, {"AGAIN", "", ""}))));
+    } catch (const DuctError& e) {
+      ++refused;
+      CHECK(e.line >= 1);
+    }
+  }
+  CHECK(accepted > 100);
+  CHECK(refused > 100);
+}
+
+TEST_CASE("golden: the pictures of a small surface") {
+  const TestSurface t = golden_surface();
+  const Drawing3 d = surface_curves(t.input, t.surface);
+  const std::string date = duct_date({1987, 9, 22, 9, 55, 50});
+  check_golden("surface_5x4.ductpic",
+               write_duct(duct_picture(d, {"SURFACE", date, "SURFACE 5 X 4, INTCU 2, INTST 2"})));
+  const Drawing2 plane =
+      project(d, {Projection::assonometric, {110, 130, 120}}, bounding_box(d).centre());
+  check_golden("surface_5x4_assonometric.ductpic",
+               write_duct(duct_picture(plane, {"IMAGE", date, "ASSONOMETRIC 110 130 120"},
+                                       Projection::assonometric)));
+}
+
+}  // namespace igds::test::exchange

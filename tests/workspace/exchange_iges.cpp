@@ -1,0 +1,321 @@
+// IGES and STEP files of a surface (workspace/exchange/iges.h, step.h), taken apart by the test:
+// fixed 80-column records, sections, pointers and counts, Hollerith strings, every number read
+// back to the same double; STEP references and the product structure; the golden files.
+#include "workspace/exchange/iges.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include "tests/workspace/exchange_support.h"
+#include "workspace/exchange/step.h"
+#include "workspace/exchange/surface_curves.h"
+#include "workspace/kernels/data_error.h"
+
+namespace igds::test::exchange {
+
+namespace {
+
+const CadHeader header{"HULL", "HULL.IGS", {1987, 9, 22, 9, 55, 50}, "A. DESIGNER", "CNUCE PISA"};
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// The free-format parameters of a section's data: integers, reals and Hollerith strings
+// (nHtext), separated by ',' and ended by ';'; blanks outside strings do not count (records are
+// padded with them).
+std::vector<std::string> parameters(const std::string& data) {
+  std::vector<std::string> out;
+  std::size_t i = 0;
+  while (i < data.size()) {
+    while (i < data.size() && data[i] == ' ') ++i;
+    std::size_t j = i;
+    while (j < data.size() && std::isdigit(static_cast<unsigned char>(data[j]))) ++j;
+    if (j > i && j < data.size() && data[j] == 'H') {
+      const std::size_t n = std::stoul(data.substr(i, j - i));
+      out.push_back(data.substr(j + 1, n));
+      i = j + 1 + n;
+    } else {
+      j = data.find_first_of(",;", i);
+      std::string token = data.substr(i, j - i);
+      token.erase(token.find_last_not_of(' ') + 1);
+      out.push_back(token);
+      i = j;
+    }
+    REQUIRE(i < data.size());
+    const char delimiter = data[i++];
+    if (delimiter == ';') break;
+    REQUIRE(delimiter == ',');
+  }
+  return out;
+}
+
+double real(const std::string& s) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  REQUIRE(end == s.c_str() + s.size());
+  return v;
+}
+
+struct Entity {
+  int type = 0, form = 0, subscript = 0;
+  std::string label;
+  std::vector<std::string> parameters;
+};
+
+// Takes an IGES file apart, checking its records, sections and pointers on the way.
+std::vector<Entity> read_iges(const std::string& text, std::vector<std::string>* global = nullptr) {
+  const std::vector<std::string> lines = lines_of(text);
+  std::map<char, std::vector<std::string>> sections;
+  const std::string order = "SGDPT";
+  std::size_t section = 0;
+  for (const auto& line : lines) {
+    REQUIRE(line.size() == 80);
+    const char letter = line[72];
+    REQUIRE(order.find(letter) != std::string::npos);
+    REQUIRE(order.find(letter) >= section);  // sections in order
+    section = order.find(letter);
+    auto& list = sections[letter];
+    list.push_back(line);
+    REQUIRE(std::stoul(line.substr(73)) == list.size());  // sequence numbers from 1
+  }
+  REQUIRE(sections['T'].size() == 1);
+  const std::string& t = sections['T'][0];
+  for (std::size_t k = 0; k < 4; ++k) {
+    CHECK(t[8 * k] == order[k]);
+    CHECK(std::stoul(t.substr(8 * k + 1, 7)) == sections[order[k]].size());
+  }
+  std::string g;
+  for (const auto& line : sections['G']) g += line.substr(0, 72);
+  if (global) *global = parameters(g);
+
+  const auto& d = sections['D'];
+  const auto& p = sections['P'];
+  REQUIRE(d.size() % 2 == 0);
+  std::vector<Entity> out;
+  std::size_t next_p = 1;
+  for (std::size_t k = 0; k < d.size(); k += 2) {
+    auto field = [&](std::size_t line, std::size_t n) { return d[line].substr(8 * (n - 1), 8); };
+    Entity e;
+    e.type = std::stoi(field(k, 1));
+    CHECK(std::stoi(field(k + 1, 1)) == e.type);
+    const std::size_t first = std::stoul(field(k, 2)), count = std::stoul(field(k + 1, 4));
+    CHECK(field(k, 9) == "00000000");
+    e.form = std::stoi(field(k + 1, 5));
+    e.label = field(k + 1, 8);
+    e.label.erase(0, e.label.find_first_not_of(' '));
+    e.subscript = std::stoi(field(k + 1, 9));
+    // The parameter lines follow each other and point back at this entry.
+    CHECK(first == next_p);
+    next_p = first + count;
+    std::string data;
+    for (std::size_t q = first; q < first + count; ++q) {
+      REQUIRE(q <= p.size());
+      const std::string& line = p[q - 1];
+      CHECK(std::stoul(line.substr(65, 7)) == k + 1);
+      CHECK(line[64] == ' ');
+      data += line.substr(0, 64);
+    }
+    e.parameters = parameters(data);
+    REQUIRE(!e.parameters.empty());
+    CHECK(std::stoi(e.parameters[0]) == e.type);
+    out.push_back(std::move(e));
+  }
+  CHECK(next_p == p.size() + 1);
+  return out;
+}
+
+// Knots expanded as written: `first` four times, inner integers three times, `last` four times.
+std::vector<double> bezier_knots(double first, double last) {
+  std::vector<double> k(4, first);
+  for (double s = first + 1; s < last; ++s) k.insert(k.end(), 3, s);
+  k.insert(k.end(), 4, last);
+  return k;
+}
+
+}  // namespace
+
+TEST_CASE("IGES: records, sections, pointers and the global section") {
+  const TestSurface t = golden_surface();
+  std::vector<std::string> g;
+  const std::vector<Entity> entities =
+      read_iges(write_iges(t.input, t.surface.patches, header), &g);
+  REQUIRE(g.size() == 25);
+  CHECK(g[0] == ",");
+  CHECK(g[1] == ";");
+  CHECK(g[2] == "HULL");
+  CHECK(g[3] == "HULL.IGS");
+  CHECK(g[13] == "2");  // millimetres
+  CHECK(g[14] == "MM");
+  CHECK(g[17] == "19870922.095550");
+  CHECK(real(g[18]) > 0);
+  double largest = 0;
+  for (double v : surface_net(t.input, t.surface.patches).xyz)
+    largest = std::max(largest, std::abs(v));
+  CHECK(real(g[19]) == largest);
+  CHECK(g[20] == "A. DESIGNER");
+  CHECK(g[21] == "CNUCE PISA");
+  CHECK(g[22] == "11");  // IGES 5.3
+  // 12 patches, 5 curves, 4 stringers.
+  REQUIRE(entities.size() == 12 + 5 + 4);
+  for (std::size_t k = 0; k < 12; ++k) {
+    CHECK(entities[k].type == 128);
+    CHECK(entities[k].label == "PATCH");
+    CHECK(entities[k].subscript == int(k + 1));
+  }
+  CHECK(entities[12].label == "CURVE");
+  CHECK(entities[16].subscript == 5);
+  CHECK(entities[17].label == "STRINGER");
+}
+
+TEST_CASE("IGES: each patch is its Bézier net, every number read back to the same double") {
+  const TestSurface t = golden_surface();
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  const std::vector<Entity> entities = read_iges(write_iges(t.input, t.surface.patches, header));
+  for (std::size_t i = 0; i < 4; ++i) {
+    for (std::size_t j = 0; j < 3; ++j) {
+      const auto& p = entities[i * 3 + j].parameters;
+      // 128, K1 K2 M1 M2, PROP1..5, 8 + 8 knots, 16 weights, 48 coordinates, U0 U1 V0 V1.
+      REQUIRE(p.size() == 1 + 4 + 5 + 16 + 16 + 48 + 4);
+      CHECK(p[1] == "3");
+      CHECK(p[2] == "3");
+      CHECK(p[7] == "1");  // PROP3: polynomial
+      for (int k = 0; k < 8; ++k) {
+        CHECK(real(p[10 + std::size_t(k)]) == (k < 4 ? double(j) : double(j + 1)));
+        CHECK(real(p[18 + std::size_t(k)]) == (k < 4 ? double(i) : double(i + 1)));
+      }
+      for (std::size_t b = 0; b < 4; ++b)
+        for (std::size_t a = 0; a < 4; ++a)
+          for (std::size_t c = 0; c < 3; ++c)
+            CHECK(real(p[42 + 3 * (4 * b + a) + c]) ==
+                  net.xyz[3 * ((3 * i + b) * net.cols + 3 * j + a) + c]);
+      CHECK(real(p[90]) == double(j));
+      CHECK(real(p[93]) == double(i + 1));
+    }
+  }
+  // Curve 2: the B-spline of surface_curves.h, knots and controls exactly.
+  const auto c = input_curve_bspline(net, 1);
+  REQUIRE(c);
+  const auto& p = entities[13].parameters;
+  const std::size_t n = c->controls.size();
+  REQUIRE(p.size() == 7 + (n + 4) + n + 3 * n + 2 + 3);
+  CHECK(std::stoul(p[1]) == n - 1);
+  std::vector<double> knots;
+  for (std::size_t k = 0; k < c->knots.size(); ++k)
+    knots.insert(knots.end(), std::size_t(c->multiplicities[k]), c->knots[k]);
+  for (std::size_t k = 0; k < knots.size(); ++k) CHECK(real(p[7 + k]) == knots[k]);
+  for (std::size_t k = 0; k < n; ++k) {
+    CHECK(real(p[7 + n + 4 + n + 3 * k]) == c->controls[k].x);
+    CHECK(real(p[7 + n + 4 + n + 3 * k + 2]) == c->controls[k].z);
+  }
+}
+
+TEST_CASE("IGES: one surface with inner knots of multiplicity 3") {
+  const TestSurface t = golden_surface();
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  const std::vector<Entity> entities =
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::one));
+  REQUIRE(entities.size() == 1 + 5 + 4);
+  CHECK(entities[0].label == "SURFACE");
+  const auto& p = entities[0].parameters;
+  REQUIRE(p.size() == 10 + 14 + 17 + 130 + 3 * 130 + 4);
+  CHECK(p[1] == "9");
+  CHECK(p[2] == "12");
+  const std::vector<double> u = bezier_knots(0, 3), v = bezier_knots(0, 4);
+  for (std::size_t k = 0; k < u.size(); ++k) CHECK(real(p[10 + k]) == u[k]);
+  for (std::size_t k = 0; k < v.size(); ++k) CHECK(real(p[24 + k]) == v[k]);
+  for (std::size_t k = 0; k < net.xyz.size(); ++k) CHECK(real(p[41 + 130 + k]) == net.xyz[k]);
+}
+
+TEST_CASE("IGES: a curve that is a point is left out and the directory says so") {
+  TestSurface t = test_surface(4, 5, 0, 0);
+  for (int j = 0; j < 5; ++j) std::fill_n(t.inppn.data() + 3 * j, 3, 1.0);
+  t.surface = interpolate(t.input);
+  const std::vector<Entity> entities = read_iges(write_iges(t.input, t.surface.patches, header));
+  REQUIRE(entities.size() == 12 + 3 + 5);
+  CHECK(entities[12].label == "CURVE");
+  CHECK(entities[12].subscript == 2);
+}
+
+TEST_CASE("IGES and STEP refuse a surface that is not finite or of the wrong shape") {
+  TestSurface t = golden_surface();
+  Array patches = t.surface.patches;
+  patches.ravel[100] = NAN;
+  CHECK_THROWS_AS(write_iges(t.input, patches, header), DataError);
+  CHECK_THROWS_AS(write_step(t.input, patches, header), DataError);
+  patches = Array({3, 3, 3, 4, 4});
+  CHECK_THROWS_AS(write_iges(t.input, patches, header), DataError);
+}
+
+TEST_CASE("STEP: every reference defined once, numbers exact, one part") {
+  const TestSurface t = golden_surface();
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  for (SurfaceForm form : {SurfaceForm::patches, SurfaceForm::one}) {
+    const std::string text = write_step(t.input, t.surface.patches, header, form);
+    CHECK(text.rfind("ISO-10303-21;\nHEADER;\n", 0) == 0);
+    CHECK(text.find("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));") !=
+          std::string::npos);
+    CHECK(text.size() - text.rfind("ENDSEC;\nEND-ISO-10303-21;\n") == 26);
+    // Instances #1..#n in order; every reference names one of them.
+    const std::string data = text.substr(text.find("DATA;\n"));
+    std::map<std::size_t, std::string> instances;
+    const std::regex instance(R"(\n#(\d+)=([A-Z_0-9(]+))");
+    for (auto it = std::sregex_iterator(data.begin(), data.end(), instance);
+         it != std::sregex_iterator(); ++it)
+      instances[std::stoul((*it)[1])] = (*it)[2];
+    REQUIRE(!instances.empty());
+    CHECK(instances.begin()->first == 1);
+    CHECK(instances.rbegin()->first == instances.size());
+    std::set<std::size_t> referenced;
+    const std::regex reference(R"([(,\s]#(\d+))");
+    for (auto it = std::sregex_iterator(data.begin(), data.end(), reference);
+         it != std::sregex_iterator(); ++it)
+      referenced.insert(std::stoul((*it)[1]));
+    for (std::size_t id : referenced) CHECK(instances.count(id) == 1);
+    std::size_t surfaces = 0, curves = 0, points = 0;
+    for (const auto& [id, type] : instances) {
+      surfaces += type == "B_SPLINE_SURFACE_WITH_KNOTS(";
+      curves += type == "B_SPLINE_CURVE_WITH_KNOTS(";
+      points += type == "CARTESIAN_POINT(";
+    }
+    CHECK(surfaces == (form == SurfaceForm::one ? 1 : 12));
+    CHECK(curves == 9);
+    CHECK(instances.count(1));
+    // The net's points come first, in order, each number the same double.
+    const std::regex point(R"(CARTESIAN_POINT\('',\(([^,]+),([^,]+),([^)]+)\)\);)");
+    std::size_t k = 0;
+    for (auto it = std::sregex_iterator(data.begin(), data.end(), point);
+         it != std::sregex_iterator() && k < net.rows * net.cols; ++it, ++k)
+      for (int c = 0; c < 3; ++c)
+        CHECK(real((*it)[std::size_t(c) + 1]) == net.xyz[3 * k + std::size_t(c)]);
+    CHECK(k == net.rows * net.cols);
+    CHECK(points > net.rows * net.cols);
+    CHECK(text.find("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION('HULL'") !=
+          std::string::npos);
+    CHECK(text.find("SI_UNIT(.MILLI.,.METRE.)") != std::string::npos);
+  }
+  // Apostrophes and backslashes are doubled in STEP strings.
+  CadHeader odd = header;
+  odd.name = "O'NEIL\\1";
+  CHECK(write_step(t.input, t.surface.patches, odd).find("PRODUCT('O''NEIL\\\\1'") !=
+        std::string::npos);
+}
+
+TEST_CASE("golden: the IGES and STEP files of a small surface") {
+  const TestSurface t = golden_surface();
+  check_golden("surface_5x4.igs", write_iges(t.input, t.surface.patches, header));
+  CadHeader step = header;
+  step.file_name = "HULL.STP";
+  check_golden("surface_5x4.stp", write_step(t.input, t.surface.patches, step));
+}
+
+}  // namespace igds::test::exchange

@@ -1,0 +1,305 @@
+#include "workspace/exchange/step.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <string_view>
+#include <vector>
+
+#include "workspace/exchange/surface_curves.h"
+#include "workspace/kernels/data_error.h"
+
+namespace igds {
+
+namespace {
+
+// Entity instances of the exchange structure (ISO 10303-21), numbered in order.
+class Instances {
+ public:
+  explicit Instances(std::string& out) : out_(out) {}
+  // Starts instance #n = and returns n.
+  std::size_t begin() {
+    const std::size_t id = next_++;
+    ref(id);
+    out_ += '=';
+    return id;
+  }
+  std::size_t next() const { return next_; }
+  void ref(std::size_t id) {
+    char buffer[24];
+    out_ += '#';
+    out_.append(buffer,
+                std::size_t(std::to_chars(buffer, buffer + sizeof buffer, id).ptr - buffer));
+  }
+  void integer(long long v) {
+    char buffer[24];
+    out_.append(buffer, std::size_t(std::to_chars(buffer, buffer + sizeof buffer, v).ptr - buffer));
+  }
+  void real(double v) {
+    char buffer[32];
+    out_.append(buffer, format_real(buffer, v));
+  }
+  // A string: printable ASCII, apostrophes and backslashes doubled.
+  void string(std::string_view s) {
+    out_ += '\'';
+    for (char c : s) {
+      if (!(c >= 0x20 && c < 0x7F)) c = '?';
+      if (c == '\'' || c == '\\') out_ += c;
+      out_ += c;
+    }
+    out_ += '\'';
+  }
+  std::string& out() { return out_; }
+
+ private:
+  std::string& out_;
+  std::size_t next_ = 1;
+};
+
+// A list of references, a few to a line.
+void references(Instances& s, const std::vector<std::size_t>& ids) {
+  s.out() += '(';
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    if (k > 0) s.out() += k % 8 == 0 ? ",\n  " : ",";
+    s.ref(ids[k]);
+  }
+  s.out() += ')';
+}
+
+// Knot multiplicities and values of Bézier spans on [first, last], one per unit: 4, 3, ..., 3, 4.
+void bezier_knots(Instances& s, std::size_t first, std::size_t last, bool multiplicities) {
+  s.out() += '(';
+  for (std::size_t k = first; k <= last; ++k) {
+    if (k > first) s.out() += ',';
+    if (multiplicities)
+      s.integer(k == first || k == last ? 4 : 3);
+    else
+      s.real(double(k));
+  }
+  s.out() += ')';
+}
+
+}  // namespace
+
+std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                       SurfaceForm form) {
+  const BezierNet net = surface_net(input, patches);
+  const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
+  double largest = 0;
+  for (double v : net.xyz) {
+    if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
+    largest = std::max(largest, std::abs(v));
+  }
+
+  std::string out;
+  // Room for the file at once: a point's instance about 75 characters, a patch's about 170, a
+  // curve's control point and its reference 85.
+  out.reserve(4096 + net.rows * net.cols * 75 + (nc - 1) * (ns - 1) * 170 +
+              (2 * nc * ns + 2 * (nc + ns)) * 85);
+  Instances s(out);
+  out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((";
+  s.string("IGDS surface " + header.name);
+  out += "),'2;1');\nFILE_NAME(";
+  s.string(header.file_name);
+  out += ',';
+  s.string(iso_date(header.date));
+  out += ",(";
+  s.string(header.author);
+  out += "),(";
+  s.string(header.organization);
+  out += "),'IGDS','IGDS EXPORT STEP','');\n";
+  out += "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n";
+
+  // The product: a part of one shape (AP214's smallest product structure).
+  const std::size_t application = s.begin();
+  out += "APPLICATION_CONTEXT('automotive design');\n";
+  s.begin();
+  out += "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,";
+  s.ref(application);
+  out += ");\n";
+  const std::size_t product_context = s.begin();
+  out += "PRODUCT_CONTEXT('',";
+  s.ref(application);
+  out += ",'mechanical');\n";
+  const std::size_t product = s.begin();
+  out += "PRODUCT(";
+  s.string(header.name);
+  out += ',';
+  s.string(header.name);
+  out += ",'',(";
+  s.ref(product_context);
+  out += "));\n";
+  s.begin();
+  out += "PRODUCT_RELATED_PRODUCT_CATEGORY('part',$,(";
+  s.ref(product);
+  out += "));\n";
+  const std::size_t formation = s.begin();
+  out += "PRODUCT_DEFINITION_FORMATION('','',";
+  s.ref(product);
+  out += ");\n";
+  const std::size_t definition_context = s.begin();
+  out += "PRODUCT_DEFINITION_CONTEXT('part definition',";
+  s.ref(application);
+  out += ",'design');\n";
+  const std::size_t definition = s.begin();
+  out += "PRODUCT_DEFINITION('design','',";
+  s.ref(formation);
+  out += ',';
+  s.ref(definition_context);
+  out += ");\n";
+  const std::size_t shape = s.begin();
+  out += "PRODUCT_DEFINITION_SHAPE('','',";
+  s.ref(definition);
+  out += ");\n";
+
+  // Units (mm), uncertainty, the geometric context.
+  const std::size_t mm = s.begin();
+  out += "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n";
+  const std::size_t radian = s.begin();
+  out += "(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n";
+  const std::size_t steradian = s.begin();
+  out += "(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());\n";
+  const std::size_t uncertainty = s.begin();
+  out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
+  s.real(std::max(largest, 1.0) * 1e-9);
+  out += "),";
+  s.ref(mm);
+  out += ",'distance_accuracy_value','');\n";
+  const std::size_t context = s.begin();
+  out += "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((";
+  s.ref(uncertainty);
+  out += "))GLOBAL_UNIT_ASSIGNED_CONTEXT((";
+  s.ref(mm);
+  out += ',';
+  s.ref(radian);
+  out += ',';
+  s.ref(steradian);
+  out += "))REPRESENTATION_CONTEXT('',''));\n";
+
+  // The net's control points, row by row.
+  const std::size_t first_point = s.next();
+  for (std::size_t k = 0; k < net.rows * net.cols; ++k) {
+    s.begin();
+    out += "CARTESIAN_POINT('',(";
+    s.real(net.xyz[3 * k]);
+    out += ',';
+    s.real(net.xyz[3 * k + 1]);
+    out += ',';
+    s.real(net.xyz[3 * k + 2]);
+    out += "));\n";
+  }
+  auto point_id = [&](std::size_t row, std::size_t col) {
+    return first_point + row * net.cols + col;
+  };
+
+  std::vector<std::size_t> items;
+  // A surface of the net's rows [row0, row0 + rows) and columns [col0, col0 + cols): control
+  // points listed by u (columns) outside, v (rows) inside.
+  auto surface = [&](const std::string& name, std::size_t row0, std::size_t rows, std::size_t col0,
+                     std::size_t cols) {
+    items.push_back(s.begin());
+    out += "B_SPLINE_SURFACE_WITH_KNOTS(";
+    s.string(name);
+    out += ",3,3,(";
+    for (std::size_t c = col0; c < col0 + cols; ++c) {
+      out += c > col0 ? ",\n  (" : "(";
+      for (std::size_t r = row0; r < row0 + rows; ++r) {
+        if (r > row0) out += ',';
+        s.ref(point_id(r, c));
+      }
+      out += ')';
+    }
+    out += "),.UNSPECIFIED.,.F.,.F.,.F.,";
+    const std::size_t u0 = col0 / 3, u1 = u0 + (cols - 1) / 3, v0 = row0 / 3,
+                      v1 = v0 + (rows - 1) / 3;
+    bezier_knots(s, u0, u1, true);
+    out += ',';
+    bezier_knots(s, v0, v1, true);
+    out += ',';
+    bezier_knots(s, u0, u1, false);
+    out += ',';
+    bezier_knots(s, v0, v1, false);
+    out += ",.UNSPECIFIED.);\n";
+  };
+  if (form == SurfaceForm::one) {
+    surface("SURFACE", 0, net.rows, 0, net.cols);
+  } else {
+    for (std::size_t i = 0; i + 1 < nc; ++i)
+      for (std::size_t j = 0; j + 1 < ns; ++j)
+        surface("PATCH " + std::to_string(i * (ns - 1) + j + 1), 3 * i, 4, 3 * j, 4);
+  }
+
+  auto curve = [&](const std::string& name, const CubicBspline& c) {
+    std::vector<std::size_t> points;
+    for (Vec3 v : c.controls) {
+      points.push_back(s.begin());
+      out += "CARTESIAN_POINT('',(";
+      s.real(v.x);
+      out += ',';
+      s.real(v.y);
+      out += ',';
+      s.real(v.z);
+      out += "));\n";
+    }
+    items.push_back(s.begin());
+    out += "B_SPLINE_CURVE_WITH_KNOTS(";
+    s.string(name);
+    out += ",3,";
+    references(s, points);
+    out += ",.UNSPECIFIED.,";
+    out += c.controls.front() == c.controls.back() ? ".T." : ".F.";
+    out += ",.F.,(";
+    for (std::size_t k = 0; k < c.multiplicities.size(); ++k) {
+      if (k > 0) out += ',';
+      s.integer(c.multiplicities[k]);
+    }
+    out += "),(";
+    for (std::size_t k = 0; k < c.knots.size(); ++k) {
+      if (k > 0) out += ',';
+      s.real(c.knots[k]);
+    }
+    out += "),.UNSPECIFIED.);\n";
+  };
+  for (std::size_t i = 0; i < nc; ++i)
+    if (auto c = input_curve_bspline(net, i)) curve("CURVE " + std::to_string(i + 1), *c);
+  for (std::size_t j = 0; j < ns; ++j)
+    if (auto c = input_stringer_bspline(net, j)) curve("STRINGER " + std::to_string(j + 1), *c);
+
+  const std::size_t set = s.begin();
+  out += "GEOMETRIC_SET('',";
+  references(s, items);
+  out += ");\n";
+  const std::size_t origin = s.begin();
+  out += "CARTESIAN_POINT('',(0.,0.,0.));\n";
+  const std::size_t z = s.begin();
+  out += "DIRECTION('',(0.,0.,1.));\n";
+  const std::size_t x = s.begin();
+  out += "DIRECTION('',(1.,0.,0.));\n";
+  const std::size_t placement = s.begin();
+  out += "AXIS2_PLACEMENT_3D('',";
+  s.ref(origin);
+  out += ',';
+  s.ref(z);
+  out += ',';
+  s.ref(x);
+  out += ");\n";
+  const std::size_t representation = s.begin();
+  out += "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION(";
+  s.string(header.name);
+  out += ",(";
+  s.ref(set);
+  out += ',';
+  s.ref(placement);
+  out += "),";
+  s.ref(context);
+  out += ");\n";
+  s.begin();
+  out += "SHAPE_DEFINITION_REPRESENTATION(";
+  s.ref(shape);
+  out += ',';
+  s.ref(representation);
+  out += ");\nENDSEC;\nEND-ISO-10303-21;\n";
+  return out;
+}
+
+}  // namespace igds

@@ -1,0 +1,21 @@
+// STEP (ISO 10303-21, AP214 "automotive design") for today's CAD systems: the same geometry as
+// the IGES file (iges.h), as B_SPLINE_SURFACE_WITH_KNOTS and B_SPLINE_CURVE_WITH_KNOTS in the
+// GEOMETRIC_SET of a GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION, inside the smallest
+// product structure a reader maps to a part. docs/exchange.md gives the choices.
+#pragma once
+
+#include <string>
+
+#include "workspace/exchange/iges.h"
+#include "workspace/kernels/surface.h"
+
+namespace igds {
+
+// Surfaces (named PATCH k, or SURFACE) and curves (CURVE i, STRINGER j) with the parameters,
+// knots and controls of write_iges; every control point of the net is one CARTESIAN_POINT that
+// neighbouring patches share. Units millimetres, uncertainty 1e-9 of the largest coordinate.
+// Throws DataError as write_iges does (but for the line limit: STEP has none).
+std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                       SurfaceForm form = SurfaceForm::patches);
+
+}  // namespace igds
