@@ -1,0 +1,257 @@
+#include "interp/apl/lexer.h"
+
+#include <charconv>
+#include <string_view>
+
+#include "interp/apl/error.h"
+#include "interp/apl/text.h"
+
+namespace igds::apl {
+
+namespace {
+
+constexpr std::u32string_view primitive_glyphs = U"+-×÷⌈⌊*⍟|!○?<≤=≥>≠∧∨⍲⍱~⍴,⍳↑↓⌽⊖⍉∊⍋⍒⊥⊤⌹⍎⍕/\\⌿⍀";
+
+bool is_digit(char32_t c) {
+  return c >= U'0' && c <= U'9';
+}
+
+[[noreturn]] void syntax_at(std::size_t column) {
+  Error e(ErrorKind::syntax);
+  e.set_column(column);
+  throw e;
+}
+
+// Whether a number starts at i: a digit, a high minus, or a point followed by a digit.
+bool number_starts(std::u32string_view line, std::size_t i) {
+  if (i >= line.size()) return false;
+  char32_t c = line[i];
+  if (is_digit(c) || c == U'¯') return true;
+  return c == U'.' && i + 1 < line.size() && is_digit(line[i + 1]);
+}
+
+// One number at i (APL\360 User's Manual: `¯3.5`, `1E¯3`, `.5`, `1.5E3`); i moves past it.
+double scan_number(std::u32string_view line, std::size_t& i) {
+  const std::size_t start = i;
+  std::string ascii;
+  auto digits = [&] {
+    std::size_t n = 0;
+    while (i < line.size() && is_digit(line[i])) {
+      ascii.push_back(static_cast<char>(line[i++]));
+      ++n;
+    }
+    return n;
+  };
+  if (line[i] == U'¯') {
+    ascii.push_back('-');
+    ++i;
+  }
+  std::size_t mantissa = digits();
+  if (i < line.size() && line[i] == U'.') {
+    ascii.push_back('.');
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) syntax_at(start);
+  bool negative_exponent = false;
+  if (i < line.size() && (line[i] == U'E' || line[i] == U'e')) {
+    std::size_t mark = i;
+    std::string saved = ascii;
+    ascii.push_back('E');
+    ++i;
+    if (i < line.size() && line[i] == U'¯') {
+      ascii.push_back('-');
+      negative_exponent = true;
+      ++i;
+    }
+    if (digits() == 0) {  // not an exponent after all: the E is rejected just below
+      i = mark;
+      ascii = saved;
+      negative_exponent = false;
+    }
+  }
+  // A number runs into nothing: `1.2.3`, `3A`, `2E` and `1¯2` are malformed.
+  if (i < line.size() && (is_name_char(line[i]) || line[i] == U'.' || line[i] == U'¯'))
+    syntax_at(start);
+  double value = 0;
+  auto [end, ec] = std::from_chars(ascii.data(), ascii.data() + ascii.size(), value);
+  if (ec == std::errc::result_out_of_range) {
+    if (!negative_exponent) {
+      Error e(ErrorKind::domain);
+      e.set_column(start);
+      throw e;
+    }
+    value = 0;
+  } else if (ec != std::errc() || end != ascii.data() + ascii.size()) {
+    syntax_at(start);
+  }
+  return value;
+}
+
+Token simple(TokenKind kind, std::size_t column, char32_t glyph = 0) {
+  Token t;
+  t.kind = kind;
+  t.column = column;
+  t.glyph = glyph;
+  return t;
+}
+
+}  // namespace
+
+char32_t canonical_glyph(char32_t c) {
+  switch (c) {
+    case U'−':
+      return U'-';
+    case U'⋆':
+      return U'*';
+    case U'∣':
+      return U'|';
+    case U'∼':
+      return U'~';
+    case U'∈':
+      return U'∊';
+    case U'^':
+      return U'∧';
+    default:
+      return c;
+  }
+}
+
+bool is_primitive_glyph(char32_t c) {
+  return primitive_glyphs.find(canonical_glyph(c)) != std::u32string_view::npos;
+}
+
+bool is_name_start(char32_t c) {
+  return (c >= U'A' && c <= U'Z') || (c >= U'a' && c <= U'z') || c == U'∆' || c == U'⍙' ||
+         c == U'_';
+}
+
+bool is_name_char(char32_t c) {
+  return is_name_start(c) || is_digit(c);
+}
+
+std::u32string_view strip_comment(std::u32string_view line) {
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    if (line[i] == U'\'') quoted = !quoted;
+    if (line[i] == U'⍝' && !quoted) return line.substr(0, i);
+  }
+  return line;
+}
+
+std::vector<Token> tokenize(std::u32string_view line) {
+  std::vector<Token> tokens;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    if (!tokens.empty() && tokens.back().end == 0) tokens.back().end = i;
+    const char32_t c = line[i];
+    const std::size_t column = i;
+    if (c == U' ' || c == U'\t' || c == U'\r') {  // \r: a line from a file with CR LF ends
+      ++i;
+    } else if (c == U'⍝') {
+      break;
+    } else if (number_starts(line, i)) {
+      Numbers values;
+      while (true) {
+        values.push_back(scan_number(line, i));
+        std::size_t j = i;
+        while (j < line.size() && (line[j] == U' ' || line[j] == U'\t')) ++j;
+        if (!number_starts(line, j)) break;
+        i = j;
+      }
+      Token t = simple(TokenKind::number, column);
+      const std::size_t n = values.size();  // before the move: arguments have no order
+      t.literal = n == 1 ? Value::number(values[0]) : Value::of_numbers({n}, std::move(values));
+      tokens.push_back(std::move(t));
+    } else if (c == U'\'') {
+      std::u32string text;
+      ++i;
+      while (true) {
+        if (i >= line.size()) syntax_at(column);
+        if (line[i] == U'\'') {
+          if (i + 1 < line.size() && line[i + 1] == U'\'') {
+            text.push_back(U'\'');
+            i += 2;
+            continue;
+          }
+          ++i;
+          break;
+        }
+        text.push_back(line[i++]);
+      }
+      Token t = simple(TokenKind::string, column);
+      t.literal = text.size() == 1 ? Value::character(text[0]) : Value::text(text);
+      tokens.push_back(std::move(t));
+    } else if (is_name_start(c)) {
+      Token t = simple(TokenKind::name, column);
+      while (i < line.size() && is_name_char(line[i])) {
+        char32_t n = line[i++];
+        if (n >= U'a' && n <= U'z') n = n - U'a' + U'A';
+        append_utf8(t.text, n);
+      }
+      tokens.push_back(std::move(t));
+    } else if (c == U'⎕') {
+      ++i;
+      if (i < line.size() && is_name_start(line[i])) {
+        Token t = simple(TokenKind::system_name, column);
+        t.text = "⎕";
+        while (i < line.size() && is_name_char(line[i])) {
+          char32_t n = line[i++];
+          if (n >= U'a' && n <= U'z') n = n - U'a' + U'A';
+          if (n >= 0x80) syntax_at(column);
+          t.text.push_back(static_cast<char>(n));
+        }
+        tokens.push_back(std::move(t));
+      } else {
+        tokens.push_back(simple(TokenKind::quad, column));
+      }
+    } else {
+      ++i;
+      switch (c) {
+        case U'⍞':
+          tokens.push_back(simple(TokenKind::quote_quad, column));
+          break;
+        case U'←':
+          tokens.push_back(simple(TokenKind::assign, column));
+          break;
+        case U'→':
+          tokens.push_back(simple(TokenKind::branch, column));
+          break;
+        case U'(':
+          tokens.push_back(simple(TokenKind::left_paren, column));
+          break;
+        case U')':
+          tokens.push_back(simple(TokenKind::right_paren, column));
+          break;
+        case U'[':
+          tokens.push_back(simple(TokenKind::left_bracket, column));
+          break;
+        case U']':
+          tokens.push_back(simple(TokenKind::right_bracket, column));
+          break;
+        case U';':
+          tokens.push_back(simple(TokenKind::semicolon, column));
+          break;
+        case U':':
+          tokens.push_back(simple(TokenKind::colon, column));
+          break;
+        case U'.':
+          tokens.push_back(simple(TokenKind::dot, column));
+          break;
+        case U'∘':
+          tokens.push_back(simple(TokenKind::jot, column));
+          break;
+        case U'∇':
+          tokens.push_back(simple(TokenKind::del, column));
+          break;
+        default:
+          if (!is_primitive_glyph(c)) syntax_at(column);
+          tokens.push_back(simple(TokenKind::function, column, canonical_glyph(c)));
+      }
+    }
+  }
+  if (!tokens.empty() && tokens.back().end == 0) tokens.back().end = i;
+  return tokens;
+}
+
+}  // namespace igds::apl

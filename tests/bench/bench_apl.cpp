@@ -1,0 +1,112 @@
+// END APL's speed on workspace-sized arrays (issue 17): INTPN of a 2000 × 2000 surface (12 M
+// doubles) held by the host, statements run through Session::execute, against NumPy doing the
+// same on this machine (ratio = NumPy's time / igds's time; 1 or more is the goal).
+#include <fmt/format.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "interp/apl/session.h"
+#include "tests/bench/bench.h"
+
+namespace igds::bench {
+
+namespace {
+
+// A host that owns INTPN, as igds's workspace will.
+struct BenchHost : apl::Host {
+  apl::Value intpn;
+  std::vector<std::string> printed;
+  void print(std::string_view line) override { printed.emplace_back(line); }
+  std::optional<std::string> read_line(std::string_view) override { return std::nullopt; }
+  bool owns(std::string_view name) const override { return name == "INTPN"; }
+  std::optional<apl::Value> get(std::string_view) override { return intpn; }
+  void set(std::string_view, const apl::Value& v) override { intpn = v; }
+};
+
+apl::Value grid(std::size_t rows, std::size_t cols, std::size_t planes) {
+  apl::Value v = apl::Value::uninitialised_numbers({rows, cols, planes});
+  auto x = v.mutable_numbers();
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = std::sin(0.001 * static_cast<double>(i));
+  return v;
+}
+
+// NumPy's best times for the same four operations, or empty when python3 or NumPy is missing.
+// P[:, :, 0] is a view in NumPy: .copy() makes the array that INTPN[;;1] makes.
+std::vector<double> numpy_times() {
+  const char* script =
+      "import time, numpy as np\n"
+      "P = np.sin(0.001 * np.arange(2000 * 2000 * 3)).reshape(2000, 2000, 3)\n"
+      "A = np.sin(0.001 * np.arange(250000)).reshape(500, 500)\n"
+      "B = np.cos(0.001 * np.arange(250000)).reshape(500, 500)\n"
+      "def best(f, n):\n"
+      "    t = 1e300\n"
+      "    for _ in range(n):\n"
+      "        t0 = time.perf_counter(); f(); t = min(t, time.perf_counter() - t0)\n"
+      "    return t\n"
+      "X = None\n"
+      "def times2():\n"
+      "    global X\n"
+      "    X = P * 2\n"
+      "print(best(times2, 5), best(lambda: P.ravel().sum(), 5),\n"
+      "      best(lambda: P[:, :, 0].copy(), 5), best(lambda: A @ B, 3))\n";
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    std::string command = fmt::format("{} -c '{}' 2>/dev/null", python, script);
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) continue;
+    std::vector<double> t(4, 0);
+    int read = std::fscanf(pipe, "%lf %lf %lf %lf", &t[0], &t[1], &t[2], &t[3]);
+    int status = pclose(pipe);
+    if (read == 4 && status == 0) return t;
+  }
+  return {};
+}
+
+}  // namespace
+
+IGDS_BENCH("apl") {
+  BenchHost host;
+  host.intpn = grid(2000, 2000, 3);
+  apl::Session session(host);
+  session.assign("A", grid(500, 500, 1).reshaped({500, 500}));
+  apl::Value b = grid(500, 500, 1);
+  for (auto& x : b.mutable_numbers()) x = std::cos(std::asin(x));
+  session.assign("B", b.reshaped({500, 500}));
+
+  auto run = [&](const char* line) {
+    session.execute(line);
+    if (!host.printed.empty()) {
+      fmt::print(stderr, "bench_apl: {} printed {}\n", line, host.printed.front());
+      host.printed.clear();
+    }
+  };
+  const double times2 = best_seconds(5, [&] { run("X←INTPN×2"); });
+  const double sum = best_seconds(5, [&] { run("S←+/,INTPN"); });
+  const double plane = best_seconds(5, [&] { run("Y←INTPN[;;1]"); });
+  const double product = best_seconds(3, [&] { run("C←A+.×B"); });
+  // A, the matrix, is done with: the small statement is the issue's A←1+2.
+  constexpr int small_runs = 20000;
+  auto small_statements = [&] {
+    for (int i = 0; i < small_runs; ++i) run("A←1+2");
+  };
+  const double small = best_seconds(3, small_statements) / small_runs;
+
+  fmt::print("apl_intpn_times_2_s {:.6f}\n", times2);
+  fmt::print("apl_sum_ravel_intpn_s {:.6f}\n", sum);
+  fmt::print("apl_intpn_plane_1_s {:.6f}\n", plane);
+  fmt::print("apl_inner_product_500_s {:.6f}\n", product);
+  fmt::print("apl_small_statement_us {:.3f}\n", small * 1e6);
+  const std::vector<double> numpy = numpy_times();
+  if (numpy.empty()) {
+    fmt::print("apl_numpy_ratios unavailable (no python3 with NumPy)\n");
+    return;
+  }
+  fmt::print("apl_numpy_ratio_times_2 {:.2f}\n", numpy[0] / times2);
+  fmt::print("apl_numpy_ratio_sum_ravel {:.2f}\n", numpy[1] / sum);
+  fmt::print("apl_numpy_ratio_plane_1 {:.2f}\n", numpy[2] / plane);
+  fmt::print("apl_numpy_ratio_inner_product {:.2f}\n", numpy[3] / product);
+}
+
+}  // namespace igds::bench
