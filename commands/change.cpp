@@ -60,22 +60,22 @@ Density ask_grid_too(Context& ctx, const Workspace& ws) {
 }
 
 // The follow-up of CHANGE POINTS: Y/N, or the first tangent entry directly.
-void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg) {
+void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg, Edits& edits) {
   for (;;) {
     auto words = ctx.ask(change_tangents_prompt);
     if (words.empty()) continue;
     if (auto yes = parse_yes_no(words)) {
-      if (*yes) ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+      if (*yes) ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &edits);
       return;
     }
     try {
       refuse_command_word(words);
-      apply_tangent_entry(words, ws.nocur, ws.nostr, inptg);
+      apply_tangent_entry(words, ws.nocur, ws.nostr, inptg, &edits);
     } catch (const EntryError& e) {
       ctx.report(e.what());
       continue;
     }
-    ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+    ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &edits);
     return;
   }
 }
@@ -85,19 +85,21 @@ void run_change(Context& ctx, const Choice* option) {
   if (!ws.has_input()) throw Report(reports::input_not_found);
   Array inppn = ws.inppn;
   Array inptg = ws.inptg;
+  Edits point_edits = Edits::none(), tangent_edits = Edits::none();
   Density density;
   const auto what = static_cast<Option>(option->code);
   if (what == grid) {
     density = ask_density(ctx, ws.nocur, ws.nostr);
   } else {
     if (what == points) {
-      ask_point_entries(ctx, inppn);
-      ask_tangents_too(ctx, ws, inptg);
+      ask_point_entries(ctx, inppn, &point_edits);
+      ask_tangents_too(ctx, ws, inptg, tangent_edits);
     } else {
-      ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg);
+      ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &tangent_edits);
     }
     density = ask_grid_too(ctx, ws);
   }
+  const Changes changes = ws.changes;
   // The new surface is computed into the arrays of the old one (no fresh pages on a large grid);
   // the kernels check everything first and leave them as they were when they refuse.
   SurfaceInput input{ws.nocur, ws.nostr, density.intcu, density.intst, &inppn, &inptg};
@@ -120,6 +122,9 @@ void run_change(Context& ctx, const Choice* option) {
   }
   make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
                std::move(surface));
+  // The grid of input points is the same: only the parts the entries changed are new.
+  ws.changes = changes;
+  ws.changes.edited(point_edits, tangent_edits);
 }
 
 constexpr const Prompt* questions[] = {&density_prompt, &points_prompt, &change_tangents_prompt,

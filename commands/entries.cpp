@@ -29,7 +29,7 @@ constexpr std::string_view finish_entries = "END THE ENTRIES WITH AN EMPTY LINE 
 
 }  // namespace
 
-void apply_point_entry(std::span<const std::string> words, Array& inppn) {
+void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* edits) {
   const long long count = static_cast<long long>(inppn.size() / 3);
   if (words.size() < 4 || (words.size() - 1) % 3 != 0) refuse_form(words, point_form);
   auto k = parse_integer(words[0], 1, count);
@@ -51,7 +51,9 @@ void apply_point_entry(std::span<const std::string> words, Array& inppn) {
     values.push_back(*v);
   }
   // Only a fully correct entry changes anything.
-  std::copy(values.begin(), values.end(), inppn.ravel.begin() + (*k - 1) * 3);
+  const auto first = static_cast<std::size_t>(*k - 1) * 3;
+  std::copy(values.begin(), values.end(), inppn.ravel.begin() + static_cast<std::ptrdiff_t>(first));
+  if (edits) edits->part(first, first + values.size());
 }
 
 int tangent_row(int k, bool along_curve, int nocur, int nostr) {
@@ -79,7 +81,8 @@ Array zero_tangents(int nocur, int nostr) {
   return inptg;
 }
 
-void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg) {
+void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
+                         Edits* edits) {
   if (words.size() != 4 && words.size() != 5) refuse_form(words, tangent_form);
   const long long count = static_cast<long long>(nocur) * nostr;
   auto k = parse_integer(words[0], 1, count);
@@ -117,6 +120,7 @@ void apply_tangent_entry(std::span<const std::string> words, int nocur, int nost
   r[1] = t[1];
   r[2] = t[2];
   r[3] = point;
+  if (edits) edits->part(static_cast<std::size_t>(row) * 4, static_cast<std::size_t>(row) * 4 + 4);
 }
 
 GridSize parse_grid_size(std::span<const std::string> words) {
@@ -166,24 +170,24 @@ GridSize ask_grid_size(Context& ctx) {
                  [](const std::vector<std::string>& w) { return parse_grid_size(w); });
 }
 
-void ask_point_entries(Context& ctx, Array& inppn) {
+void ask_point_entries(Context& ctx, Array& inppn, Edits* edits) {
   for (;;) {
     auto words = ctx.ask(points_prompt);
     if (words.empty()) return;
     try {
-      apply_point_entry(words, inppn);
+      apply_point_entry(words, inppn, edits);
     } catch (const EntryError& e) {
       ctx.report(e.what());
     }
   }
 }
 
-void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg) {
+void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg, Edits* edits) {
   for (;;) {
     auto words = ctx.ask(tangents_prompt);
     if (words.empty()) return;
     try {
-      apply_tangent_entry(words, nocur, nostr, inptg);
+      apply_tangent_entry(words, nocur, nostr, inptg, edits);
     } catch (const EntryError& e) {
       ctx.report(e.what());
     }

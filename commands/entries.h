@@ -11,17 +11,20 @@
 #include "commands/context.h"
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/limits.h"
+#include "workspace/state.h"
 
 namespace igds {
 
 // `k x y z [x y z ...]`: the triplets go to points k, k+1, ... of `inppn` ((NOCUR*NOSTR) x 3).
 // Throws EntryError (INCORRECT ENTRY with what is wrong); only a correct entry changes anything.
-void apply_point_entry(std::span<const std::string> words, Array& inppn);
+// The elements it changed are added to `edits` when given.
+void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* edits = nullptr);
 
 // `k tx ty tz` at a border point that is not a corner, `k tx ty tz f` at a corner (f = 1 along
 // the curve, 0 along the stringer): sets the matching row of `inptg` (spec igds.md section 3).
-// Throws EntryError.
-void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg);
+// Throws EntryError. The row it changed is added to `edits` when given.
+void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
+                         Edits* edits = nullptr);
 
 // NOCUR NOSTR: two whole numbers >= 1, at least two points, at most max_input_points.
 struct GridSize {
@@ -52,8 +55,8 @@ extern const Prompt density_prompt;
 // The asks and entry loops of BUILD and CHANGE (point and tangent entries end with an empty
 // line; a wrong entry gets its report and the next one is awaited).
 GridSize ask_grid_size(Context& ctx);
-void ask_point_entries(Context& ctx, Array& inppn);
-void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg);
+void ask_point_entries(Context& ctx, Array& inppn, Edits* edits = nullptr);
+void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg, Edits* edits = nullptr);
 Density ask_density(Context& ctx, int nocur, int nostr);
 
 }  // namespace igds

@@ -7,7 +7,6 @@
 #include "devices/plot.h"
 #include "devices/svg.h"
 #include "devices/terminal.h"
-#include "workspace/disk/format.h"
 #include "workspace/error.h"
 
 namespace igds {
@@ -36,11 +35,7 @@ void run_export(Context& ctx, const Choice* option) {
   std::string bytes = option->code == svg   ? svg_of(picture)
                       : option->code == tek ? tek_stream(picture, ctx.options().tek)
                                             : plot_hpgl(picture, ctx.options().plot).hpgl;
-  try {
-    disk::replace_file(ctx.disk().path(name, type), bytes);
-  } catch (const disk::IoError& e) {
-    throw Report(fmt::format("CANNOT WRITE {}.{} ({}); NO FILE CHANGED", name, type, e.reason()));
-  }
+  write_user_file(ctx.disk(), name, type, bytes);
   ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
 }
 

@@ -210,6 +210,10 @@ Picture picture_of(std::shared_ptr<const Image> image) {
   return pic;
 }
 
+Picture picture_of(const ImageRef& image) {
+  return picture_of(image.shared());
+}
+
 Picture picture_of(const Image& image) {
   return picture_of(std::make_shared<const Image>(image));
 }

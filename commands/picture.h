@@ -18,6 +18,7 @@ namespace igds {
 // image's own points (not copied). An IMAGE of a shape other than planes x rows x 2 gives no
 // lines (never a crash); non-finite points break a line.
 Picture picture_of(std::shared_ptr<const Image> image);
+Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);
 
 // The brief description of DISPLAY: what (INPUT or SURFACE), the projection, its parameters

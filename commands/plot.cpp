@@ -10,7 +10,7 @@
 #include "commands/command.h"
 #include "commands/picture.h"
 #include "devices/plot.h"
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
 #include "workspace/error.h"
 
 namespace igds {
@@ -20,17 +20,13 @@ namespace {
 // The escape sequences that wake and put to sleep a plotter wired on the terminal line.
 constexpr std::string_view plotter_on = "\x1b.(", plotter_off = "\x1b.)";
 
-// A new PLOTnnnn.HPGL on the disk, the first number not used yet; its name.
+// A new PLOTnnnn.HPGL on the disk, the first number not used yet (never replacing a file that
+// appears meanwhile); its name.
 std::string to_new_file(const Disk& disk, std::string_view hpgl) {
   for (int n = 1; n <= 9999; ++n) {
     std::string name = fmt::format("PLOT{:04}", n);
     if (disk.exists(name, "HPGL")) continue;
-    try {
-      disk::replace_file(disk.path(name, "HPGL"), hpgl);
-    } catch (const disk::IoError& e) {
-      throw Report(fmt::format("CANNOT WRITE {}.HPGL ({}); NOTHING PLOTTED", name, e.reason()));
-    }
-    return name + ".HPGL";
+    if (write_user_file(disk, name, "HPGL", hpgl, false, "NOTHING PLOTTED")) return name + ".HPGL";
   }
   throw Report("NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
 }

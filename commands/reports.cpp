@@ -48,6 +48,8 @@ Report worded(const DataError& e) {
       return Report(reports::incorrect_parameter, "A POINT IS BEHIND THE EYE");
     case P::view_at_centre:
       return Report(reports::incorrect_parameter, "THE VIEW POINT IS THE CENTRE OF THE SURFACE");
+    case P::view_inside_box:
+      return Report(reports::incorrect_parameter, "THE VIEW POINT IS INSIDE THE SURFACE'S BOX");
   }
   return Report(reports::incorrect_entry);
 }

@@ -24,6 +24,7 @@ void make_current(Workspace& ws, int nocur, int nostr, Density density, Array in
   ws.inptg = std::move(inptg);
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);
+  ws.changes.replaced();
 }
 
 }  // namespace igds

@@ -14,7 +14,8 @@ Surface interpolate_surface(int nocur, int nostr, Density density, const Array& 
                             const Array& inptg);
 
 // Makes an interpolated surface the current one: the only change BUILD and CHANGE make to the
-// workspace, once everything has been asked and computed.
+// workspace, once everything has been asked and computed. It counts as a new surface
+// (Changes::replaced); CHANGE then says which parts of the inputs are new.
 void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
                   Surface surface);
 

@@ -1,5 +1,5 @@
 // The projections of DISPLAY INPUT and DISPLAY SURFACE (manual 4.4): their words, reading their
-// parameters, and making the image of the input points or of the interpolated grid.
+// parameters, and asking for the image of the input points or of the interpolated grid.
 #pragma once
 
 #include <span>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands/context.h"
+#include "workspace/images.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -34,15 +35,9 @@ extern const Prompt projection_prompt;
 // PROJECTION? and the four parameter questions, in that order.
 std::span<const Prompt* const> view_questions();
 
-// DISPLAY INPUT: INPPN projected (NOCUR x NOSTR x 2) and an arrow for every non-zero border
-// tangent. DISPLAY SURFACE: INTPN projected. Both throw ParameterError for a view point inside
-// the points' bounding box or a point behind the eye.
-Image input_image(const Workspace& ws, const View& view);
-Image surface_image(const Workspace& ws, const View& view);
-
 // Asks for the projection and its parameters (from the command line, or question by question)
-// and makes the image with `make` (input_image or surface_image): a bad answer typed at a
-// question gets its report and the question again.
+// and makes the image with `make` (input_image or surface_image of workspace/images.h): a bad
+// answer typed at a question gets its report and the question again.
 Image ask_image(Context& ctx, Image (*make)(const Workspace&, const View&));
 
 }  // namespace igds

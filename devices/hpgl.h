@@ -70,5 +70,4 @@ class HpglEncoder : public Device {
   double travel_units_ = 0;  // pen-up travel in plotter units
 };
 
-
 }  // namespace igds

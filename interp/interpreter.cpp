@@ -89,6 +89,8 @@ void Interpreter::execute(const std::vector<std::string>& words) {
     ~Finish() { running = false; }
   } finish{running_};
   try {
+    // PATCHES and INTPN of a session just loaded are made while the first line is typed.
+    session_.complete(ws_);
     run_command(words);
   } catch (const StrictStop&) {
     // The report is printed; converse() stops.
@@ -187,7 +189,11 @@ void Interpreter::report(std::string_view text) {
 }
 
 void Interpreter::show(const ImageRef& image) {
-  terminal_.show(std::make_shared<const Picture>(picture_of(image)), describe_line(image->desim));
+  // The picture is made only for a terminal that draws it.
+  auto picture = terminal_.mode() == TermMode::none
+                     ? nullptr
+                     : std::make_shared<const Picture>(picture_of(image));
+  terminal_.show(std::move(picture), describe_line(image->desim));
 }
 
 void Interpreter::erase() {

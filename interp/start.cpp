@@ -104,7 +104,7 @@ int igds_main(int argc, char** argv) {
   try {
     Disk disk(options.disk);
     Session session(disk);
-    Workspace ws = session.load();
+    Workspace ws = session.load(true);
     Terminal terminal(options.term, options.tek, out);
     Interpreter interpreter(options, disk, session, std::move(ws), terminal);
     terminal.begin();

@@ -71,7 +71,8 @@ class Terminal {
   // on the screen, and when it is longer than the screen and a person reads it, it stops at
   // each full page (MORE) and at its end until RETURN.
   void document(std::string_view text);
-  // DISPLAY: the picture on the screen, or (none mode) `line` saying what it shows.
+  // DISPLAY: the picture on the screen, or (none mode, where `picture` may be null) `line`
+  // saying what it shows.
   void show(std::shared_ptr<const Picture> picture, std::string_view line);
   // ERASE.
   void erase();

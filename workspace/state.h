@@ -2,8 +2,14 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/project.h"
@@ -29,17 +35,131 @@ struct Image {
   // and 1 (along the curve) or 0 (along the stringer). Drawn as arrows. (Files written before the
   // last two columns existed have k x 4.)
   Array arrows;
-  friend bool operator==(const Image&, const Image&) = default;
+  // The generation of the surface this image is a projection of (Changes::surface), when it can
+  // be made again from that surface and `desim` alone; 0 otherwise (an image read from a file or
+  // assigned in the APL environment). The session saves such an image as that recipe.
+  std::uint64_t drawn_from = 0;
+  // DISPLAY FILE: the IGDSIMAG file the image was read from and the checksum that file ends with
+  // (the session keeps a second name of that file instead of writing the image again).
+  std::filesystem::path file;
+  std::uint64_t file_sum = 0;
+  // Equal images show the same: how they were made is not compared.
+  friend bool operator==(const Image& a, const Image& b) {
+    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows;
+  }
 };
 
 // An image never changes once made: the workspace shares it (STORE FIRST keeps the same image,
-// the screen and the drawing read its points without a copy).
-using ImageRef = std::shared_ptr<const Image>;
+// the screen and the drawing read its points without a copy). An image the session brings back
+// from a recipe (workspace/disk/session.cpp) is made when it is first looked at, not at start.
+class ImageRef {
+ public:
+  ImageRef() = default;
+  ImageRef(std::nullptr_t) {}
+  ImageRef(std::shared_ptr<const Image> image);  // NOLINT: an image is an ImageRef
+  // An image that `make` makes when it is first looked at.
+  static ImageRef deferred(std::function<Image()> make);
+
+  const Image& operator*() const { return get(); }
+  // The image as a shared pointer (a drawing that reads its points keeps it alive).
+  std::shared_ptr<const Image> shared() const {
+    get();
+    return cell_->image;
+  }
+  const Image* operator->() const { return &get(); }
+  explicit operator bool() const { return cell_ != nullptr; }
+  void reset() { cell_.reset(); }
+  // False while a deferred image has not been made yet.
+  bool made() const;
+  // The same image (not only equal ones).
+  friend bool operator==(const ImageRef& a, const ImageRef& b) { return a.cell_ == b.cell_; }
+  // A weak hold on this image, for telling later whether an ImageRef is still it.
+  std::weak_ptr<const void> watch() const { return cell_; }
+  bool is(const std::weak_ptr<const void>& watched) const {
+    return cell_ && !watched.expired() && watched.lock().get() == cell_.get();
+  }
+
+ private:
+  struct Cell {
+    mutable std::shared_ptr<const Image> image;
+    mutable std::function<Image()> make;
+  };
+  const Image& get() const;
+  std::shared_ptr<const Cell> cell_;
+};
 
 // The same images, or equal ones.
 inline bool same_image(const ImageRef& a, const ImageRef& b) {
   return a == b || (a && b && *a == *b);
 }
+
+// The parts of an array changed since the session last saved it: the autosave writes those
+// (workspace/disk/session.cpp) instead of comparing the whole array with a copy.
+struct Edits {
+  bool whole = true;                                        // all of it (or its shape)
+  std::vector<std::pair<std::size_t, std::size_t>> ranges;  // else these [first, end) of the ravel
+  void all() {
+    whole = true;
+    ranges.clear();
+  }
+  void part(std::size_t first, std::size_t end) {
+    if (whole) return;
+    ranges.emplace_back(first, end);
+    if (ranges.size() > 4096) all();  // beyond that, rewriting it whole costs less
+  }
+  void saved() {
+    whole = false;
+    ranges.clear();
+  }
+  // Adds the changes of `other`.
+  void add(const Edits& other) {
+    if (other.whole) return all();
+    for (const auto& [first, end] : other.ranges) part(first, end);
+  }
+  // Nothing changed yet (the start of an edit).
+  static Edits none() {
+    Edits e;
+    e.saved();
+    return e;
+  }
+};
+
+// A number never given before in this process: the generations of surfaces.
+std::uint64_t new_generation();
+
+// What changed in the surface, kept by whoever changes it (commands/surface.h, RESTORE, the APL
+// environment) for the autosave and for the images drawn from it.
+struct Changes {
+  // A new number after every change of NOCUR ... INTPN (Image::drawn_from refers to it); every
+  // workspace starts with a number of its own.
+  std::uint64_t surface = new_generation();
+  // PATCHES and INTPN are the interpolation of the inputs by igds's kernels (false once the APL
+  // environment assigned one of them): the session does not save them then, it computes them
+  // again at start.
+  bool derived = true;
+  Edits inppn, inptg;
+
+  // The whole surface was replaced (BUILD, RESTORE).
+  void replaced(bool interpolated = true) {
+    surface = new_generation();
+    derived = interpolated;
+    inppn.all();
+    inptg.all();
+  }
+  // The inputs edited in place and interpolated again (CHANGE): `points` and `tangents` say
+  // which parts of INPPN and INPTG changed.
+  void edited(const Edits& points, const Edits& tangents) {
+    surface = new_generation();
+    derived = true;
+    inppn.add(points);
+    inptg.add(tangents);
+  }
+  // PATCHES or INTPN given other values than the interpolation's (the APL environment).
+  void assigned() {
+    surface = new_generation();
+    derived = false;
+  }
+};
 
 struct Workspace {
   int nocur = 0, nostr = 0;  // NOCUR, NOSTR: input curves and stringers (0: no input yet)
@@ -58,6 +178,8 @@ struct Workspace {
   // STATUS[1] = 1 for HELP LONG, 0 for SHORT; STATUS[2] = keyboard of the last PLOT
   // (0 none yet, 1 SELECTRIC, 2 EBCDIC); the others are reserved.
   std::array<int, 10> status{1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+
+  Changes changes;  // not a variable of the manual: how the variables above changed
 
   bool has_input() const { return nocur > 0; }
   bool has_surface() const { return !intpn.empty(); }

@@ -16,7 +16,7 @@
 #include "tests/devices/support.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
 #include "workspace/error.h"
 
 namespace igds {

@@ -165,12 +165,20 @@ TEST_CASE("a disk that fills up: the command's report, and the last session kept
   IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
   igds_on(small.path(), build_3x3);
   Workspace before = session_on(small.path());
-  auto r = igds_on(small.path(), "CHANGE GRID 40 40\nSAVE HULL\n");
-  CHECK(has(r.out,
-            "CHANGE GRID 40 40\nCANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON "
-            "DEVICE); THE LAST SAVED SESSION IS KEPT\nREADY\n"));
+  // A grid made finer is not saved (the session makes it again from the inputs): it fits. Its
+  // IGDSDATA does not. Then a BUILD of 4900 points (118 KB of inputs) cannot be saved either.
+  std::string commands = "CHANGE GRID 40 40\nSAVE HULL\nBUILD\n70 70\n";
+  for (int k = 1; k <= 4900; ++k) commands += fmt::format("{} {} {} 0\n", k, k % 70, k / 70);
+  commands += "\n\n0 0\n";
+  auto r = igds_on(small.path(), commands);
+  CHECK(has(r.out, "CHANGE GRID 40 40\nREADY\n"));
   CHECK(has(r.out,
             "SAVE HULL\nCANNOT WRITE HULL.IGDSDATA (NO SPACE LEFT ON DEVICE); NO FILE CHANGED\n"));
+  CHECK(has(r.out,
+            "CANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON DEVICE); THE LAST "
+            "SAVED SESSION IS KEPT\nREADY\n"));
+  before.intcu = before.intst = 40;
+  before.intpn = session_on(small.path()).intpn;
   test::check_same_workspace(session_on(small.path()), before);
   for (const auto& e : fs::directory_iterator(small.path()))
     CHECK(!e.path().filename().string().ends_with(".IGDSTEMP"));

@@ -515,8 +515,8 @@ TEST_CASE("a single curve or stringer is the spline of its points, without patch
         CHECK(distance(grid[std::size_t(k) * (inserted + 1) + a], expected) < 1e-12);
       }
     // CHANGE GRID on a line makes the grid again from the points.
-    Array again = refit({g.nocur, g.nostr, curve ? 0 : 1, curve ? 1 : 0, &g.inppn, &g.inptg},
-                        s.patches);
+    Array again =
+        refit({g.nocur, g.nostr, curve ? 0 : 1, curve ? 1 : 0, &g.inppn, &g.inptg}, s.patches);
     CHECK(again.shape[curve ? 1 : 0] == std::size_t(n + (n - 1)));
   }
 }

@@ -3,6 +3,7 @@
 #include <doctest/doctest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "tests/support/process.h"
@@ -10,7 +11,8 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/disk.h"
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
+#include "workspace/disk/frame.h"
 #include "workspace/error.h"
 
 using namespace igds;
@@ -137,16 +139,15 @@ TEST_CASE("every damaged IGDSDATA is refused whole, with the reason, and the sur
     std::string b = good;
     b[good.size() - 20] ^= 0x10;  // a value: only the checksum can tell
     CHECK(refused(b) == "FILE DAMAGED: BAD.IGDSDATA (CHECKSUM)" + kept);
-    CHECK(refused(with_version(good, 2)) ==
-          "FILE DAMAGED: BAD.IGDSDATA (FORMAT VERSION 2 OF A NEWER IGDS)" + kept);
+    CHECK(refused(with_version(good, 3)) ==
+          "FILE DAMAGED: BAD.IGDSDATA (FORMAT VERSION 3 OF A NEWER IGDS)" + kept);
     CHECK(refused(good + "x") == "FILE DAMAGED: BAD.IGDSDATA (LENGTH)" + kept);
     // A well-made file whose shapes do not agree with NOCUR and NOSTR.
     Workspace odd = small;
     odd.nocur = 3;
-    disk::Writer w;
-    disk::write_surface(w, odd);
-    CHECK(refused(disk::frame("IGDSDATA", w.str())) ==
-          "FILE DAMAGED: BAD.IGDSDATA (SHAPES)" + kept);
+    save_surface(s.disk, "ODD", odd);
+    CHECK(refused(test::read_file(s.disk.path("ODD", "IGDSDATA"))) ==
+          "FILE DAMAGED: BAD.IGDSDATA (SHAPES: INPPN IS 4 BY 3, NOT 6 BY 3)" + kept);
     // An image file under the name of a surface file.
     store_image(s.disk, "PIC", test::make_image(0, Projection::conic, 2, 2, 1));
     CHECK(refused(test::read_file(s.disk.path("PIC", "IGDSIMAG"))) ==
@@ -198,7 +199,8 @@ TEST_CASE("a damaged IGDSIMAG is refused with the current image kept") {
   w.array(Array{});
   test::rewrite_file(s.disk.path("PIC", "IGDSIMAG"), disk::frame("IGDSIMAG", w.str()));
   CHECK(report_of([&] { load_image(s.disk, "PIC"); }) ==
-        "FILE DAMAGED: PIC.IGDSIMAG (FORMAT); CURRENT IMAGE KEPT");
+        "FILE DAMAGED: PIC.IGDSIMAG (FORMAT: DESIM[2] IS NOT A PROJECTION (1 TO 4)); CURRENT "
+        "IMAGE KEPT");
 }
 
 TEST_CASE("a disk that refuses a write: clear report, old file kept, no temporary left") {
@@ -214,14 +216,11 @@ TEST_CASE("a disk that refuses a write: clear report, old file kept, no temporar
           "CANNOT WRITE HULL.IGDSDATA (IS A DIRECTORY); NO FILE CHANGED");
     fs::remove(disk::temporary_for(s.disk.path("HULL", "IGDSDATA")));
   }
-  SUBCASE("a symbolic link is where the temporary must go") {
-    test::TempDir elsewhere;
-    fs::create_symlink(elsewhere.path() / "target",
-                       disk::temporary_for(s.disk.path("HULL", "IGDSDATA")));
-    CHECK(report_of([&] { save_surface(s.disk, "HULL", second); }) ==
-          "CANNOT WRITE HULL.IGDSDATA (A SYMBOLIC LINK IS IN THE WAY); NO FILE CHANGED");
-    CHECK(fs::is_empty(elsewhere.path()));
-    fs::remove(disk::temporary_for(s.disk.path("HULL", "IGDSDATA")));
+  SUBCASE("a folder where the file must go keeps the old file's temporary name free") {
+    fs::create_directory(s.disk.path("NEW", "IGDSDATA"));
+    CHECK(report_of([&] { save_surface(s.disk, "NEW", second); }) ==
+          "CANNOT WRITE NEW.IGDSDATA (IS A DIRECTORY); NO FILE CHANGED");
+    fs::remove(s.disk.path("NEW", "IGDSDATA"));
   }
   SUBCASE("a folder is where the file must go") {
     fs::create_directory(s.disk.path("PIC", "IGDSIMAG"));
@@ -264,4 +263,102 @@ TEST_CASE("a really full disk and a read-only disk (tmpfs; needs the right to mo
   Workspace ws;
   restore_surface(disk, "HULL", ws);
   test::check_same_surface(ws, fits);
+}
+
+TEST_CASE("a link put where a temporary goes is removed, never written through") {
+  Scratch s;
+  test::TempDir elsewhere;
+  const fs::path outside = elsewhere.path() / "precious";
+  test::rewrite_file(outside, "not igds's");
+  const fs::path tmp = disk::temporary_for(s.disk.path("HULL", "IGDSDATA"));
+  Workspace w = test::make_workspace(3, 3, 1, 1);
+
+  SUBCASE("a hard link") {
+    fs::create_hard_link(outside, tmp);
+  }
+  SUBCASE("a symbolic link") {
+    fs::create_symlink(outside, tmp);
+  }
+  SUBCASE("a symbolic link to nothing yet") {
+    fs::remove(outside);
+    fs::create_symlink(outside, tmp);
+  }
+  save_surface(s.disk, "HULL", w);
+  Workspace back;
+  restore_surface(s.disk, "HULL", back);
+  test::check_same_surface(back, w);
+  if (fs::exists(outside)) CHECK(test::read_file(outside) == "not igds's");
+  CHECK(files_in(s.dir.path()) == std::set<std::string>{"HULL.IGDSDATA"});
+  CHECK(files_in(elsewhere.path()).size() <= 1);
+}
+
+TEST_CASE("the checksum of bytes given in runs is the checksum of the whole") {
+  std::string bytes;
+  for (int i = 0; i < 1000; ++i) bytes += static_cast<char>(i * 37 + i / 7);
+  for (std::size_t cut1 : {0u, 1u, 7u, 31u, 32u, 33u, 100u})
+    for (std::size_t cut2 : {0u, 5u, 64u, 500u}) {
+      disk::Checksum sum;
+      std::string_view v(bytes);
+      const std::size_t a = std::min(cut1, v.size()), b = std::min(a + cut2, v.size());
+      sum.add(v.substr(0, a));
+      sum.add(v.substr(a, b - a));
+      sum.add(v.substr(b));
+      CHECK(sum.value() == disk::checksum(bytes));
+    }
+  // And a frame built of borrowed runs is the frame of the joined payload.
+  disk::Writer w;
+  w.u32(7);
+  Array a({10, 3});
+  for (std::size_t i = 0; i < a.size(); ++i) a.ravel[i] = 0.5 * double(i);
+  w.array(a);
+  w.bytes(std::string(5000, 'x'));
+  const std::string joined = w.str();
+  CHECK(disk::frame("IGDSDATA", w).str() == disk::frame("IGDSDATA", joined));
+}
+
+TEST_CASE("a file larger than any legal one is refused before it is read") {
+  Scratch s;
+  const fs::path big = s.disk.path("BIG", "IGDSDATA");
+  { std::ofstream out(big); }
+  fs::resize_file(big, max_surface_file_bytes() + 1);  // sparse: no room taken
+  Workspace ws = test::make_workspace(2, 2, 0, 0);
+  CHECK(report_of([&] { restore_surface(s.disk, "BIG", ws); }) ==
+        "CANNOT READ BIG.IGDSDATA (FILE TOO LARGE); CURRENT SURFACE KEPT");
+  const fs::path pic = s.disk.path("BIG", "IGDSIMAG");
+  { std::ofstream out(pic); }
+  fs::resize_file(pic, std::uintmax_t(40) << 30);
+  CHECK(report_of([&] { load_image(s.disk, "BIG"); }) ==
+        "CANNOT READ BIG.IGDSIMAG (FILE TOO LARGE); CURRENT IMAGE KEPT");
+}
+
+TEST_CASE("RESTORE applies the 4,000,000-point limit to what the file says") {
+  Scratch s;
+  // A small file whose INTCU and INTST ask for 10^8 points, with PATCHES and INTPN empty.
+  Workspace w = test::make_workspace(2, 2, 0, 0, false);
+  w.intcu = w.intst = 9998;
+  w.patches = Array{};
+  w.intpn = Array{};
+  save_surface(s.disk, "HUGE", w);
+  Workspace ws = test::make_workspace(2, 2, 0, 0);
+  const Workspace before = ws;
+  CHECK(report_of([&] { restore_surface(s.disk, "HUGE", ws); }) ==
+        "FILE DAMAGED: HUGE.IGDSDATA (SHAPES: 100000000 INTERPOLATED POINTS, MORE THAN 4000000); "
+        "CURRENT SURFACE KEPT");
+  test::check_same_workspace(ws, before);
+  // One point more than the limit: a line of two points with 3999999 stringers between.
+  Workspace line;
+  line.nocur = 1;
+  line.nostr = 2;
+  line.intst = 3999999;
+  line.inppn = Array({2, 3});
+  line.inppn.ravel = {0, 0, 0, 1, 0, 0};
+  line.inptg = Array({6, 4});
+  save_surface(s.disk, "OVER", line);
+  CHECK(report_of([&] { restore_surface(s.disk, "OVER", ws); }) ==
+        "FILE DAMAGED: OVER.IGDSDATA (SHAPES: 4000001 INTERPOLATED POINTS, MORE THAN 4000000); "
+        "CURRENT SURFACE KEPT");
+  line.intst = 3999998;  // exactly the limit
+  save_surface(s.disk, "LIMIT", line);
+  restore_surface(s.disk, "LIMIT", ws);
+  CHECK(ws.intst == 3999998);
 }

@@ -13,12 +13,15 @@
 #include <doctest/doctest.h>
 
 #include "tests/support/process.h"
+#include "workspace/images.h"
+#include "workspace/kernels/surface.h"
 #include "workspace/state.h"
 
 namespace igds::test {
 
-// Deterministic values, a few of them special.
-inline void fill(Array& a, std::uint64_t seed) {
+// Deterministic values, a few of them special; NaNs only where `finite` is false (the inputs
+// and images of a surface must be finite numbers: workspace/variables.h).
+inline void fill(Array& a, std::uint64_t seed, bool finite = true) {
   std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
   for (std::size_t i = 0; i < a.ravel.size(); ++i) {
     x ^= x << 13;
@@ -33,8 +36,8 @@ inline void fill(Array& a, std::uint64_t seed) {
         v = std::numeric_limits<double>::denorm_min() * 3;
         break;
       case 7:
-        v = std::bit_cast<double>(0x7FF8000000000123ull);
-        break;  // NaN with a payload
+        if (!finite) v = std::bit_cast<double>(0x7FF8000000000123ull);  // NaN with a payload
+        break;
       case 11:
         v = 1e300;
         break;
@@ -61,7 +64,9 @@ inline Image make_image(int what, Projection projection, std::size_t curves, std
   return image;
 }
 
-// A surface of NOCUR x NOSTR input points with INTCU, INTST: every array with its shape.
+// A surface of NOCUR x NOSTR input points with INTCU, INTST: every array with its shape, PATCHES
+// and INTPN not an interpolation of the inputs (as the APL environment may leave them: the
+// session saves them then).
 inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool images = true) {
   Workspace ws;
   ws.nocur = nocur;
@@ -73,11 +78,14 @@ inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool
   fill(ws.inppn, 1);
   ws.inptg = Array({2 * (cu + st), 4});
   fill(ws.inptg, 2);
+  for (std::size_t r = 0; r < 2 * (cu + st); ++r)  // column 4: a point number
+    ws.inptg.ravel[4 * r + 3] = double(r % (cu * st) + 1);
   ws.patches = Array({cu - 1, st - 1, 3, 4, 4});
-  fill(ws.patches, 3);
+  fill(ws.patches, 3, false);
   ws.intpn = Array({cu + static_cast<std::size_t>(intcu) * (cu - 1),
                     st + static_cast<std::size_t>(intst) * (st - 1), 3});
-  fill(ws.intpn, 4);
+  fill(ws.intpn, 4, false);
+  ws.changes.derived = false;
   if (images) {
     ws.image = std::make_shared<const Image>(
         make_image(1, Projection::conic, ws.intpn.shape[0], ws.intpn.shape[1], 5));
@@ -85,6 +93,43 @@ inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool
     ws.temp2 = std::make_shared<const Image>(make_image(1, Projection::assonometric, 2, 3, 7));
   }
   ws.status = {0, 2, 0, 0, 0, 0, 0, 0, 0, 7};
+  return ws;
+}
+
+// A surface as BUILD makes it (PATCHES and INTPN its interpolation: the session does not save
+// them) with images drawn from it as DISPLAY draws them (recipes for the session).
+inline Workspace make_interpolated(int nocur, int nostr, int intcu, int intst) {
+  Workspace ws;
+  ws.nocur = nocur;
+  ws.nostr = nostr;
+  ws.intcu = intcu;
+  ws.intst = intst;
+  auto cu = static_cast<std::size_t>(nocur), st = static_cast<std::size_t>(nostr);
+  ws.inppn = Array({cu * st, 3});
+  for (std::size_t i = 0; i < cu; ++i)
+    for (std::size_t j = 0; j < st; ++j) {
+      double* p = ws.inppn.data() + 3 * (i * st + j);
+      p[0] = 10.0 * double(j);
+      p[1] = 7.0 * double(i) + 0.1 * double(j);
+      p[2] = std::sin(0.3 * double(i)) * std::cos(0.2 * double(j)) - 0.0;
+    }
+  ws.inptg = Array({2 * (cu + st), 4});
+  for (std::size_t r = 0; r < 2 * cu; ++r) {  // along the curves at their ends
+    ws.inptg.ravel[4 * r] = 1;
+    ws.inptg.ravel[4 * r + 3] = double((r / 2) * st + (r % 2 ? st : 1));
+  }
+  for (std::size_t r = 0; r < 2 * st; ++r) {  // along the stringers at their ends
+    ws.inptg.ravel[4 * (2 * cu + r) + 1] = 1;
+    ws.inptg.ravel[4 * (2 * cu + r) + 3] = double((r % 2 ? (cu - 1) * st : 0) + r / 2 + 1);
+  }
+  Surface s = interpolate({nocur, nostr, intcu, intst, &ws.inppn, &ws.inptg});
+  ws.patches = std::move(s.patches);
+  ws.intpn = std::move(s.intpn);
+  ws.image =
+      std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+  ws.temp1 = ws.image;
+  ws.temp2 = std::make_shared<const Image>(image_of(ws, {0, Projection::isometric, {3, 30, 0}}));
+  ws.status = {1, 1, 0, 0, 0, 0, 0, 0, 0, 0};
   return ws;
 }
 

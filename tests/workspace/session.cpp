@@ -22,7 +22,9 @@
 #include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/small_disk.h"
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
+#include "workspace/disk/frame.h"
+#include "workspace/disk/session_file.h"
 #include "workspace/error.h"
 
 using namespace igds;
@@ -113,7 +115,8 @@ TEST_CASE("a saved session is loaded bit for bit, every variable") {
     {
       Session session(s.disk);
       session.load();
-      session.save(Workspace{});
+      Workspace empty;
+      session.save(empty);
     }
     test::check_same_workspace(load_fresh(s.disk), Workspace{});
     CHECK(files_in(s.dir.path()) == std::set<std::string>{"BINSAVE.IGDSCONT"});
@@ -129,10 +132,10 @@ TEST_CASE("a save rewrites only what changed") {
   session.load();
   session.save(ws);
   auto before = variable_files(s.dir.path());
-  CHECK(before.size() == 6);  // all but TEMP2, which is small
+  CHECK(before.size() == 6);  // INPPN, INPTG, PATCHES, INTPN, IMAGE, TEMP1; TEMP2 is small
 
   SUBCASE("STATUS only: the small session file alone") {
-    ws.status[0] = 0;
+    ws.status[0] = 1;
     std::size_t w0 = bytes_written_so_far();
     session.save(ws);
     std::size_t written = bytes_written_so_far() - w0;
@@ -145,15 +148,16 @@ TEST_CASE("a save rewrites only what changed") {
     session.save(ws);
     CHECK(bytes_written_so_far() - w0 == 0);
   }
-  SUBCASE("INTPN: one new file, the old one gone, the others untouched") {
+  SUBCASE("an edited INTPN: its file and no other") {
     ws.intpn.ravel[17] = -0.0;  // was 0.0: only the bits tell
     REQUIRE(ws.intpn.ravel[17] == 0.0);
+    ws.changes.assigned();  // as the APL environment says it
     session.save(ws);
     auto after = variable_files(s.dir.path());
     CHECK(after.size() == 6);
     std::size_t same = 0;
     for (const auto& [name, inode] : after) same += before.count(name) && before[name] == inode;
-    CHECK(same == 5);
+    CHECK(same == 4);  // INPPN and INPTG (a new record of the same pieces) and the images
   }
   SUBCASE("an image removed") {
     ws.temp1.reset();
@@ -166,11 +170,95 @@ TEST_CASE("a save rewrites only what changed") {
   CHECK_MESSAGE(notices.empty(), fmt::format("{}", fmt::join(notices, "\n")));
 }
 
+TEST_CASE("an interpolated surface is saved as its inputs, its images as recipes") {
+  Scratch s;
+  // 500 x 500 input points (6 MB of INPPN in three pieces), 1997 x 1997 interpolated points.
+  Workspace ws = test::make_interpolated(500, 500, 3, 3);
+  std::optional<Session> open(std::in_place, s.disk);
+  open->load();
+  std::size_t w0 = bytes_written_so_far();
+  open->save(ws);
+  const std::size_t inputs = (ws.inppn.size() + ws.inptg.size()) * sizeof(double);
+  // The inputs and a little more: no INTPN (96 MB), no PATCHES (96 MB), no image (64 MB).
+  CHECK(bytes_written_so_far() - w0 < inputs + 64 * 1024);
+
+  SUBCASE("a DISPLAY: the recipe alone") {
+    ws.image =
+        std::make_shared<const Image>(image_of(ws, {1, Projection::conic, {9000, -7000, 600}}));
+    w0 = bytes_written_so_far();
+    open->save(ws);
+    CHECK(bytes_written_so_far() - w0 < 4096);
+  }
+  SUBCASE("STORE SECOND of the current image: nothing but the session file") {
+    ws.temp2 = ws.image;
+    w0 = bytes_written_so_far();
+    open->save(ws);
+    CHECK(bytes_written_so_far() - w0 < 4096);
+  }
+  SUBCASE("CHANGE POINTS of one point: that piece of INPPN alone") {
+    const auto before = variable_files(s.dir.path());
+    ws.inppn.ravel[3 * 1000 + 2] += 5;  // point 1001
+    Edits points = Edits::none();
+    points.part(3 * 1000, 3 * 1001);
+    Surface again = interpolate({ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg});
+    ws.patches = std::move(again.patches);
+    ws.intpn = std::move(again.intpn);
+    ws.changes.edited(points, Edits::none());
+    w0 = bytes_written_so_far();
+    open->save(ws);
+    const std::size_t written = bytes_written_so_far() - w0;
+    CHECK(written < disk::piece_bytes + 64 * 1024);
+    CHECK(written > 1024);
+    // The images drawn from the surface before keep it on the disk: its other pieces are shared.
+    const auto after = variable_files(s.dir.path());
+    CHECK(after.size() == before.size() + 1);
+  }
+  SUBCASE("CHANGE GRID: the new grid of the same inputs writes no piece at all") {
+    ws.intcu = ws.intst = 2;
+    Surface again = interpolate({ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg});
+    ws.patches = std::move(again.patches);
+    ws.intpn = std::move(again.intpn);
+    ws.changes.edited(Edits::none(), Edits::none());
+    w0 = bytes_written_so_far();
+    open->save(ws);
+    CHECK(bytes_written_so_far() - w0 < 4096);
+  }
+  open.reset();
+  std::vector<std::string> notices;
+  const Workspace back = load_fresh(s.disk, &notices);
+  CHECK(notices.empty());
+  test::check_same_workspace(back, ws);
+  // The images come back as images of their surfaces: the next DISPLAY FIRST of one of them
+  // after a CHANGE still writes no image.
+  CHECK(back.image->drawn_from != 0);
+  CHECK(back.temp2->drawn_from != 0);
+}
+
+TEST_CASE("an image read from a file is kept as a second name of that file") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(40, 40, 10, 10);
+  store_image(s.disk, "PIC", *ws.image);
+  std::optional<Session> open(std::in_place, s.disk);
+  open->load();
+  open->save(ws);
+  ws.image = std::make_shared<const Image>(load_image(s.disk, "PIC"));
+  ws.temp1 = ws.image;
+  std::size_t w0 = bytes_written_so_far();
+  open->save(ws);
+  CHECK(bytes_written_so_far() - w0 < 4096);
+  // The user's file may go: the session has its own name for it.
+  fs::remove(s.disk.path("PIC", "IGDSIMAG"));
+  open.reset();
+  const Workspace back = load_fresh(s.disk);
+  test::check_same_workspace(back, ws);
+  CHECK(back.image == back.temp1);  // one image, as before
+}
+
 TEST_CASE("a damaged session is never half-loaded: kept aside, empty start, notice") {
   Scratch s;
   Workspace big = test::make_workspace(5, 5, 4, 4);  // INTPN, PATCHES, IMAGE in files
   Workspace small = test::make_workspace(2, 2, 0, 0, false);
-  auto save = [&](const Workspace& ws) {
+  auto save = [&](Workspace ws) {
     Session session(s.disk);
     session.load();
     session.save(ws);
@@ -392,7 +480,8 @@ TEST_CASE("one session per disk") {
     if (child == 0) {
       try {
         Session session(s.disk);
-        session.save(test::make_workspace(2, 2, 1, 1));
+        Workspace ws = test::make_workspace(2, 2, 1, 1);
+        session.save(ws);
         char c = 'y';
         if (::write(ready[1], &c, 1) != 1) ::_exit(2);
         for (;;) ::pause();
@@ -424,22 +513,161 @@ TEST_CASE("one session per disk") {
   }
 }
 
-TEST_CASE("the session holds whatever the workspace held, even what RESTORE would refuse") {
+TEST_CASE("a session whose checksum holds but whose variables disagree is refused") {
+  Scratch s;
+  Workspace small = test::make_workspace(2, 2, 0, 0, false);
+  {
+    Session session(s.disk);
+    session.save(small);
+  }
+  // The checksum has no key: anyone can make a session file that passes it.
+  const std::string good = test::read_file(s.session());
+  const auto table = disk::decode_session(disk::unframe("IGDSCONT", good).payload);
+  auto crafted = [&](auto&& change, const std::string& reason) {
+    CAPTURE(reason);
+    disk::SessionTable t = table;
+    change(t);
+    test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(t), 2));
+    std::vector<std::string> notices;
+    CHECK(load_fresh(s.disk, &notices) == Workspace{});
+    REQUIRE(notices.size() == 1);
+    CHECK(notices[0] == fmt::format("SESSION FILE BINSAVE.IGDSCONT DAMAGED ({}): KEPT AS "
+                                    "BINSAVE.IGDSBAD; THE WORKSPACE STARTS EMPTY",
+                                    reason));
+    fs::remove(s.disk.path("BINSAVE", "IGDSBAD"));
+  };
+  crafted([](disk::SessionTable& t) { t.records[0].nocur = t.records[0].nostr = 40; },
+          "SHAPES: INPPN DOES NOT MATCH NOCUR AND NOSTR");
+  crafted([](disk::SessionTable& t) { t.records[0].nocur = 1000000; },
+          "SHAPES: 2000000 INPUT POINTS, MORE THAN 1000000");
+  crafted([](disk::SessionTable& t) { t.records[0].nocur = 100000000; },
+          "SHAPES: 200000000 INPUT POINTS, MORE THAN 1000000");
+  crafted([](disk::SessionTable& t) { t.records[0].intcu = t.records[0].intst = 9998; },
+          "SHAPES: 100000000 INTERPOLATED POINTS, MORE THAN 4000000");
+  crafted(
+      [](disk::SessionTable& t) {
+        t.records[0].inptg.shape = {4, 8};
+      },
+      "SHAPES: INPTG DOES NOT MATCH NOCUR AND NOSTR");
+  crafted([](disk::SessionTable& t) { t.status[1] = 7; }, "STATUS: STATUS[2] IS NOT 0, 1 OR 2");
+  crafted(
+      [](disk::SessionTable& t) {
+        t.derived = false;
+        t.intpn.shape = {2, 2};
+      },
+      "FORMAT");
+  crafted(
+      [](disk::SessionTable& t) {
+        t.images[0].kind = disk::ImageEntry::recipe;
+        t.images[0].record = t.current;
+        t.images[0].desim.projection = static_cast<Projection>(9);
+      },
+      "IMAGE: DESIM[2] IS NOT A PROJECTION (1 TO 4)");
+  // A claim of a huge image costs nothing before it is refused.
+  crafted(
+      [](disk::SessionTable& t) {
+        t.images[1].kind = disk::ImageEntry::stored;
+        t.images[1].data.pieces = {
+            disk::Piece{true, {}, {1, (std::uint64_t(1) << 40) + 32, 0}, std::uint64_t(1) << 40}};
+      },
+      "IMAGE: TOO LARGE");
+}
+
+TEST_CASE("the session never saves a workspace that the next start would refuse") {
   Scratch s;
   Workspace odd = test::make_workspace(2, 2, 1, 1);
   odd.nocur = 7;  // shapes that do not agree with NOCUR
-  Image image = *odd.image, temp1 = *odd.temp1;
-  image.desim.what = 5;
-  temp1.desim.projection = static_cast<Projection>(0);
-  odd.image = std::make_shared<const Image>(image);
-  odd.temp1 = std::make_shared<const Image>(temp1);
+  Session session(s.disk);
+  CHECK(report_of([&] { session.save(odd); }) ==
+        "CANNOT SAVE THE SESSION (INPPN IS 4 BY 3, NOT 14 BY 3); THE LAST SAVED SESSION IS KEPT");
+  CHECK(!fs::exists(s.session()));
+}
+
+TEST_CASE("variable files without a session are kept aside, never deleted") {
+  Scratch s;
   {
     Session session(s.disk);
-    session.save(odd);
+    Workspace ws = test::make_workspace(5, 5, 4, 4);
+    session.save(ws);
   }
+  const auto vars = files_of_type(s.dir.path(), ".IGDSVARS");
+  REQUIRE(vars.size() == 3);
+  fs::rename(s.session(), s.dir.path() / "moved.away");
   std::vector<std::string> notices;
-  test::check_same_workspace(load_fresh(s.disk, &notices), odd);
-  CHECK(notices.empty());
+  CHECK(load_fresh(s.disk, &notices) == Workspace{});
+  REQUIRE(notices.size() == 1);
+  CHECK(notices[0] == fmt::format("3 VARIABLE FILES WITHOUT A SESSION FILE: KEPT AS {}.IGDSBAD ...",
+                                  vars.begin()->substr(0, 8)));
+  CHECK(files_of_type(s.dir.path(), ".IGDSVARS").empty());
+  CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 3);
+}
+
+TEST_CASE(
+    "variable files removed while igds runs are written again before the session names them") {
+  Scratch s;
+  Workspace ws = test::make_workspace(5, 5, 4, 4);
+  Session session(s.disk);
+  session.save(ws);
+  for (const auto& name : files_of_type(s.dir.path(), ".IGDSVARS")) fs::remove(s.dir.path() / name);
+  ws.status[0] = 1;  // a small change: the save notices the files are gone
+  session.save(ws);
+  CHECK(files_of_type(s.dir.path(), ".IGDSVARS").size() == 3);
+}
+
+TEST_CASE("a session of the first format (version 1) still opens") {
+  Scratch s;
+  // Written as igds 1.0 wrote it: NOCUR NOSTR INTCU INTST, STATUS, the next file number, then
+  // INPPN INPTG PATCHES INTPN IMAGE TEMP1 TEMP2, each inline or in a file of its own.
+  Workspace ws = test::make_interpolated(6, 5, 2, 2);
+  ws.temp2.reset();
+  disk::Writer w;
+  for (int v : {ws.nocur, ws.nostr, ws.intcu, ws.intst}) w.i32(v);
+  for (int v : ws.status) w.i32(v);
+  w.u32(9);
+  w.u32(7);
+  std::uint32_t number = 1;
+  auto slot = [&](const disk::Writer& variable) {
+    const std::string bytes = variable.str();
+    if (bytes.size() <= 1024) {
+      w.u8(1);
+      w.u64(bytes.size());
+      w.bytes(bytes);
+      return;
+    }
+    const std::string file = disk::frame("IGDSVARS", bytes);
+    test::write_file(s.dir.path() / fmt::format("B{:07X}.IGDSVARS", number), file);
+    w.u8(2);
+    w.u32(number++);
+    w.u64(file.size());
+    w.u64(disk::trailing_checksum(file));
+  };
+  for (const Array* a : {&ws.inppn, &ws.inptg, &ws.patches, &ws.intpn}) {
+    disk::Writer v;
+    v.array(*a);
+    slot(v);
+  }
+  for (const ImageRef& im : {ws.image, ws.temp1}) {
+    disk::Writer v;
+    v.image(*im);
+    slot(v);
+  }
+  w.u8(0);
+  test::write_file(s.session(), disk::frame("IGDSCONT", w.str(), 1));
+  const auto old_files = files_of_type(s.dir.path(), ".IGDSVARS");
+  REQUIRE(!old_files.empty());
+  {
+    Session session(s.disk);
+    Workspace back = session.load();
+    CHECK(session.notices().empty());
+    test::check_same_workspace(back, ws);
+    CHECK(back.changes.derived);  // its PATCHES and INTPN are igds's own: not saved again
+    back.status[0] = 0;
+    session.save(back);
+    for (const auto& f : old_files) CHECK(!fs::exists(s.dir.path() / f));
+  }
+  Workspace again = load_fresh(s.disk);
+  ws.status[0] = 0;
+  test::check_same_workspace(again, ws);
 }
 
 TEST_CASE("a read-only disk cannot hold a session: said at once (tmpfs; needs mount)") {
@@ -490,4 +718,67 @@ TEST_CASE("a bad session that cannot even be put aside stays where it is (needs 
         "SESSION FILE BINSAVE.IGDSCONT CANNOT BE READ (IS A DIRECTORY): NOT KEPT ASIDE (DEVICE OR "
         "RESOURCE BUSY); THE WORKSPACE STARTS EMPTY");
   CHECK(fs::exists(s.dir.path() / "B0000001.IGDSVARS"));
+}
+
+TEST_CASE("the lock is never anything but a plain file of igds's own") {
+  Scratch s;
+  const fs::path lock = s.disk.path("BINSAVE", "IGDSLOCK");
+  const std::string where = s.dir.path().string();
+  SUBCASE("a hard link to a file elsewhere: refused, the file untouched") {
+    test::TempDir elsewhere;
+    test::write_file(elsewhere.path() / "precious", "12345\n");
+    fs::create_hard_link(elsewhere.path() / "precious", lock);
+    CHECK_THROWS_WITH_AS(
+        Session{s.disk},
+        fmt::format("DISK {} CANNOT BE LOCKED (BINSAVE.IGDSLOCK HAS ANOTHER NAME TOO)", where)
+            .c_str(),
+        Report);
+    CHECK(test::read_file(elsewhere.path() / "precious") == "12345\n");
+  }
+  SUBCASE("a FIFO: refused at once, and left where it is") {
+    REQUIRE(::mkfifo(lock.c_str(), 0600) == 0);
+    CHECK_THROWS_WITH_AS(
+        Session{s.disk},
+        fmt::format("DISK {} CANNOT BE LOCKED (BINSAVE.IGDSLOCK IS NOT A PLAIN FILE)", where)
+            .c_str(),
+        Report);
+    CHECK(fs::is_fifo(lock));
+  }
+  SUBCASE("a symbolic link") {
+    fs::create_symlink(s.dir.path() / "elsewhere", lock);
+    CHECK_THROWS_WITH_AS(
+        Session{s.disk},
+        fmt::format("DISK {} CANNOT BE LOCKED (BINSAVE.IGDSLOCK IS A SYMBOLIC LINK)", where)
+            .c_str(),
+        Report);
+    CHECK(!fs::exists(s.dir.path() / "elsewhere"));
+  }
+}
+
+TEST_CASE("a full disk still opens: said at start, saved as soon as there is room") {
+  Scratch s;
+  Workspace first = test::make_workspace(3, 3, 1, 1);
+  {
+    Session session(s.disk);
+    session.save(first);
+  }
+  disk::set_write_limit_for_testing(0);
+  {
+    Session session(s.disk);
+    Workspace ws = session.load();
+    REQUIRE(session.notices().size() == 1);
+    CHECK(session.notices()[0] ==
+          fmt::format("DISK {} IS FULL: THE SESSION IS SAVED AGAIN WHEN THERE IS ROOM",
+                      s.dir.path().string()));
+    test::check_same_workspace(ws, first);
+    ws.status[0] = 1;
+    CHECK(report_of([&] { session.save(ws); }) ==
+          "CANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON DEVICE); THE LAST SAVED "
+          "SESSION IS KEPT");
+    disk::set_write_limit_for_testing(std::nullopt);
+    session.save(ws);
+    first = ws;
+  }
+  disk::set_write_limit_for_testing(std::nullopt);
+  test::check_same_workspace(load_fresh(s.disk), first);
 }

@@ -57,7 +57,8 @@ TEST_CASE("Session::save killed -9 at random moments: old or new, never torn") {
         Session session(disk);
         session.load();
         for (int k = first;; ++k) {
-          session.save(state(k));
+          Workspace ws = state(k);
+          session.save(ws);
           // Like READY: said only once save() has returned.
           if (::write(done[1], &k, sizeof k) != sizeof k) ::_exit(2);
         }

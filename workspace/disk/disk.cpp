@@ -1,12 +1,17 @@
 #include "workspace/disk/disk.h"
 
+#include <cstring>
 #include <system_error>
 
 #include <fmt/format.h>
 
 #include "workspace/disk/cards.h"
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
+#include "workspace/disk/frame.h"
 #include "workspace/error.h"
+#include "workspace/kernels/limits.h"
+#include "workspace/kernels/surface.h"
+#include "workspace/variables.h"
 
 namespace igds {
 
@@ -24,7 +29,7 @@ bool cms_character(char c) {
 // file system, whatever the caller checked.
 std::string checked(std::string_view name) {
   auto n = cms_name(name);
-  if (!n || *n != name) throw Report(reports::incorrect_parameter);
+  if (!n || *n != name) throw ParameterError();
   return *n;
 }
 
@@ -33,35 +38,68 @@ std::string file_name(std::string_view name, std::string_view type) {
 }
 
 void write_or_report(const Disk& disk, std::string_view name, std::string_view type,
-                     std::string_view bytes) {
+                     const disk::Writer& bytes) {
   try {
-    disk::replace_file(disk.path(name, type), bytes);
+    disk::write_file(disk.path(name, type), bytes);
   } catch (const disk::IoError& e) {
     throw Report(
         fmt::format("CANNOT WRITE {} ({}); NO FILE CHANGED", file_name(name, type), e.reason()));
   }
 }
 
-// The payload of NAME.TYPE, or the report FILE NOT FOUND / CANNOT READ / FILE DAMAGED.
-template <class Decode>
-auto read_or_report(const Disk& disk, std::string_view name, std::string_view type,
-                    std::string_view magic, std::string_view kept, Decode decode) {
-  std::string file = file_name(name, type);
-  std::optional<std::string> bytes;
+// NAME.TYPE mapped, after its size was checked; FILE NOT FOUND / CANNOT READ otherwise.
+disk::MappedFile open_or_report(const Disk& disk, std::string_view name, std::string_view type,
+                                std::size_t max_bytes, std::string_view kept) {
   try {
-    bytes = disk::read_whole_file(disk.path(name, type));
+    disk::MappedFile file(disk.path(name, type), max_bytes);
+    if (!file.exists()) throw Report(reports::file_not_found);
+    return file;
   } catch (const disk::IoError& e) {
-    throw Report(fmt::format("CANNOT READ {} ({}); {}", file, e.reason(), kept));
+    throw Report(fmt::format("CANNOT READ {} ({}); {}", file_name(name, type), e.reason(), kept));
   }
-  if (!bytes) throw Report(reports::file_not_found);
-  try {
-    disk::Reader r(disk::unframe(magic, *bytes));
-    auto value = decode(r);
-    r.finish();
-    return value;
-  } catch (const disk::Damage& d) {
-    throw Report(fmt::format("FILE DAMAGED: {} ({}); {}", file, d.reason, kept));
+}
+
+Report damaged(std::string_view name, std::string_view type, std::string_view reason,
+               std::string_view kept) {
+  return Report(fmt::format("FILE DAMAGED: {} ({}); {}", file_name(name, type), reason, kept));
+}
+
+// An array's bytes in a file, not copied: its shape and its doubles.
+struct RawArray {
+  std::vector<std::size_t> shape;
+  std::string_view bytes;
+};
+
+RawArray raw_array(disk::Reader& r) {
+  RawArray a;
+  const std::uint32_t rank = r.u32();
+  if (rank > 8) throw disk::Damage("FORMAT");
+  std::uint64_t count = rank == 0 ? 0 : 1;
+  for (std::uint32_t k = 0; k < rank; ++k) {
+    const std::uint64_t d = r.u64();
+    if (d != 0 && count > (std::uint64_t(1) << 60) / d) throw disk::Damage("FORMAT");
+    count *= d;
+    a.shape.push_back(static_cast<std::size_t>(d));
   }
+  const std::uint64_t n = r.u64();
+  if (n != count || n > r.left() / sizeof(double)) throw disk::Damage("FORMAT");
+  a.bytes = r.bytes(static_cast<std::size_t>(n) * sizeof(double));
+  return a;
+}
+
+bool same_bytes(const Array& a, const RawArray& raw) {
+  return a.shape == raw.shape && a.size() * sizeof(double) == raw.bytes.size() &&
+         (raw.bytes.empty() || std::memcmp(a.data(), raw.bytes.data(), raw.bytes.size()) == 0);
+}
+
+Array copied(const RawArray& raw) {
+  Array a(raw.shape);
+  if (!raw.bytes.empty()) std::memcpy(a.data(), raw.bytes.data(), raw.bytes.size());
+  return a;
+}
+
+std::size_t array_bytes(std::size_t rank, double elements) {
+  return 4 + 8 * rank + 8 + static_cast<std::size_t>(8 * elements);
 }
 
 }  // namespace
@@ -95,26 +133,95 @@ std::filesystem::path Disk::path(std::string_view name, std::string_view type) c
 
 bool Disk::exists(std::string_view name, std::string_view type) const {
   std::error_code ec;
-  return std::filesystem::exists(path(name, type), ec);
+  return std::filesystem::exists(std::filesystem::symlink_status(path(name, type), ec));
+}
+
+bool write_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                     std::string_view bytes, bool replace, std::string_view kept) {
+  const std::string n = checked(name);
+  try {
+    return disk::write_file(disk.path(n, type), bytes, replace);
+  } catch (const disk::IoError& e) {
+    throw Report(fmt::format("CANNOT WRITE {} ({}); {}", file_name(n, type), e.reason(), kept));
+  }
+}
+
+std::size_t max_surface_file_bytes() {
+  // The largest arrays of a legal surface: INPPN of max_input_points, INPTG of a single curve
+  // of them, PATCHES of a square grid of them, INTPN of max_grid_points.
+  const double p = double(max_input_points);
+  return disk::frame_header_bytes + disk::frame_trailer_bytes + 16 + array_bytes(2, 3 * p) +
+         array_bytes(2, 8 * (p + 1)) + array_bytes(5, 48 * p) +
+         array_bytes(3, 3 * double(max_grid_points));
+}
+
+std::size_t max_image_file_bytes() {
+  // The points of max_grid_points, an arrow (6 numbers) for every border tangent of
+  // max_input_points in a line.
+  return disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
+         array_bytes(3, 2 * double(max_grid_points)) +
+         array_bytes(2, 6 * 2 * (double(max_input_points) + 1));
 }
 
 void save_surface(const Disk& disk, std::string_view name, const Workspace& ws) {
-  std::string n = checked(name);
+  const std::string n = checked(name);
   disk::Writer w;
-  disk::write_surface(w, ws);
-  write_or_report(disk, n, "IGDSDATA", disk::frame(data_magic, w.str()));
+  w.i32(ws.nocur);
+  w.i32(ws.nostr);
+  w.i32(ws.intcu);
+  w.i32(ws.intst);
+  w.array(ws.inppn);
+  w.array(ws.inptg);
+  w.array(ws.patches);
+  w.array(ws.intpn);
+  write_or_report(disk, n, "IGDSDATA", disk::frame(data_magic, w));
 }
 
 void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
-  std::string n = checked(name);
-  Workspace in =
-      read_or_report(disk, n, "IGDSDATA", data_magic, "CURRENT SURFACE KEPT", [](disk::Reader& r) {
-        Workspace w;
-        disk::read_surface(r, w);
-        // A saved surface always has input (SAVE refuses without).
-        if (w.nocur == 0 || !disk::surface_shape_error(w).empty()) throw disk::Damage{"SHAPES"};
-        return w;
-      });
+  const std::string n = checked(name);
+  constexpr std::string_view kept = "CURRENT SURFACE KEPT";
+  disk::MappedFile file = open_or_report(disk, n, "IGDSDATA", max_surface_file_bytes(), kept);
+  Workspace in;
+  RawArray patches, intpn;
+  try {
+    disk::Reader r(disk::unframe(data_magic, file.bytes()).payload);
+    in.nocur = r.i32();
+    in.nostr = r.i32();
+    in.intcu = r.i32();
+    in.intst = r.i32();
+    in.inppn = r.array(3 * max_input_points);
+    in.inptg = r.array(8 * (max_input_points + 1));
+    patches = raw_array(r);
+    intpn = raw_array(r);
+    r.finish();
+  } catch (const disk::Damage& d) {
+    throw damaged(n, "IGDSDATA", d.reason(), kept);
+  }
+  // Every variable is checked before anything trusts it: shapes, relations, limits, numbers.
+  // A saved surface always has input (SAVE refuses without).
+  if (in.nocur == 0) throw damaged(n, "IGDSDATA", "SHAPES: NOCUR IS 0", kept);
+  if (auto p = surface_problem(in))
+    throw damaged(n, "IGDSDATA", fmt::format("SHAPES: {}", p->reason), kept);
+  const bool none = patches.shape.empty() && intpn.shape.empty();
+  if (!none) {
+    for (auto [v, raw] : {std::pair{Variable::patches, &patches}, {Variable::intpn, &intpn}})
+      if (raw->shape != expected_shape(in, v))
+        throw damaged(n, "IGDSDATA",
+                      fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name), kept);
+  }
+  // PATCHES and INTPN as igds interpolates them are not saved with the session: they are made
+  // again from the inputs. Those of the file are kept as they are when they differ.
+  Surface surface = interpolate({in.nocur, in.nostr, in.intcu, in.intst, &in.inppn, &in.inptg});
+  const bool derived =
+      !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);
+  if (derived) {
+    in.patches = std::move(surface.patches);
+    in.intpn = std::move(surface.intpn);
+  } else {
+    surface = {};
+    in.patches = none ? Array{} : copied(patches);
+    in.intpn = none ? Array{} : copied(intpn);
+  }
   ws.nocur = in.nocur;
   ws.nostr = in.nostr;
   ws.intcu = in.intcu;
@@ -123,26 +230,39 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   ws.inptg = std::move(in.inptg);
   ws.patches = std::move(in.patches);
   ws.intpn = std::move(in.intpn);
+  ws.changes.replaced(derived);
 }
 
 void store_image(const Disk& disk, std::string_view name, const Image& image) {
-  std::string n = checked(name);
+  const std::string n = checked(name);
   disk::Writer w;
   w.image(image);
-  write_or_report(disk, n, "IGDSIMAG", disk::frame(image_magic, w.str()));
+  write_or_report(disk, n, "IGDSIMAG", disk::frame(image_magic, w));
 }
 
 Image load_image(const Disk& disk, std::string_view name) {
-  std::string n = checked(name);
-  return read_or_report(disk, n, "IGDSIMAG", image_magic, "CURRENT IMAGE KEPT",
-                        [](disk::Reader& r) { return r.image(); });
+  const std::string n = checked(name);
+  constexpr std::string_view kept = "CURRENT IMAGE KEPT";
+  disk::MappedFile file = open_or_report(disk, n, "IGDSIMAG", max_image_file_bytes(), kept);
+  Image image;
+  try {
+    disk::Reader r(disk::unframe(image_magic, file.bytes()).payload);
+    image = r.image();
+    r.finish();
+  } catch (const disk::Damage& d) {
+    throw damaged(n, "IGDSIMAG", d.reason(), kept);
+  }
+  if (auto p = image_problem(image)) throw damaged(n, "IGDSIMAG", "FORMAT: " + p->reason, kept);
+  image.file = disk.path(n, "IGDSIMAG");
+  image.file_sum = disk::trailing_checksum(file.bytes());
+  return image;
 }
 
 std::size_t write_char(const Disk& disk, std::string_view name, const Workspace& ws) {
-  std::string n = checked(name);
+  const std::string n = checked(name);
   std::size_t overflow = 0;
-  std::string text = disk::char_cards(ws, &overflow);
-  write_or_report(disk, n, "IGDSCHAR", text);
+  const std::string text = disk::char_cards(ws, &overflow);
+  write_user_file(disk, n, "IGDSCHAR", text);
   return overflow;
 }
 

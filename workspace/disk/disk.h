@@ -29,13 +29,21 @@ class Disk {
   std::filesystem::path dir_;
 };
 
+// Writes NAME.TYPE on the disk whole or not at all (workspace/disk/files.h): every file a
+// command writes for the user goes through here. `replace`: an existing file of that name is
+// replaced; else false is returned and nothing changes. Throws Report "CANNOT WRITE NAME.TYPE
+// (REASON); `kept`" when the disk refuses.
+bool write_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                     std::string_view bytes, bool replace = true,
+                     std::string_view kept = "NO FILE CHANGED");
+
 // SAVE: NAME.IGDSDATA, replacing a file of that name (written whole or not at all).
-// Throws Report (e.g. INPUT NOT FOUND is the caller's; a write failure says what and that
-// nothing was lost).
 void save_surface(const Disk& disk, std::string_view name, const Workspace& ws);
 
 // RESTORE: the surface of NAME.IGDSDATA (NOCUR NOSTR INTCU INTST INPPN INPTG PATCHES INTPN)
-// replaces the one in `ws`. Throws Report FILE NOT FOUND, or FILE DAMAGED: ... with `ws` untouched.
+// replaces the one in `ws`, once every variable was checked (workspace/variables.h). Throws
+// Report FILE NOT FOUND, or FILE DAMAGED: NAME.IGDSDATA (REASON); CURRENT SURFACE KEPT with `ws`
+// untouched.
 void restore_surface(const Disk& disk, std::string_view name, Workspace& ws);
 
 // STORE FILE / DISPLAY FILE: NAME.IGDSIMAG holds one image and its description.
@@ -45,5 +53,10 @@ Image load_image(const Disk& disk, std::string_view name);  // FILE NOT FOUND / 
 // WRITE: NAME.IGDSCHAR in the card format of the spec. Returns how many values did not fit
 // F10.3 and were written as ten asterisks.
 std::size_t write_char(const Disk& disk, std::string_view name, const Workspace& ws);
+
+// The largest IGDSDATA and IGDSIMAG files a legal surface or image makes (larger ones are
+// refused before they are read).
+std::size_t max_surface_file_bytes();
+std::size_t max_image_file_bytes();
 
 }  // namespace igds

@@ -1,506 +1,774 @@
 #include "workspace/disk/session.h"
 
-#include <dirent.h>
 #include <fcntl.h>
-#include <stdio.h>
-#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <cerrno>
-#include <chrono>
-#include <cstdint>
+#include <cstring>
+#include <future>
+#include <map>
+#include <optional>
 #include <set>
-#include <thread>
 
 #include <fmt/format.h>
 
-#include "workspace/disk/format.h"
+#include "workspace/disk/files.h"
+#include "workspace/disk/frame.h"
+#include "workspace/disk/lock.h"
+#include "workspace/disk/session_file.h"
 #include "workspace/error.h"
+#include "workspace/images.h"
+#include "workspace/kernels/data_error.h"
+#include "workspace/kernels/surface.h"
+#include "workspace/variables.h"
 
 namespace igds {
 
 namespace {
 
-// The session is BINSAVE.IGDSCONT, a small file holding the scalars, STATUS, the small arrays
-// and references to one file per large variable (Bnnnnnnn.IGDSVARS, never rewritten once
-// written), so that a save rewrites only what changed (docs/disk.md).
+using disk::Blob;
+using disk::FileRef;
+using disk::ImageEntry;
+using disk::Piece;
+using disk::Record;
+using disk::SessionTable;
+using disk::StoredArray;
+
 constexpr std::string_view session_name = "BINSAVE";
 constexpr std::string_view session_type = "IGDSCONT";
 constexpr std::string_view session_magic = "IGDSCONT";
-constexpr std::string_view lock_type = "IGDSLOCK";
-constexpr std::string_view variable_type = "IGDSVARS";
 constexpr std::string_view variable_magic = "IGDSVARS";
-constexpr std::string_view bad_type = "IGDSBAD";
-constexpr std::size_t inline_limit = 1024;  // a variable this small stays in BINSAVE.IGDSCONT
-constexpr std::uint32_t blob_numbers = 0x10000000;  // seven hex digits
-
-// The variables kept one by one, in the order of BINSAVE.IGDSCONT.
-constexpr std::size_t slot_count = 7;  // INPPN INPTG PATCHES INTPN IMAGE TEMP1 TEMP2
-
-struct Slot {
-  enum Kind : std::uint8_t { absent = 0, inline_bytes = 1, file = 2 } kind = absent;
-  std::string bytes;         // inline_bytes: the encoded variable
-  std::uint32_t number = 0;  // file: Bnnnnnnn.IGDSVARS
-  std::uint64_t length = 0;  // file: its size and its trailing checksum
-  std::uint64_t sum = 0;
-};
-
-const Array* slot_array(const Workspace& ws, std::size_t i) {
-  switch (i) {
-    case 0:
-      return &ws.inppn;
-    case 1:
-      return &ws.inptg;
-    case 2:
-      return &ws.patches;
-    case 3:
-      return &ws.intpn;
-    default:
-      return nullptr;
-  }
-}
-
-const ImageRef& slot_image(const Workspace& ws, std::size_t i) {
-  return i == 4 ? ws.image : i == 5 ? ws.temp1 : ws.temp2;
-}
-
-bool same_slot(const Workspace& a, const Workspace& b, std::size_t i) {
-  if (auto x = slot_array(a, i)) return disk::same_bits(*x, *slot_array(b, i));
-  return disk::same_bits(slot_image(a, i), slot_image(b, i));
-}
-
-void copy_slot(const Workspace& from, Workspace& to, std::size_t i) {
-  switch (i) {
-    case 0:
-      to.inppn = from.inppn;
-      break;
-    case 1:
-      to.inptg = from.inptg;
-      break;
-    case 2:
-      to.patches = from.patches;
-      break;
-    case 3:
-      to.intpn = from.intpn;
-      break;
-    case 4:
-      to.image = from.image;
-      break;
-    case 5:
-      to.temp1 = from.temp1;
-      break;
-    default:
-      to.temp2 = from.temp2;
-      break;
-  }
-}
-
-// The encoded variable; nullopt for an image that is not there.
-std::optional<std::string> encode_slot(const Workspace& ws, std::size_t i) {
-  disk::Writer w;
-  if (auto a = slot_array(ws, i)) {
-    w.array(*a);
-  } else {
-    const auto& image = slot_image(ws, i);
-    if (!image) return std::nullopt;
-    w.image(*image);
-  }
-  return std::move(w.str());
-}
-
-void decode_slot(std::string_view bytes, Workspace& ws, std::size_t i) {
-  disk::Reader r(bytes);
-  switch (i) {
-    case 0:
-      ws.inppn = r.array();
-      break;
-    case 1:
-      ws.inptg = r.array();
-      break;
-    case 2:
-      ws.patches = r.array();
-      break;
-    case 3:
-      ws.intpn = r.array();
-      break;
-    case 4:
-      ws.image = std::make_shared<const Image>(r.image(false));
-      break;
-    case 5:
-      ws.temp1 = std::make_shared<const Image>(r.image(false));
-      break;
-    default:
-      ws.temp2 = std::make_shared<const Image>(r.image(false));
-      break;
-  }
-  r.finish();
-}
-
-std::string blob_name(std::uint32_t number) {
-  return fmt::format("B{:07X}", number);
-}
-
-// The number of a Bnnnnnnn.IGDSVARS file name, or nullopt.
-std::optional<std::uint32_t> blob_number(std::string_view file) {
-  std::string suffix = fmt::format(".{}", variable_type);
-  if (file.size() != 8 + suffix.size() || file[0] != 'B' || !file.ends_with(suffix))
-    return std::nullopt;
-  std::uint32_t n = 0;
-  for (char c : file.substr(1, 7)) {
-    int d = (c >= '0' && c <= '9') ? c - '0' : (c >= 'A' && c <= 'F') ? c - 'A' + 10 : -1;
-    if (d < 0) return std::nullopt;
-    n = n * 16 + static_cast<std::uint32_t>(d);
-  }
-  return n;
-}
-
-std::vector<std::string> folder_entries(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  if (DIR* d = ::opendir(dir.c_str())) {
-    while (dirent* e = ::readdir(d)) names.emplace_back(e->d_name);
-    ::closedir(d);
-  }
-  return names;
-}
-
-// Renames `from` (NAME.TYPE) to a free NAME.IGDSBAD, never replacing a file; the new name.
-std::string put_aside(const std::filesystem::path& dir, std::string_view name,
-                      std::string_view file) {
-  for (int k = 0; k < 100000; ++k) {
-    std::string candidate(name);
-    if (k > 0) {
-      std::string digits = std::to_string(k);
-      candidate = candidate.substr(0, 8 - digits.size()) + digits;
-    }
-    std::string target = fmt::format("{}.{}", candidate, bad_type);
-    auto from = dir / file, to = dir / target;
-    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
-      return target;
-    // File systems without RENAME_NOREPLACE: look first (we hold the disk's lock).
-    if ((errno == EINVAL || errno == ENOSYS) && ::access(to.c_str(), F_OK) != 0) {
-      if (::rename(from.c_str(), to.c_str()) == 0) return target;
-      throw disk::IoError{errno};
-    }
-    if (errno != EEXIST && errno != EINVAL && errno != ENOSYS) throw disk::IoError{errno};
-  }
-  throw disk::IoError{EEXIST};
-}
-
-// The process number in a lock file, or "" when it holds anything else.
-std::string process_number(const char* text, ssize_t n) {
-  std::string digits(text, n > 0 ? static_cast<std::size_t>(n) : 0);
-  while (!digits.empty() && (digits.back() == '\n' || digits.back() == ' ')) digits.pop_back();
-  bool ok = !digits.empty() && digits.size() <= 10 &&
-            std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
-  return ok ? digits : "";
-}
+constexpr std::string_view pieces_type = "IGDSVARS";
+constexpr std::string_view linked_type = "IGDSVIMG";
+constexpr std::size_t max_session_bytes = 16u << 20;
+// A variable file is a piece of an input (2 MB) or a whole variable: never more than the largest
+// legal surface file.
+const std::size_t max_piece_file_bytes = max_surface_file_bytes();
 
 std::string session_file() {
   return fmt::format("{}.{}", session_name, session_type);
+}
+
+std::string_view raw_bytes(const Array& a) {
+  return {reinterpret_cast<const char*>(a.data()), a.size() * sizeof(double)};
+}
+
+// The image slots in the order of the session file.
+ImageRef& image_slot(Workspace& ws, std::size_t k) {
+  return k == 0 ? ws.image : k == 1 ? ws.temp1 : ws.temp2;
+}
+constexpr Variable image_variables[] = {Variable::image, Variable::temp1, Variable::temp2};
+
+// Two entries that are the same image (STORE FIRST of the current image shares it).
+bool same_entry(const ImageEntry& a, const ImageEntry& b) {
+  if (a.kind != b.kind || a.kind == ImageEntry::absent) return false;
+  switch (a.kind) {
+    case ImageEntry::recipe:
+      return a.record == b.record && a.desim == b.desim;
+    case ImageEntry::linked_file:
+      return a.linked == b.linked;
+    default:
+      return a.data.pieces.size() == b.data.pieces.size() && !a.data.pieces.empty() &&
+             a.data.pieces[0].in_file && b.data.pieces[0].in_file &&
+             a.data.pieces[0].file == b.data.pieces[0].file;
+  }
 }
 
 }  // namespace
 
 struct Session::State {
   Disk disk;
-  std::filesystem::path lock_path;
-  int lock_fd = -1;
   std::vector<std::string> notices;
-  Workspace saved;           // the session on disk, bit for bit
-  bool saved_known = false;  // false: the next save writes every variable
-  std::array<Slot, slot_count> slots;
-  std::uint32_t next_blob = 1;
+  std::unique_ptr<disk::DiskLock> lock;
+  SessionTable saved;
+  bool saved_known = false;        // false: the next save writes everything
+  std::set<std::string> obsolete;  // files of a version 1 session, removed after the next save
+  std::uint32_t next_number = 1;
+  bool in_background = false;
+  std::future<Surface> deriving;  // PATCHES and INTPN being made (load in the background)
+  // During a load: the variable files read and checked so far, and their payloads.
+  mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
 
   explicit State(const Disk& d) : disk(d) {}
 
-  std::filesystem::path blob_path(std::uint32_t number) const {
-    return disk.path(blob_name(number), variable_type);
+  std::filesystem::path file_path(std::uint32_t number, std::string_view type) const {
+    return disk.path(disk::variable_file_name(number), type);
   }
 
-  bool referenced(std::uint32_t number, const std::array<Slot, slot_count>& in) const {
-    return std::any_of(in.begin(), in.end(),
-                       [&](const Slot& s) { return s.kind == Slot::file && s.number == number; });
-  }
-
-  // A number whose file is neither referenced now nor present on the disk.
-  std::uint32_t new_blob(const std::array<Slot, slot_count>& pending) {
-    for (;;) {
-      std::uint32_t n = next_blob;
-      next_blob = next_blob + 1 == blob_numbers ? 1 : next_blob + 1;
-      if (referenced(n, slots) || referenced(n, pending)) continue;
+  // A number whose file is neither named by `tables` nor present on the disk in any type.
+  std::uint32_t new_number(std::initializer_list<const SessionTable*> tables) {
+    for (std::uint32_t tries = 0; tries < disk::file_numbers; ++tries) {
+      std::uint32_t n = next_number;
+      next_number = next_number + 1 >= disk::file_numbers ? 1 : next_number + 1;
+      bool named = false;
+      for (const SessionTable* t : tables)
+        for (const auto& [f, type] : t->files()) named = named || f.number == n;
       struct stat st;
-      if (::lstat(blob_path(n).c_str(), &st) == 0) continue;  // anything there, even a link
+      if (named || ::lstat(file_path(n, pieces_type).c_str(), &st) == 0 ||
+          ::lstat(file_path(n, linked_type).c_str(), &st) == 0)
+        continue;
       return n;
     }
+    throw disk::IoError(ENOSPC, "NO FREE VARIABLE FILE NAME");
   }
 
-  void take_lock();
+  // ---- writing -------------------------------------------------------------------------
+
+  // One save in progress: the files it wrote (removed again if it fails).
+  struct Writing {
+    State& state;
+    SessionTable& next;
+    std::vector<std::pair<std::uint32_t, std::string_view>> written;
+
+    Piece piece(std::string_view bytes) {
+      Piece p;
+      p.size = bytes.size();
+      if (bytes.size() <= disk::inline_limit) {
+        p.bytes = std::string(bytes);
+        return p;
+      }
+      disk::Writer payload;
+      payload.borrow(bytes);
+      return file_piece(payload);
+    }
+
+    Piece file_piece(const disk::Writer& payload) {
+      Piece p;
+      p.size = payload.size();
+      p.in_file = true;
+      const std::uint32_t n = state.new_number({&state.saved, &next});
+      const disk::Writer framed = disk::frame(variable_magic, payload);
+      written.emplace_back(n, pieces_type);
+      disk::write_new_file(state.file_path(n, pieces_type), framed);
+      p.file = {n, framed.size(), disk::trailing_checksum(framed.runs().back())};
+      return p;
+    }
+
+    // An array whole: inline when small, else one file.
+    StoredArray whole(const Array& a) {
+      StoredArray s;
+      s.shape = a.shape;
+      if (!a.empty()) s.ravel.pieces.push_back(piece(raw_bytes(a)));
+      return s;
+    }
+
+    // An input array in pieces: those of `before` that `edits` left alone are kept.
+    StoredArray input(const Array& a, const StoredArray* before, const Edits& edits) {
+      if (a.size() * sizeof(double) <= disk::inline_limit) return whole(a);
+      StoredArray s;
+      s.shape = a.shape;
+      const std::string_view bytes = raw_bytes(a);
+      const std::size_t count = (bytes.size() + disk::piece_bytes - 1) / disk::piece_bytes;
+      const bool reuse = before && before->shape == a.shape && !edits.whole &&
+                         before->ravel.pieces.size() == count;
+      for (std::size_t k = 0; k < count; ++k) {
+        const std::size_t from = k * disk::piece_bytes;
+        const std::size_t to = std::min(bytes.size(), from + disk::piece_bytes);
+        bool touched = !reuse;
+        for (const auto& [first, end] : edits.ranges)
+          touched = touched || (first * sizeof(double) < to && end * sizeof(double) > from);
+        if (!touched && before->ravel.pieces[k].size == to - from)
+          s.ravel.pieces.push_back(before->ravel.pieces[k]);
+        else
+          s.ravel.pieces.push_back(piece(bytes.substr(from, to - from)));
+      }
+      return s;
+    }
+
+    // The image as IGDSIMAG's payload encodes it, inline or in one file.
+    Blob image_data(const Image& image) {
+      disk::Writer w;
+      w.image(image);
+      Blob b;
+      if (w.size() <= disk::inline_limit)
+        b.pieces.push_back(piece(w.str()));
+      else
+        b.pieces.push_back(file_piece(w));
+      return b;
+    }
+
+    // A second name for the IGDSIMAG file an image was read from, if it is still that file.
+    std::optional<FileRef> link(const Image& image) {
+      const std::uint32_t n = state.new_number({&state.saved, &next});
+      const auto to = state.file_path(n, linked_type);
+      if (!disk::link_file(image.file, to)) return std::nullopt;
+      written.emplace_back(n, linked_type);
+      struct stat st;
+      std::uint64_t sum = 0;
+      bool same = false;
+      int fd = ::open(to.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
+      if (fd >= 0) {
+        char tail[8];
+        same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 8 &&
+               ::pread(fd, tail, 8, st.st_size - 8) == 8;
+        if (same) sum = disk::trailing_checksum(std::string_view(tail, 8));
+        ::close(fd);
+      }
+      if (!same || sum != image.file_sum) {
+        ::unlink(to.c_str());
+        written.pop_back();
+        return std::nullopt;
+      }
+      return FileRef{n, static_cast<std::uint64_t>(st.st_size), sum};
+    }
+
+    void undo() {
+      for (const auto& [n, type] : written) ::unlink(state.file_path(n, type).c_str());
+    }
+  };
+
+  // True when every variable file of `b` is on the disk with its length (a file removed or
+  // replaced behind igds's back would make the session unreadable).
+  bool present(const FileRef& f, std::string_view type) const {
+    struct stat st;
+    return ::lstat(file_path(f.number, type).c_str(), &st) == 0 && S_ISREG(st.st_mode) &&
+           static_cast<std::uint64_t>(st.st_size) == f.length;
+  }
+  bool present(const Blob& b) const {
+    return std::all_of(b.pieces.begin(), b.pieces.end(),
+                       [&](const Piece& p) { return !p.in_file || present(p.file, pieces_type); });
+  }
+  bool present(const StoredArray& a) const { return present(a.ravel); }
+
+  // ---- reading -------------------------------------------------------------------------
+
+  // The bytes of a blob into `out` (blob.size() bytes), each file checked.
+  // The payload of a piece's file, checked once per load (records share pieces).
+  std::string_view piece_payload(const Piece& p) const {
+    if (auto known = checked_.find(p.file.number); known != checked_.end())
+      return known->second.second;
+    const std::string name =
+        fmt::format("{}.{}", disk::variable_file_name(p.file.number), pieces_type);
+    std::optional<disk::MappedFile> file;
+    try {
+      file.emplace(file_path(p.file.number, pieces_type), max_piece_file_bytes);
+    } catch (const disk::IoError& e) {
+      throw disk::Damage(fmt::format("{}: {}", name, e.reason()));
+    }
+    if (!file->exists()) throw disk::Damage(fmt::format("{} MISSING", name));
+    const std::string_view bytes = file->bytes();
+    std::string_view payload;
+    try {
+      payload = disk::unframe(variable_magic, bytes).payload;
+    } catch (const disk::Damage& d) {
+      throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
+    }
+    if (bytes.size() != p.file.length || disk::trailing_checksum(bytes) != p.file.sum ||
+        payload.size() != p.size)
+      throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
+    checked_.emplace(p.file.number, std::pair{std::move(*file), payload});
+    return payload;
+  }
+
+  void read_blob(const Blob& b, char* out) const {
+    for (const Piece& p : b.pieces) {
+      if (!p.in_file) {
+        std::memcpy(out, p.bytes.data(), p.bytes.size());
+      } else {
+        const std::string_view payload = piece_payload(p);
+        std::memcpy(out, payload.data(), payload.size());
+      }
+      out += p.size;
+    }
+  }
+
+  Array read_array(const StoredArray& s) const {
+    Array a(s.shape);
+    if (a.size() * sizeof(double) != s.ravel.size()) throw disk::Damage("FORMAT");
+    read_blob(s.ravel, reinterpret_cast<char*>(a.data()));
+    return a;
+  }
+
+  // The inputs of a record, checked against the variables' table and limits.
+  Workspace inputs_of(const Record& r) const {
+    Workspace ws;
+    ws.nocur = r.nocur;
+    ws.nostr = r.nostr;
+    ws.intcu = r.intcu;
+    ws.intst = r.intst;
+    // Sizes and shapes first: nothing is read or made for a record that claims too much.
+    if (auto p = size_problem(ws.nocur, ws.nostr, ws.intcu, ws.intst))
+      throw disk::Damage("SHAPES: " + p->reason);
+    for (auto [v, stored] : {std::pair{Variable::inppn, &r.inppn}, {Variable::inptg, &r.inptg}}) {
+      if (stored->shape != expected_shape(ws, v))
+        throw disk::Damage(fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name));
+    }
+    ws.inppn = read_array(r.inppn);
+    ws.inptg = read_array(r.inptg);
+    if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+    return ws;
+  }
+
+  // The image of an entry: a recipe is made when first looked at, from the inputs of its record
+  // (read and checked now); the others are read and checked now.
+  ImageRef read_image(const ImageEntry& e, Variable slot, SessionTable& t,
+                      std::map<std::uint32_t, std::shared_ptr<const Workspace>>& sources) const {
+    Image image;
+    if (e.kind == ImageEntry::recipe) {
+      image.desim = e.desim;
+      if (auto p = image_problem(image, slot)) throw disk::Damage("IMAGE: " + p->reason);
+      auto& source = sources[e.record];
+      if (!source) {
+        const Record& r = *t.record(e.record);
+        auto inputs = std::make_shared<Workspace>(inputs_of(r));
+        inputs->changes.surface = r.generation;
+        source = std::move(inputs);
+      }
+      return ImageRef::deferred([source, desim = e.desim] {
+        if (desim.what == 0) return image_of(*source, desim);
+        Workspace from = *source;
+        Surface s =
+            interpolate({from.nocur, from.nostr, from.intcu, from.intst, &from.inppn, &from.inptg});
+        from.patches = std::move(s.patches);
+        from.intpn = std::move(s.intpn);
+        return image_of(from, desim);
+      });
+    }
+    if (e.kind == ImageEntry::stored) {
+      if (e.data.size() > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
+      std::string bytes(e.data.size(), '\0');
+      read_blob(e.data, bytes.data());
+      disk::Reader r(bytes);
+      image = r.image();
+      r.finish();
+    } else {
+      const std::string name =
+          fmt::format("{}.{}", disk::variable_file_name(e.linked.number), linked_type);
+      std::optional<disk::MappedFile> file;
+      if (e.linked.length > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
+      try {
+        file.emplace(file_path(e.linked.number, linked_type), max_image_file_bytes());
+      } catch (const disk::IoError& err) {
+        throw disk::Damage(fmt::format("{}: {}", name, err.reason()));
+      }
+      if (!file->exists()) throw disk::Damage(fmt::format("{} MISSING", name));
+      std::string_view payload;
+      try {
+        payload = disk::unframe("IGDSIMAG", file->bytes()).payload;
+      } catch (const disk::Damage& d) {
+        throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
+      }
+      if (file->bytes().size() != e.linked.length ||
+          disk::trailing_checksum(file->bytes()) != e.linked.sum)
+        throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
+      disk::Reader r(payload);
+      image = r.image();
+      r.finish();
+    }
+    if (auto p = image_problem(image, slot)) throw disk::Damage("IMAGE: " + p->reason);
+    return std::make_shared<const Image>(std::move(image));
+  }
+
   Workspace read_session();
-  void collect_garbage(bool variables);
+  Workspace read_legacy(std::string_view payload);
+  void collect_garbage(const SessionTable& table);
 };
 
-void Session::State::take_lock() {
-  lock_path = disk.path(session_name, lock_type);
-  std::string where = disk.dir().string();
-  for (int attempt = 0;; ++attempt) {
-    int fd = ::open(lock_path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-    if (fd < 0)
-      throw Report(fmt::format("DISK {} CANNOT BE LOCKED ({})", where, disk::system_reason(errno)));
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-      int error = errno;
-      char buf[32] = {};
-      ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
-      ::close(fd);
-      if (error != EWOULDBLOCK)
-        throw Report(
-            fmt::format("DISK {} CANNOT BE LOCKED ({})", where, disk::system_reason(error)));
-      std::string holder = process_number(buf, n);
-      // The holder writes its number just after locking: give it a moment.
-      if (holder.empty() && attempt < 20) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-        continue;
-      }
-      if (holder.empty())
-        throw Report(fmt::format("DISK {} IN USE BY ANOTHER IGDS PROCESS", where));
-      throw Report(fmt::format("DISK {} IN USE BY IGDS PROCESS {}", where, holder));
-    }
-    // A holder that ended removed the file after we opened it: lock the file now in its place.
-    struct stat mine, named;
-    if (::fstat(fd, &mine) != 0 || ::stat(lock_path.c_str(), &named) != 0 ||
-        mine.st_ino != named.st_ino || mine.st_dev != named.st_dev) {
-      ::close(fd);
-      continue;
-    }
-    char buf[32] = {};
-    ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
-    if (n > 0) {
-      std::string previous = process_number(buf, n);
-      notices.push_back(previous.empty()
-                            ? std::string("DISK LOCK LEFT BY AN IGDS THAT HAS ENDED, TAKEN OVER")
-                            : fmt::format("DISK LOCK LEFT BY IGDS PROCESS {}, WHICH HAS ENDED, "
-                                          "TAKEN OVER",
-                                          previous));
-    }
-    std::string pid = fmt::format("{}\n", ::getpid());
-    if (::ftruncate(fd, 0) != 0 ||
-        ::pwrite(fd, pid.data(), pid.size(), 0) != static_cast<ssize_t>(pid.size())) {
-      int error = errno;
-      ::unlink(lock_path.c_str());
-      ::close(fd);
-      throw Report(fmt::format("DISK {} CANNOT BE LOCKED ({})", where, disk::system_reason(error)));
-    }
-    lock_fd = fd;
-    return;
+Workspace Session::State::read_session() {
+  checked_.clear();
+  disk::MappedFile file(disk.path(session_name, session_type), max_session_bytes);
+  if (!file.exists()) {
+    // Variable files without a session: kept aside, never deleted (issue of a session moved
+    // away, or a crash while a damaged one was being put aside).
+    std::vector<std::string> names = disk::folder_entries(disk.dir()), kept;
+    std::sort(names.begin(), names.end());
+    for (const auto& name : names)
+      if (disk::variable_file_number(name))
+        kept.push_back(disk::put_aside(disk.dir(), name.substr(0, 8), name));
+    if (!kept.empty())
+      notices.push_back(fmt::format("{} VARIABLE FILES WITHOUT A SESSION FILE: KEPT AS {}{}",
+                                    kept.size(), kept.front(), kept.size() > 1 ? " ..." : ""));
+    return Workspace{};
   }
+  const disk::Unframed u = disk::unframe(session_magic, file.bytes());
+  if (u.version == 1) return read_legacy(u.payload);
+  SessionTable t = disk::decode_session(u.payload);
+  if (auto p = status_problem(t.status)) throw disk::Damage("STATUS: " + p->reason);
+
+  // Generations: every record a number of its own.
+  for (Record& r : t.records) r.generation = new_generation();
+  const std::uint64_t generation = t.current ? t.record(t.current)->generation : new_generation();
+  Workspace ws;
+  ws.status = t.status;
+  if (t.current != 0) {
+    ws = inputs_of(*t.record(t.current));
+    ws.status = t.status;
+    if (!t.derived) {
+      for (auto [v, stored] :
+           {std::pair{Variable::patches, &t.patches}, {Variable::intpn, &t.intpn}}) {
+        if (!stored->shape.empty() && stored->shape != expected_shape(ws, v))
+          throw disk::Damage(
+              fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name));
+      }
+      ws.patches = read_array(t.patches);
+      ws.intpn = read_array(t.intpn);
+      if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+    }
+  } else if (!t.derived) {
+    throw disk::Damage("FORMAT");
+  }
+  ws.changes.surface = generation;
+  ws.changes.derived = t.derived;
+  std::map<std::uint32_t, std::shared_ptr<const Workspace>> sources;
+  for (std::size_t k = 0; k < 3; ++k) {
+    ImageEntry& e = t.images[k];
+    if (e.kind == ImageEntry::absent) continue;
+    // The same image in two slots (STORE FIRST of the current image) is one image again.
+    ImageRef image;
+    for (std::size_t j = 0; j < k; ++j)
+      if (same_entry(t.images[j], e)) image = image_slot(ws, j);
+    if (!image) image = read_image(e, image_variables[k], t, sources);
+    e.shown = image.watch();
+    image_slot(ws, k) = image;
+  }
+  ws.changes.inppn.saved();
+  ws.changes.inptg.saved();
+  checked_.clear();
+  // PATCHES and INTPN, last: the inputs were checked, so nothing the kernels refuse. The task
+  // has a copy of its own.
+  if (t.current != 0 && t.derived)
+    deriving = std::async(
+        in_background ? std::launch::async : std::launch::deferred,
+        [in = std::make_shared<const Workspace>(ws)] {
+          return interpolate({in->nocur, in->nostr, in->intcu, in->intst, &in->inppn, &in->inptg});
+        });
+  next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
+  saved = std::move(t);
+  saved_known = true;
+  collect_garbage(saved);
+  return ws;
 }
 
-Workspace Session::State::read_session() {
-  auto bytes = disk::read_whole_file(disk.path(session_name, session_type));
-  if (!bytes) return Workspace{};
-  disk::Reader r(disk::unframe(session_magic, *bytes));
+Workspace Session::State::read_legacy(std::string_view payload) {
+  disk::Reader r(payload);
   Workspace ws;
   ws.nocur = r.i32();
   ws.nostr = r.i32();
   ws.intcu = r.i32();
   ws.intst = r.i32();
   for (int& s : ws.status) s = r.i32();
-  std::uint32_t next = r.u32();
-  if (r.u32() != slot_count) throw disk::Damage{"FORMAT"};
-  std::array<Slot, slot_count> read;
-  for (std::size_t i = 0; i < slot_count; ++i) {
-    Slot& s = read[i];
-    std::uint8_t kind = r.u8();
-    if (kind == Slot::absent) {
-      if (slot_array(ws, i)) throw disk::Damage{"FORMAT"};
-      s.kind = Slot::absent;
-    } else if (kind == Slot::inline_bytes) {
-      s.kind = Slot::inline_bytes;
-      std::uint64_t n = r.u64();
-      if (n > inline_limit) throw disk::Damage{"FORMAT"};
-      s.bytes = std::string(r.bytes(static_cast<std::size_t>(n)));
-      decode_slot(s.bytes, ws, i);
-    } else if (kind == Slot::file) {
-      s.kind = Slot::file;
-      s.number = r.u32();
-      s.length = r.u64();
-      s.sum = r.u64();
-      std::string file = fmt::format("{}.{}", blob_name(s.number), variable_type);
-      std::optional<disk::MappedFile> mapped;
+  const std::uint32_t next = r.u32();
+  if (r.u32() != 7) throw disk::Damage("FORMAT");
+  std::set<std::string> files;
+  for (std::size_t i = 0; i < 7; ++i) {
+    const std::uint8_t kind = r.u8();
+    std::string inline_bytes;
+    std::optional<disk::MappedFile> mapped;
+    std::string_view bytes;
+    if (kind == 0) {
+      if (i < 4) throw disk::Damage("FORMAT");
+      continue;
+    } else if (kind == 1) {
+      const std::uint64_t n = r.u64();
+      if (n > disk::inline_limit) throw disk::Damage("FORMAT");
+      bytes = r.bytes(static_cast<std::size_t>(n));
+    } else if (kind == 2) {
+      const std::uint32_t number = r.u32();
+      const std::uint64_t length = r.u64(), sum = r.u64();
+      const std::string name = fmt::format("{}.{}", disk::variable_file_name(number), pieces_type);
       try {
-        mapped.emplace(blob_path(s.number));
+        mapped.emplace(file_path(number, pieces_type), max_surface_file_bytes());
       } catch (const disk::IoError& e) {
-        throw disk::Damage{fmt::format("{}: {}", file, e.reason())};
+        throw disk::Damage(fmt::format("{}: {}", name, e.reason()));
       }
-      if (!mapped->exists()) throw disk::Damage{fmt::format("{} MISSING", file)};
-      const std::string_view blob = mapped->bytes();
+      if (!mapped->exists()) throw disk::Damage(fmt::format("{} MISSING", name));
       try {
-        auto payload = disk::unframe(variable_magic, blob);
-        std::uint64_t sum = 0;
-        for (int k = 0; k < 8; ++k)
-          sum |= std::uint64_t(static_cast<unsigned char>(blob[blob.size() - 8 + k])) << (8 * k);
-        if (blob.size() != s.length || sum != s.sum) throw disk::Damage{"NOT THE ONE SAVED"};
-        decode_slot(payload, ws, i);
+        bytes = disk::unframe(variable_magic, mapped->bytes()).payload;
       } catch (const disk::Damage& d) {
-        throw disk::Damage{fmt::format("{}: {}", file, d.reason)};
+        throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
       }
+      if (mapped->bytes().size() != length || disk::trailing_checksum(mapped->bytes()) != sum)
+        throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
+      files.insert(name);
     } else {
-      throw disk::Damage{"FORMAT"};
+      throw disk::Damage("FORMAT");
     }
+    disk::Reader v(bytes);
+    if (i < 4) {
+      Array* a[] = {&ws.inppn, &ws.inptg, &ws.patches, &ws.intpn};
+      *a[i] = v.array();
+    } else {
+      auto image = std::make_shared<const Image>(v.image());
+      if (auto p = image_problem(*image, image_variables[i - 4]))
+        throw disk::Damage("IMAGE: " + p->reason);
+      image_slot(ws, i - 4) = image;
+    }
+    v.finish();
   }
   r.finish();
-  // What the checksum vouches for is what was saved: loaded as it is, bit for bit, even a
-  // state that RESTORE would refuse from a file.
-  slots = std::move(read);
-  next_blob = next == 0 || next >= blob_numbers ? 1 : next;
-  saved = ws;
-  saved_known = true;
+  if (auto p = status_problem(ws.status)) throw disk::Damage("STATUS: " + p->reason);
+  if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+  // PATCHES and INTPN igds's own interpolation: made again from now on, not saved.
+  bool derived = false;
+  if (ws.has_input() && ws.has_surface()) {
+    try {
+      Surface s = interpolate({ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg});
+      derived = s.patches == ws.patches && s.intpn == ws.intpn;
+    } catch (const DataError&) {
+    }
+  }
+  ws.changes.replaced(derived || !ws.has_input());
+  next_number = std::max(next_number, next > 0 && next < disk::file_numbers ? next : 1);
+  obsolete = files;
+  saved_known = false;
+  collect_garbage(SessionTable{});
   return ws;
 }
 
-// Removes what a crash can leave behind: temporaries, and (`variables`) the variable files the
-// session does not name.
-void Session::State::collect_garbage(bool variables) {
-  for (const auto& name : folder_entries(disk.dir())) {
-    auto path = disk.dir() / name;
+// Removes what a crash can leave behind: temporaries, and the variable files the session does
+// not name (written by a save that did not finish, or left by one whose removals did not).
+void Session::State::collect_garbage(const SessionTable& table) {
+  std::set<std::uint32_t> named;
+  for (const auto& [f, type] : table.files()) named.insert(f.number);
+  for (const auto& name : disk::folder_entries(disk.dir())) {
+    const auto path = disk.dir() / name;
     if (name.ends_with(disk::temporary_suffix)) {
       ::unlink(path.c_str());
-    } else if (auto n = blob_number(name); variables && n && !referenced(*n, slots)) {
+    } else if (auto n = disk::variable_file_number(name);
+               n && !named.count(n) && !obsolete.count(name)) {
       ::unlink(path.c_str());
     }
   }
 }
 
 Session::Session(const Disk& disk) : state_(std::make_unique<State>(disk)) {
-  state_->take_lock();
-  // Numbers already on the disk are never reused, even before load() reads the session.
-  for (const auto& name : folder_entries(disk.dir()))
-    if (auto n = blob_number(name); n && *n >= state_->next_blob && *n + 1 < blob_numbers)
-      state_->next_blob = *n + 1;
-}
-
-Session::~Session() {
-  if (state_ && state_->lock_fd >= 0) {
-    // Unlinked while still locked, so that whoever locks next finds the file gone (take_lock).
-    ::unlink(state_->lock_path.c_str());
-    ::close(state_->lock_fd);
-  }
-}
-
-Workspace Session::load() {
   State& s = *state_;
+  s.lock = std::make_unique<disk::DiskLock>(disk.dir(), s.notices);
+  if (!s.lock->disk_had_room())
+    s.notices.push_back(fmt::format(
+        "DISK {} IS FULL: THE SESSION IS SAVED AGAIN WHEN THERE IS ROOM", disk.dir().string()));
+  // Numbers already on the disk are never reused, even before load() reads the session.
+  for (const auto& name : disk::folder_entries(disk.dir()))
+    if (auto n = disk::variable_file_number(name);
+        n && n >= s.next_number && n + 1 < disk::file_numbers)
+      s.next_number = n + 1;
+}
+
+Session::~Session() = default;
+
+Workspace Session::load(bool in_background) {
+  State& s = *state_;
+  s.in_background = in_background;
   std::string what;
   try {
     Workspace ws = s.read_session();
-    s.collect_garbage(true);
+    if (!in_background) {
+      try {
+        complete(ws);
+      } catch (const Report& r) {
+        throw disk::Damage(r.reason());
+      }
+    }
     return ws;
   } catch (const disk::Damage& d) {
-    what = fmt::format("SESSION FILE {} DAMAGED ({})", session_file(), d.reason);
+    s.checked_.clear();
+    what = fmt::format("SESSION FILE {} DAMAGED ({})", session_file(), d.reason());
   } catch (const disk::IoError& e) {
     what = fmt::format("SESSION FILE {} CANNOT BE READ ({})", session_file(), e.reason());
   }
-  // Never half-loaded: the bad session and its variable files go aside, nothing is deleted.
+  // Never half-loaded: the bad session and its variable files go aside, nothing is deleted. The
+  // session goes first: a crash after that leaves variable files without a session, which the
+  // next start keeps aside too.
   bool aside = false;
   try {
-    std::string kept = put_aside(s.disk.dir(), session_name, session_file());
-    for (const auto& name : folder_entries(s.disk.dir()))
-      if (blob_number(name)) put_aside(s.disk.dir(), name.substr(0, 8), name);
+    std::string kept = disk::put_aside(s.disk.dir(), session_name, session_file());
+    for (const auto& name : disk::folder_entries(s.disk.dir()))
+      if (disk::variable_file_number(name)) disk::put_aside(s.disk.dir(), name.substr(0, 8), name);
     s.notices.push_back(fmt::format("{}: KEPT AS {}; THE WORKSPACE STARTS EMPTY", what, kept));
     aside = true;
   } catch (const disk::IoError& e) {
     s.notices.push_back(
         fmt::format("{}: NOT KEPT ASIDE ({}); THE WORKSPACE STARTS EMPTY", what, e.reason()));
   }
-  s.slots = {};
-  s.saved = Workspace{};
+  s.saved = SessionTable{};
   s.saved_known = false;
-  s.collect_garbage(aside);  // what could not go aside stays where it is
+  s.obsolete.clear();
+  if (aside) {
+    s.collect_garbage(s.saved);
+  } else {
+    // What could not go aside stays where it is (a save never removes a file it did not name):
+    // only temporaries are removed.
+    for (const auto& name : disk::folder_entries(s.disk.dir()))
+      if (name.ends_with(disk::temporary_suffix)) ::unlink((s.disk.dir() / name).c_str());
+  }
   return Workspace{};
 }
 
-void Session::save(const Workspace& ws) {
+void Session::save(Workspace& ws) {
   State& s = *state_;
-  const Workspace& old = s.saved;
-  std::array<bool, slot_count> changed{};
-  bool any = !s.saved_known || ws.nocur != old.nocur || ws.nostr != old.nostr ||
-             ws.intcu != old.intcu || ws.intst != old.intst || ws.status != old.status;
-  for (std::size_t i = 0; i < slot_count; ++i) {
-    changed[i] = !s.saved_known || !same_slot(ws, old, i);
-    any = any || changed[i];
+  const SessionTable& old = s.saved;
+  const Record* current = old.record(old.current);
+  const bool surface_same =
+      s.saved_known &&
+      (current ? current->generation == ws.changes.surface && current->nocur == ws.nocur &&
+                     current->nostr == ws.nostr && current->intcu == ws.intcu &&
+                     current->intst == ws.intst && old.derived == ws.changes.derived
+               : !ws.has_input() && ws.inppn.empty() && old.derived == ws.changes.derived);
+  bool images_same = s.saved_known;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const ImageRef& now = image_slot(ws, k);
+    const ImageEntry& e = old.images[k];
+    images_same = images_same && (now ? e.kind != ImageEntry::absent && now.is(e.shown)
+                                      : e.kind == ImageEntry::absent);
   }
-  if (!any) return;  // the session on disk is this one already
+  if (surface_same && images_same && old.status == ws.status) return;
 
-  auto slots = s.slots;
-  std::vector<std::uint32_t> written;
-  auto fail = [&](const disk::IoError& e) {
-    for (auto n : written) ::unlink(s.blob_path(n).c_str());
-    return Report(fmt::format("CANNOT SAVE THE SESSION IN {} ({}); THE LAST SAVED SESSION IS KEPT",
-                              session_file(), e.reason()));
-  };
+  // Never a session that the next start would refuse.
+  if (auto p = surface_problem(ws))
+    throw Report(
+        fmt::format("CANNOT SAVE THE SESSION ({}); THE LAST SAVED SESSION IS KEPT", p->reason));
+
+  SessionTable next = old;
+  next.status = ws.status;
+  State::Writing w{s, next, {}};
   try {
-    for (std::size_t i = 0; i < slot_count; ++i) {
-      if (!changed[i]) continue;
-      auto bytes = encode_slot(ws, i);
-      Slot& slot = slots[i];
-      slot = Slot{};
-      if (!bytes) continue;
-      if (bytes->size() <= inline_limit) {
-        slot.kind = Slot::inline_bytes;
-        slot.bytes = std::move(*bytes);
-        continue;
+    // The surface: a new record when it changed, sharing the pieces its edits left alone. A
+    // record whose files went missing behind igds's back is written again.
+    const bool current_present = current && s.present(current->inppn) && s.present(current->inptg);
+    if (!surface_same || (current && !current_present)) {
+      if (!ws.has_input()) {
+        next.current = 0;
+      } else {
+        Record r;
+        r.id = 1;
+        while (next.record(r.id)) ++r.id;
+        r.nocur = ws.nocur;
+        r.nostr = ws.nostr;
+        r.intcu = ws.intcu;
+        r.intst = ws.intst;
+        r.generation = ws.changes.surface;
+        // Pieces are kept only from a record whose files are all there.
+        const Record* base = current && current_present ? current : nullptr;
+        r.inppn = w.input(ws.inppn, base ? &base->inppn : nullptr, ws.changes.inppn);
+        r.inptg = w.input(ws.inptg, base ? &base->inptg : nullptr, ws.changes.inptg);
+        // A record of the same generation (its files were missing) is replaced.
+        std::erase_if(next.records, [&](const Record& o) { return o.generation == r.generation; });
+        next.records.push_back(std::move(r));
+        next.current = next.records.back().id;
       }
-      slot.kind = Slot::file;
-      slot.number = s.new_blob(slots);
-      std::string file = disk::frame(variable_magic, *bytes);
-      written.push_back(slot.number);
-      disk::write_new_file(s.blob_path(slot.number), file);
-      slot.length = file.size();
-      disk::Reader tail(std::string_view(file).substr(file.size() - 8));
-      slot.sum = tail.u64();
+      next.derived = ws.changes.derived;
+      next.patches = next.derived ? StoredArray{} : w.whole(ws.patches);
+      next.intpn = next.derived ? StoredArray{} : w.whole(ws.intpn);
+    } else if (!next.derived && (!s.present(next.patches) || !s.present(next.intpn))) {
+      next.patches = w.whole(ws.patches);
+      next.intpn = w.whole(ws.intpn);
     }
-    // The new variable files must be on the disk before the session that names them.
-    if (!written.empty()) disk::sync_folder(s.disk.dir());
 
-    disk::Writer w;
-    w.i32(ws.nocur);
-    w.i32(ws.nostr);
-    w.i32(ws.intcu);
-    w.i32(ws.intst);
-    for (int v : ws.status) w.i32(v);
-    w.u32(s.next_blob);
-    w.u32(slot_count);
-    for (const Slot& slot : slots) {
-      w.u8(slot.kind);
-      if (slot.kind == Slot::inline_bytes) {
-        w.u64(slot.bytes.size());
-        w.bytes(slot.bytes);
-      } else if (slot.kind == Slot::file) {
-        w.u32(slot.number);
-        w.u64(slot.length);
-        w.u64(slot.sum);
+    // The images: the same image as another slot shares its entry; one drawn from a surface the
+    // session has is that recipe; one read from an IGDSIMAG file is a second name of the file;
+    // any other is written whole.
+    // An entry that still stands for `now`, with everything it needs on the disk.
+    auto usable = [&](const ImageEntry& e, const ImageRef& now) {
+      if (!now || e.kind == ImageEntry::absent || !now.is(e.shown)) return false;
+      switch (e.kind) {
+        case ImageEntry::recipe:
+          return next.record(e.record) != nullptr;
+        case ImageEntry::linked_file:
+          return s.present(e.linked, linked_type);
+        default:
+          return s.present(e.data);
+      }
+    };
+    for (std::size_t k = 0; k < 3; ++k) {
+      const ImageRef& now = image_slot(ws, k);
+      ImageEntry& e = next.images[k];
+      if (s.saved_known && usable(e, now)) continue;
+      e = ImageEntry{};
+      e.shown = now.watch();
+      if (!now) continue;
+      for (std::size_t j = 0; j < 3; ++j) {
+        const ImageEntry& o = j < k ? next.images[j] : old.images[j];
+        if (j != k && usable(o, now)) {
+          e = o;
+          break;
+        }
+      }
+      if (e.kind != ImageEntry::absent) continue;
+      if (now->drawn_from != 0) {
+        for (const Record& r : next.records) {
+          if (r.generation == now->drawn_from) {
+            e.kind = ImageEntry::recipe;
+            e.record = r.id;
+            e.desim = now->desim;
+          }
+        }
+      }
+      if (e.kind == ImageEntry::absent && !now->file.empty()) {
+        if (auto f = w.link(*now)) {
+          e.kind = ImageEntry::linked_file;
+          e.linked = *f;
+        }
+      }
+      if (e.kind == ImageEntry::absent) {
+        e.kind = ImageEntry::stored;
+        e.data = w.image_data(*now);
       }
     }
-    disk::replace_file(s.disk.path(session_name, session_type),
-                       disk::frame(session_magic, w.str()));
+
+    // Records that neither the surface nor an image needs any more are dropped.
+    std::erase_if(next.records, [&](const Record& r) {
+      if (r.id == next.current) return false;
+      return std::none_of(next.images.begin(), next.images.end(), [&](const ImageEntry& e) {
+        return e.kind == ImageEntry::recipe && e.record == r.id;
+      });
+    });
+    // An image drawn from a record whose files are gone is written whole instead.
+    for (std::size_t k = 0; k < 3; ++k) {
+      ImageEntry& e = next.images[k];
+      if (e.kind != ImageEntry::recipe || e.record == next.current) continue;
+      const Record* r = next.record(e.record);
+      if (!s.present(r->inppn) || !s.present(r->inptg)) {
+        const ImageRef& now = image_slot(ws, k);
+        const std::uint32_t gone = e.record;
+        e = ImageEntry{};
+        e.kind = ImageEntry::stored;
+        e.data = w.image_data(*now);
+        e.shown = now.watch();
+        std::erase_if(next.records, [&](const Record& o) {
+          return o.id == gone &&
+                 std::none_of(next.images.begin(), next.images.end(), [&](const ImageEntry& i) {
+                   return i.kind == ImageEntry::recipe && i.record == gone;
+                 });
+        });
+      }
+    }
+
+    next.next_number = s.next_number;
+    // The new variable files must be on the disk before the session that names them.
+    if (!w.written.empty()) disk::sync_folder(s.disk.dir());
+    disk::write_file(s.disk.path(session_name, session_type),
+                     disk::frame(session_magic, disk::encode_session(next), 2));
   } catch (const disk::IoError& e) {
-    throw fail(e);
+    w.undo();
+    throw Report(fmt::format("CANNOT SAVE THE SESSION IN {} ({}); THE LAST SAVED SESSION IS KEPT",
+                             session_file(), e.reason()));
   }
 
   // The new session is durable: the files only the old one named can go.
-  for (std::size_t i = 0; i < slot_count; ++i)
-    if (s.slots[i].kind == Slot::file && !s.referenced(s.slots[i].number, slots))
-      ::unlink(s.blob_path(s.slots[i].number).c_str());
-  s.slots = std::move(slots);
-  s.saved.nocur = ws.nocur;
-  s.saved.nostr = ws.nostr;
-  s.saved.intcu = ws.intcu;
-  s.saved.intst = ws.intst;
-  s.saved.status = ws.status;
-  for (std::size_t i = 0; i < slot_count; ++i)
-    if (changed[i]) copy_slot(ws, s.saved, i);
+  std::set<std::uint32_t> named;
+  for (const auto& [f, type] : next.files()) named.insert(f.number);
+  for (const auto& [f, type] : old.files())
+    if (!named.count(f.number)) ::unlink(s.file_path(f.number, type).c_str());
+  for (const auto& name : s.obsolete) ::unlink((s.disk.dir() / name).c_str());
+  s.obsolete.clear();
+  s.saved = std::move(next);
   s.saved_known = true;
+  ws.changes.inppn.saved();
+  ws.changes.inptg.saved();
+}
+
+void Session::complete(Workspace& ws) {
+  State& s = *state_;
+  if (!s.deriving.valid()) return;
+  Surface surface;
+  try {
+    surface = s.deriving.get();
+  } catch (const DataError& d) {
+    throw Report("SURFACE CANNOT BE MADE AGAIN", d.what());
+  }
+  ws.patches = std::move(surface.patches);
+  ws.intpn = std::move(surface.intpn);
 }
 
 const std::vector<std::string>& Session::notices() const {

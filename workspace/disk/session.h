@@ -1,5 +1,6 @@
 // The session on the disk: BINSAVE.IGDSCONT saved after every change, restored at start (the
-// manual's AUTONSAVE and INIT), and the lock that keeps one igds per disk.
+// manual's AUTONSAVE and INIT), and the lock that keeps one igds per disk. What is stored and why:
+// docs/disk.md.
 #pragma once
 
 #include <memory>
@@ -21,14 +22,22 @@ class Session {
   Session& operator=(const Session&) = delete;
 
   // INIT: the saved session, or an empty workspace the very first time. A damaged, truncated,
-  // foreign or newer file is never half-loaded: it is kept aside under a new name, the
-  // workspace starts empty, and notices() says what happened.
-  Workspace load();
+  // foreign, newer or inconsistent session is never half-loaded: it is kept aside under a new
+  // name, the workspace starts empty, and notices() says what happened. Variable files without
+  // a session are kept aside too.
+  //
+  // PATCHES and INTPN, when they are igds's interpolation of the inputs, are not in the session:
+  // they are made again. With `in_background`, load() returns as soon as everything is read and
+  // checked, and they are made while the designer reads READY: complete() must be called before
+  // anything reads them (the interpreter calls it before each command).
+  Workspace load(bool in_background = false);
+  void complete(Workspace& ws);
 
   // AUTONSAVE: makes `ws` the session on disk, crash-safely (old or new, never torn), writing
-  // only what changed since the last save or load. Throws Report when the disk refuses; the
-  // previous session stays on disk.
-  void save(const Workspace& ws);
+  // only what changed since the last save or load (ws.changes says what; it is reset here once
+  // the new session is on disk). Throws Report when the disk refuses; the previous session
+  // stays on disk and the next save writes everything since it.
+  void save(Workspace& ws);
 
   // What load() and the lock had to tell the user, in IGDS style, to print before READY.
   const std::vector<std::string>& notices() const;

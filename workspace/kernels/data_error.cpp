@@ -45,6 +45,9 @@ const char* DataError::what() const noexcept {
       case Problem::view_at_centre:
         text_ = "the view point is the centre";
         break;
+      case Problem::view_inside_box:
+        text_ = "the view point is inside the bounding box";
+        break;
     }
   } catch (...) {
     return "data error";

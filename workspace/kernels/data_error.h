@@ -23,6 +23,7 @@ struct DataError : std::exception {
     projection_parameters,  // parameters out of range for the projection
     behind_eye,             // CONIC: a point behind (or beside) the eye
     view_at_centre,         // CONIC: the view point is the centre
+    view_inside_box,        // CONIC: the view point is inside the points' bounding box
   };
 
   Problem problem;

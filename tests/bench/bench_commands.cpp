@@ -1,0 +1,278 @@
+// Every command at the speed of its data: a real igds session (the binary, --term none, its
+// session on a scratch disk of the system's temporary folder, fsync included) on surfaces of about
+// 1 M and 4 M points from a 100 x 100 and a 500 x 500 input grid. For each command (run three
+// times, the median): the milliseconds from sending its lines to the next READY (the autosave
+// included) and the bytes igds wrote to files meanwhile; at the end the session's peak resident
+// memory. Also the start-up with that session saved (to READY; PATCHES and INTPN are made while
+// the first line is typed, and the first command waits for them if it comes sooner), and the
+// variables' own size for comparison.
+//
+// Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes, ..._peak_rss_mb,
+// ..._variables_mb, e.g. commands_500x500_4m_change_points_ms.
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <poll.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/bench/bench.h"
+#include "workspace/disk/disk.h"
+#include "workspace/kernels/surface.h"
+
+namespace igds::bench {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A scratch disk, removed at the end.
+struct Scratch {
+  fs::path dir;
+  Scratch() {
+    std::string t = (fs::temp_directory_path() / "igds-bench-XXXXXX").string();
+    dir = ::mkdtemp(t.data());
+  }
+  ~Scratch() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+};
+
+// A number from /proc/PID/FILE: the value after `key`.
+std::size_t proc_value(pid_t pid, const char* file, const std::string& key) {
+  std::ifstream in(fmt::format("/proc/{}/{}", pid, file));
+  std::string word;
+  while (in >> word) {
+    if (word == key) {
+      std::size_t v = 0;
+      in >> v;
+      return v;
+    }
+  }
+  return 0;
+}
+
+// igds running on pipes; each command's lines are sent at once, then the output is read up to
+// the READY that follows.
+class Igds {
+ public:
+  explicit Igds(const fs::path& disk) {
+    int in[2], out[2];
+    if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0) return;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, in[0], 0);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    posix_spawn_file_actions_adddup2(&actions, out[1], 2);
+    std::vector<std::string> args{IGDS_BINARY, "--term", "none", "--disk", disk.string()};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const auto t0 = std::chrono::steady_clock::now();
+    if (posix_spawn(&pid_, argv[0], &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(in[0]);
+    ::close(out[1]);
+    to_ = in[1];
+    from_ = out[0];
+    wait_ready();
+    startup_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  ~Igds() {
+    if (to_ >= 0) ::close(to_);
+    if (from_ >= 0) ::close(from_);
+    if (pid_ > 0) {
+      int status = 0;
+      ::waitpid(pid_, &status, 0);
+    }
+  }
+  Igds(const Igds&) = delete;
+  Igds& operator=(const Igds&) = delete;
+
+  double startup_seconds() const { return startup_; }
+
+  struct Timing {
+    double seconds = 0;
+    std::size_t written = 0;  // bytes written to files (not the output read here)
+  };
+
+  // Sends `lines` and waits for READY (or for the end, after END).
+  Timing command(const std::string& lines) {
+    const std::size_t wrote_before = proc_value(pid_, "io", "wchar:");
+    const std::size_t output_before = output_bytes_;
+    const auto t0 = std::chrono::steady_clock::now();
+    for (std::size_t done = 0; done < lines.size();) {
+      ssize_t n = ::write(to_, lines.data() + done, lines.size() - done);
+      if (n <= 0) break;
+      done += static_cast<std::size_t>(n);
+    }
+    const bool ended = !wait_ready();
+    Timing t;
+    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!ended) {
+      const std::size_t wrote = proc_value(pid_, "io", "wchar:") - wrote_before;
+      t.written = wrote - std::min(wrote, output_bytes_ - output_before);
+    }
+    return t;
+  }
+
+  std::size_t peak_rss_kb() const { return proc_value(pid_, "status", "VmHWM:"); }
+  const std::string& output() const { return output_; }
+
+ private:
+  // True at READY, false at the end of the output.
+  bool wait_ready() {
+    for (;;) {
+      auto at = output_.find("READY\n", scanned_);
+      if (at != std::string::npos) {
+        scanned_ = at + 6;
+        return true;
+      }
+      scanned_ = output_.size() > 5 ? output_.size() - 5 : 0;
+      // A command that waits for an answer the steps did not give would hang the benchmark.
+      pollfd p{from_, POLLIN, 0};
+      if (::poll(&p, 1, 300000) != 1) {
+        fmt::print(stderr, "bench commands: no READY within 300 s; output ends:\n{}\n",
+                   output_.substr(output_.size() > 2000 ? output_.size() - 2000 : 0));
+        ::kill(pid_, SIGKILL);
+        return false;
+      }
+      char buffer[65536];
+      ssize_t n = ::read(from_, buffer, sizeof buffer);
+      if (n <= 0) return false;
+      output_.append(buffer, static_cast<std::size_t>(n));
+      output_bytes_ += static_cast<std::size_t>(n);
+      if (output_.size() > (1u << 20)) {  // keep the tail only
+        output_.erase(0, output_.size() - 4096);
+        scanned_ = 0;
+      }
+    }
+  }
+
+  pid_t pid_ = -1;
+  int to_ = -1, from_ = -1;
+  std::string output_;
+  std::size_t scanned_ = 0, output_bytes_ = 0;
+  double startup_ = 0;
+};
+
+// A wavy n x n input grid with border tangents, saved as NAME.IGDSDATA with INTCU = INTST = 0
+// (RESTORE then CHANGE GRID make it big inside the session).
+void save_grid(const Disk& disk, const std::string& name, int n) {
+  Workspace ws;
+  ws.nocur = ws.nostr = n;
+  ws.inppn = Array({std::size_t(n) * std::size_t(n), 3});
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      double* p = ws.inppn.data() + 3 * (std::size_t(i) * n + j);
+      p[0] = 10.0 * j, p[1] = 12.0 * i, p[2] = 20 * std::sin(0.05 * j) * std::cos(0.04 * i);
+    }
+  ws.inptg = Array({std::size_t(4 * n), 4});
+  for (int r = 0; r < 4 * n; ++r) ws.inptg.ravel[4 * r + (r < 2 * n ? 0 : 1)] = 1;
+  Surface s = interpolate({n, n, 0, 0, &ws.inppn, &ws.inptg});
+  ws.patches = std::move(s.patches);
+  ws.intpn = std::move(s.intpn);
+  save_surface(disk, name, ws);
+}
+
+struct Step {
+  const char* key;
+  std::string lines;
+};
+
+void run_case(const Disk& disk, const std::string& grid, int n, int density,
+              const std::string& size) {
+  const std::string prefix = fmt::format("commands_{}x{}_{}", n, n, size);
+  const int side = n + density * (n - 1);
+  const double points = double(side) * side;
+  fmt::print("{}_points {:.0f}\n", prefix, points);
+  // The live variables: INPPN, INPTG, PATCHES, INTPN and three images of the surface.
+  const double variables =
+      8.0 * (3.0 * n * n + 16.0 * n + 48.0 * (n - 1) * (n - 1) + 3 * points + 3 * 2 * points);
+  fmt::print("{}_variables_mb {:.1f}\n", prefix, variables / 1e6);
+
+  const int mid = (n / 2) * n + n / 2;  // a point inside
+  const std::vector<Step> steps{
+      {"restore", fmt::format("RESTORE {}\n", grid)},
+      {"change_grid", fmt::format("CHANGE GRID {} {}\n", density, density)},
+      {"change_points",
+       fmt::format("CHANGE POINTS\n{} {} {} 5\n\nN\nN\n", mid + 1, 10.0 * (n / 2), 12.0 * (n / 2))},
+      {"change_tangents", "CHANGE TANGENTS\n1 1 0.2 0 1\n\nN\n"},
+      {"display_surface", "DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"},
+      {"display_surface_conic",
+       fmt::format("DISPLAY SURFACE CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n)},
+      {"display_input", "DISPLAY INPUT ISOMETRIC 3 30\n"},
+      {"store_first", "STORE FIRST\n"},
+      {"display_first", "DISPLAY FIRST\n"},
+      {"erase", "ERASE\n"},
+      {"help_short", "HELP SHORT\n"},
+      {"store_file", "STORE FILE IMG\n"},
+      {"display_file", "DISPLAY FILE IMG\n"},
+      {"save", "SAVE COPY\n"},
+      {"write", "WRITE CARDS\n"},
+      {"plot", "PLOT SELECTRIC\n"},
+      {"export_hpgl", "EXPORT HPGL DRAWING\n"},
+      {"export_tek", "EXPORT TEK DRAWING\n"},
+  };
+  std::size_t peak = 0;
+  {
+    Igds igds(disk.dir());
+    for (const auto& step : steps) {
+      // Each step three times (a DISPLAY before each STORE FIRST, not timed): the median.
+      std::vector<Igds::Timing> runs;
+      for (int r = 0; r < 3; ++r) {
+        if (std::string_view(step.key) == "store_first")
+          igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
+        runs.push_back(igds.command(step.lines));
+      }
+      std::sort(runs.begin(), runs.end(),
+                [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+      fmt::print("{}_{}_ms {:.1f}\n{}_{}_written_bytes {}\n", prefix, step.key,
+                 1000 * runs[1].seconds, prefix, step.key, runs[1].written);
+      std::fflush(stdout);
+    }
+    peak = igds.peak_rss_kb();
+    auto t = igds.command("END CMS\n");
+    fmt::print("{}_end_ms {:.1f}\n", prefix, 1000 * t.seconds);
+  }
+  fmt::print("{}_peak_rss_mb {:.1f}\n", prefix, peak / 1024.0);
+  std::vector<double> starts;
+  for (int r = 0; r < 3; ++r) {
+    Igds igds(disk.dir());
+    starts.push_back(igds.startup_seconds());
+    igds.command("END CMS\n");
+  }
+  std::sort(starts.begin(), starts.end());
+  fmt::print("{}_startup_ms {:.1f}\n", prefix, 1000 * starts[1]);
+  for (const auto& entry : fs::directory_iterator(disk.dir())) {
+    const auto name = entry.path().filename().string();
+    if (!name.ends_with(".IGDSDATA")) fs::remove_all(entry.path());
+  }
+}
+
+}  // namespace
+
+IGDS_BENCH("commands") {
+  ::signal(SIGPIPE, SIG_IGN);
+  Scratch scratch;
+  Disk disk(scratch.dir);
+  save_grid(disk, "G100", 100);
+  save_grid(disk, "G500", 500);
+  // About 1 M and 4 M points: (n + d(n-1))^2.
+  run_case(disk, "G100", 100, 9, "1m");
+  run_case(disk, "G100", 100, 19, "4m");
+  run_case(disk, "G500", 500, 1, "1m");
+  run_case(disk, "G500", 500, 3, "4m");
+}
+
+}  // namespace igds::bench

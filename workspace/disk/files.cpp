@@ -1,0 +1,275 @@
+#include "workspace/disk/files.h"
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <stdio.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <climits>
+#include <cstring>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace igds::disk {
+
+namespace {
+
+std::optional<std::size_t> write_limit;
+std::size_t bytes_written = 0;  // by this process's file writes, for the tests
+
+// An open descriptor closed on every path; close() errors are reported by finish().
+class Fd {
+ public:
+  explicit Fd(int fd) : fd_(fd) {}
+  ~Fd() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  Fd(const Fd&) = delete;
+  Fd& operator=(const Fd&) = delete;
+  int get() const { return fd_; }
+  int release() { return std::exchange(fd_, -1); }
+  void finish() {
+    int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0 && errno != EINTR) throw IoError(errno);
+  }
+
+ private:
+  int fd_;
+};
+
+// writev(2) of as many runs as it takes, honouring the test limit.
+void write_runs(int fd, const std::vector<std::string_view>& runs) {
+  std::size_t k = 0, offset = 0;  // the next byte: run k, at offset
+  while (k < runs.size()) {
+    if (offset == runs[k].size()) {
+      ++k;
+      offset = 0;
+      continue;
+    }
+    ssize_t done;
+    if (write_limit) {
+      done = limited_write(fd, runs[k].data() + offset, runs[k].size() - offset);
+    } else {
+      iovec v[64];
+      int n = 0;
+      for (std::size_t j = k; j < runs.size() && n < 64; ++j) {
+        const std::size_t from = j == k ? offset : 0;
+        if (runs[j].size() == from) continue;
+        v[n].iov_base = const_cast<char*>(runs[j].data() + from);
+        v[n].iov_len = runs[j].size() - from;
+        ++n;
+      }
+      done = ::writev(fd, v, n);
+      if (done > 0) bytes_written += static_cast<std::size_t>(done);
+    }
+    if (done < 0) {
+      if (errno == EINTR) continue;
+      throw IoError(errno);
+    }
+    auto left = static_cast<std::size_t>(done);
+    while (left > 0) {
+      const std::size_t here = std::min(left, runs[k].size() - offset);
+      offset += here;
+      left -= here;
+      if (offset == runs[k].size() && k + 1 < runs.size()) {
+        ++k;
+        offset = 0;
+      }
+    }
+  }
+}
+
+// Creates `path` (it must not exist; never through a link), writes, fsyncs; removes it on failure.
+void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
+  Fd fd(::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644));
+  if (fd.get() < 0) {
+    if (errno == ELOOP) throw IoError(ELOOP, "A SYMBOLIC LINK IS IN THE WAY");
+    if (errno == EEXIST) throw IoError(EEXIST, "ANOTHER FILE APPEARED IN THE WAY");
+    throw IoError(errno);
+  }
+  try {
+    write_runs(fd.get(), bytes.runs());
+    if (::fdatasync(fd.get()) != 0) throw IoError(errno);
+    fd.finish();
+  } catch (const IoError&) {
+    ::unlink(path.c_str());
+    throw;
+  }
+}
+
+// Clears the way for a temporary: a stale file or link there is removed (never followed), a
+// folder is refused.
+void clear_temporary(const std::filesystem::path& tmp) {
+  struct stat st;
+  if (::lstat(tmp.c_str(), &st) != 0) return;
+  if (S_ISDIR(st.st_mode)) throw IoError(EISDIR);
+  if (::unlink(tmp.c_str()) != 0 && errno != ENOENT) throw IoError(errno);
+}
+
+}  // namespace
+
+long limited_write(int fd, const char* p, std::size_t n) {
+  if (write_limit) {
+    if (*write_limit == 0) {
+      errno = ENOSPC;
+      return -1;
+    }
+    n = std::min(n, *write_limit);
+  }
+  ssize_t done = ::write(fd, p, n);
+  if (done > 0) bytes_written += static_cast<std::size_t>(done);
+  if (done > 0 && write_limit) *write_limit -= static_cast<std::size_t>(done);
+  return done;
+}
+
+std::string system_reason(int error) {
+  std::string s = std::strerror(error);
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+IoError::IoError(int e, std::string_view text)
+    : Error("DISK ERROR", text.empty() ? std::string_view(system_reason(e)) : text), error(e) {}
+
+std::filesystem::path temporary_for(const std::filesystem::path& target) {
+  auto tmp = target;
+  tmp += temporary_suffix;
+  return tmp;
+}
+
+bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace) {
+  auto tmp = temporary_for(target);
+  clear_temporary(tmp);
+  create_and_write(tmp, bytes);
+  int moved;
+  if (replace) {
+    moved = ::rename(tmp.c_str(), target.c_str());
+  } else {
+    moved = ::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE);
+    if (moved != 0 && (errno == EINVAL || errno == ENOSYS)) {
+      // File systems without RENAME_NOREPLACE: a hard link fails when the name is taken.
+      moved = ::link(tmp.c_str(), target.c_str());
+      if (moved == 0) ::unlink(tmp.c_str());
+    }
+  }
+  if (moved != 0) {
+    int error = errno;
+    ::unlink(tmp.c_str());
+    if (!replace && error == EEXIST) return false;
+    throw IoError(error);
+  }
+  sync_folder(target.parent_path());
+  return true;
+}
+
+bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace) {
+  Writer w;
+  w.borrow(bytes);
+  return write_file(target, w, replace);
+}
+
+void write_new_file(const std::filesystem::path& target, const Writer& bytes) {
+  create_and_write(target, bytes);
+}
+
+void sync_folder(const std::filesystem::path& dir) {
+  Fd fd(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (fd.get() < 0) throw IoError(errno);
+  if (::fsync(fd.get()) != 0) throw IoError(errno);
+  fd.finish();
+}
+
+MappedFile::MappedFile(const std::filesystem::path& path, std::size_t max_bytes) {
+  // O_NONBLOCK: a FIFO put where a file should be must not hang igds.
+  Fd fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
+  if (fd.get() < 0) {
+    if (errno == ENOENT) return;
+    throw IoError(errno);
+  }
+  struct stat st;
+  if (::fstat(fd.get(), &st) != 0) throw IoError(errno);
+  if (S_ISDIR(st.st_mode)) throw IoError(EISDIR);
+  if (!S_ISREG(st.st_mode)) throw IoError(EINVAL, "NOT A REGULAR FILE");
+  // Checked before a byte is read or mapped: a sparse file of 100 GB costs nothing.
+  if (st.st_size < 0 || static_cast<std::uint64_t>(st.st_size) > max_bytes)
+    throw IoError(EFBIG, "FILE TOO LARGE");
+  exists_ = true;
+  size_ = static_cast<std::size_t>(st.st_size);
+  if (size_ == 0) return;
+  data_ = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd.get(), 0);
+  if (data_ == MAP_FAILED) {
+    data_ = nullptr;
+    size_ = 0;
+    throw IoError(errno);
+  }
+}
+
+MappedFile::MappedFile(MappedFile&& other) noexcept
+    : exists_(other.exists_),
+      data_(std::exchange(other.data_, nullptr)),
+      size_(std::exchange(other.size_, 0)) {}
+
+MappedFile::~MappedFile() {
+  if (data_) ::munmap(data_, size_);
+}
+
+std::vector<std::string> folder_entries(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  if (DIR* d = ::opendir(dir.c_str())) {
+    while (dirent* e = ::readdir(d)) {
+      std::string name = e->d_name;
+      if (name != "." && name != "..") names.push_back(std::move(name));
+    }
+    ::closedir(d);
+  }
+  return names;
+}
+
+std::string put_aside(const std::filesystem::path& dir, std::string_view name,
+                      std::string_view file) {
+  for (int k = 0; k < 100000; ++k) {
+    std::string candidate(name);
+    if (k > 0) {
+      std::string digits = std::to_string(k);
+      candidate = candidate.substr(0, 8 - digits.size()) + digits;
+    }
+    std::string target = fmt::format("{}.IGDSBAD", candidate);
+    auto from = dir / file, to = dir / target;
+    if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0)
+      return target;
+    // File systems without RENAME_NOREPLACE: a hard link fails when the name is taken.
+    if (errno == EINVAL || errno == ENOSYS) {
+      if (::link(from.c_str(), to.c_str()) == 0) {
+        ::unlink(from.c_str());
+        return target;
+      }
+    }
+    if (errno != EEXIST) throw IoError(errno);
+  }
+  throw IoError(EEXIST);
+}
+
+bool link_file(const std::filesystem::path& from, const std::filesystem::path& to) {
+  if (::link(from.c_str(), to.c_str()) == 0) return true;
+  const int error = errno;
+  if (error == EPERM || error == EOPNOTSUPP || error == EMLINK || error == EXDEV) return false;
+  throw IoError(error);
+}
+
+std::size_t bytes_written_for_testing() {
+  return bytes_written;
+}
+
+void set_write_limit_for_testing(std::optional<std::size_t> limit) {
+  write_limit = limit;
+}
+
+}  // namespace igds::disk

@@ -1,0 +1,99 @@
+#include "workspace/images.h"
+
+#include <algorithm>
+#include <vector>
+
+#include "workspace/kernels/data_error.h"
+#include "workspace/kernels/large_array.h"
+
+namespace igds {
+
+namespace {
+
+// The view point of a conic projection must lie outside what is looked at.
+void check_view_point(const View& view, Vec3View points) {
+  if (view.projection != Projection::conic) return;
+  Vec3 v{view.parameters[0], view.parameters[1], view.parameters[2]};
+  if (inside_bounding_box(points, v)) throw DataError(DataError::Problem::view_inside_box);
+}
+
+Array projected(Vec3View points, std::vector<std::size_t> shape, const View& view, Vec3 centre) {
+  Array out = large_array(std::move(shape), threads_for(2 * points.size()));
+  project(view, centre, points, as_point2(out));
+  return out;
+}
+
+// Images of the current surface can be made again from it: they remember its generation.
+std::uint64_t recipe_of(const Workspace& ws, bool needs_derived) {
+  return needs_derived && !ws.changes.derived ? 0 : ws.changes.surface;
+}
+
+}  // namespace
+
+Image input_image(const Workspace& ws, const View& view) {
+  auto points = as_vec3(ws.inppn);
+  check_view_point(view, points);
+  const Vec3 centre = bounding_box_centre(points);
+  Image image;
+  image.desim = {0, view.projection, view.parameters};
+  image.points =
+      projected(points, {static_cast<std::size_t>(ws.nocur), static_cast<std::size_t>(ws.nostr), 2},
+                view, centre);
+
+  // The diagonal of the bounding box sets the step of the numerical derivative.
+  Vec3 low = points.empty() ? Vec3{} : points[0], high = low;
+  for (Vec3 p : points) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  const double size = std::max(norm(high - low), 1e-9);
+
+  std::vector<double> arrows;
+  const std::size_t rows = ws.inptg.shape.empty() ? 0 : ws.inptg.shape[0];
+  const std::size_t curve_rows = 2 * static_cast<std::size_t>(ws.nocur);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double* row = ws.inptg.data() + r * 4;
+    const Vec3 t{row[0], row[1], row[2]};
+    const double length = norm(t);
+    const auto k = static_cast<std::size_t>(row[3]);
+    if (length == 0 || k < 1 || k > points.size()) continue;
+    // The projection's derivative along T: (proj(P + hT) - proj(P)) / h, with h|T| small
+    // against the surface, so that CONIC arrows follow the perspective at their base.
+    const double h = 1e-6 * size / length;
+    const Vec3 base = points[k - 1], tip = base + h * t;
+    const double ends[6] = {base.x, base.y, base.z, tip.x, tip.y, tip.z};
+    double p[4];
+    project(view, centre, Vec3View(ends, 2), MutablePoint2View(p, 2));
+    arrows.insert(arrows.end(), {p[0], p[1], (p[2] - p[0]) / h, (p[3] - p[1]) / h, double(k),
+                                 r < curve_rows ? 1.0 : 0.0});
+  }
+  if (!arrows.empty()) {
+    image.arrows.shape = {arrows.size() / 6, 6};
+    image.arrows.ravel = std::move(arrows);
+  }
+  image.drawn_from = recipe_of(ws, false);
+  return image;
+}
+
+Image surface_image(const Workspace& ws, const View& view) {
+  if (ws.intpn.rank() != 3) {
+    DataError e(DataError::Problem::missing);
+    e.variable = "INTPN";
+    throw e;
+  }
+  auto points = as_vec3(ws.intpn);
+  check_view_point(view, points);
+  Image image;
+  image.desim = {1, view.projection, view.parameters};
+  image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view,
+                           bounding_box_centre(as_vec3(ws.inppn)));
+  image.drawn_from = recipe_of(ws, true);
+  return image;
+}
+
+Image image_of(const Workspace& ws, const Description& desim) {
+  const View view{desim.projection, desim.parameters};
+  return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
+}
+
+}  // namespace igds

@@ -1,0 +1,215 @@
+#include "workspace/variables.h"
+
+#include <atomic>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "workspace/kernels/limits.h"
+
+namespace igds {
+
+namespace {
+
+constexpr VariableInfo table[] = {
+    {Variable::nocur, "NOCUR", Kept::surface_number, true, 0, "", "number of input curves"},
+    {Variable::nostr, "NOSTR", Kept::surface_number, true, 0, "", "number of input stringers"},
+    {Variable::intcu, "INTCU", Kept::surface_number, true, 0, "",
+     "curves interpolated between two input curves"},
+    {Variable::intst, "INTST", Kept::surface_number, true, 0, "",
+     "stringers interpolated between two input stringers"},
+    {Variable::inppn, "INPPN", Kept::input, false, 2, "(NOCUR x NOSTR) x 3",
+     "the input points x y z, in point-number order"},
+    {Variable::inptg, "INPTG", Kept::input, false, 2, "2(NOCUR+NOSTR) x 4",
+     "the border tangents x y z and their point number"},
+    {Variable::patches, "PATCHES", Kept::derived, false, 5, "(NOCUR-1) x (NOSTR-1) x 3 x 4 x 4",
+     "the bicubic patches, one 4 x 4 matrix per coordinate"},
+    {Variable::intpn, "INTPN", Kept::derived, false, 3,
+     "(NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3", "the interpolated points"},
+    {Variable::image, "IMAGE", Kept::image_points, false, 3, "planes x rows x 2",
+     "the current image"},
+    {Variable::desim, "DESIM", Kept::image_view, false, 1, "5",
+     "what IMAGE shows and its projection"},
+    {Variable::temp1, "TEMP1", Kept::image_points, false, 3, "planes x rows x 2",
+     "the image of STORE FIRST"},
+    {Variable::dest1, "DEST1", Kept::image_view, false, 1, "5", "the description of TEMP1"},
+    {Variable::temp2, "TEMP2", Kept::image_points, false, 3, "planes x rows x 2",
+     "the image of STORE SECOND"},
+    {Variable::dest2, "DEST2", Kept::image_view, false, 1, "5", "the description of TEMP2"},
+    {Variable::status, "STATUS", Kept::status, true, 1, "10",
+     "HELP LONG or SHORT, the keyboard of the last PLOT, reserved"},
+};
+
+std::string shape_words(const std::vector<std::size_t>& shape) {
+  if (shape.empty()) return "EMPTY";
+  std::string s;
+  for (std::size_t k = 0; k < shape.size(); ++k) s += (k ? " BY " : "") + std::to_string(shape[k]);
+  return s;
+}
+
+std::optional<VariableProblem> wrong_shape(Variable v, const Array& a,
+                                           const std::vector<std::size_t>& expected) {
+  if (a.shape == expected) return std::nullopt;
+  return VariableProblem{v, fmt::format("{} IS {}, NOT {}", info(v).name, shape_words(a.shape),
+                                        shape_words(expected))};
+}
+
+std::optional<VariableProblem> not_finite(Variable v, const Array& a) {
+  for (double x : a.ravel)
+    if (!std::isfinite(x))
+      return VariableProblem{v, fmt::format("{} HOLDS A NUMBER THAT IS NOT FINITE", info(v).name)};
+  return std::nullopt;
+}
+
+}  // namespace
+
+ImageRef::ImageRef(std::shared_ptr<const Image> image) {
+  if (image) cell_ = std::make_shared<const Cell>(Cell{std::move(image), {}});
+}
+
+ImageRef ImageRef::deferred(std::function<Image()> make) {
+  ImageRef r;
+  r.cell_ = std::make_shared<const Cell>(Cell{nullptr, std::move(make)});
+  return r;
+}
+
+bool ImageRef::made() const {
+  return cell_ && cell_->image;
+}
+
+const Image& ImageRef::get() const {
+  if (!cell_->image) {
+    cell_->image = std::make_shared<const Image>(cell_->make());
+    cell_->make = nullptr;  // and what it held
+  }
+  return *cell_->image;
+}
+
+std::uint64_t new_generation() {
+  static std::atomic<std::uint64_t> last{0};
+  return ++last;
+}
+
+std::span<const VariableInfo> variables() {
+  return table;
+}
+
+const VariableInfo& info(Variable v) {
+  return table[static_cast<std::size_t>(v)];
+}
+
+const VariableInfo* find_variable(std::string_view name) {
+  for (const auto& v : table)
+    if (v.name == name) return &v;
+  return nullptr;
+}
+
+std::vector<std::size_t> expected_shape(const Workspace& ws, Variable v) {
+  const auto cu = static_cast<std::size_t>(std::max(ws.nocur, 0));
+  const auto st = static_cast<std::size_t>(std::max(ws.nostr, 0));
+  const auto ic = static_cast<std::size_t>(std::max(ws.intcu, 0));
+  const auto is = static_cast<std::size_t>(std::max(ws.intst, 0));
+  switch (v) {
+    case Variable::inppn:
+      return {cu * st, 3};
+    case Variable::inptg:
+      return {2 * (cu + st), 4};
+    case Variable::patches:
+      return {cu ? cu - 1 : 0, st ? st - 1 : 0, 3, 4, 4};
+    case Variable::intpn:
+      return {cu + ic * (cu ? cu - 1 : 0), st + is * (st ? st - 1 : 0), 3};
+    case Variable::desim:
+    case Variable::dest1:
+    case Variable::dest2:
+      return {5};
+    case Variable::status:
+      return {10};
+    default:
+      return {};
+  }
+}
+
+std::optional<VariableProblem> size_problem(int nocur, int nostr, int intcu, int intst) {
+  if (nocur < 1 || nostr < 1)
+    return VariableProblem{nocur < 1 ? Variable::nocur : Variable::nostr,
+                           "NOCUR AND NOSTR MUST BE AT LEAST 1"};
+  if (double(nocur) * nostr < 2)
+    return VariableProblem{Variable::nostr, "A SURFACE NEEDS AT LEAST TWO POINTS"};
+  if (double(nocur) * nostr > double(max_input_points))
+    return VariableProblem{Variable::nocur, fmt::format("{:.0f} INPUT POINTS, MORE THAN {}",
+                                                        double(nocur) * nostr, max_input_points)};
+  if (intcu < 0 || intst < 0)
+    return VariableProblem{intcu < 0 ? Variable::intcu : Variable::intst,
+                           "INTCU AND INTST MUST BE AT LEAST 0"};
+  const double points = grid_points(nocur, nostr, intcu, intst);
+  if (points > double(max_grid_points))
+    return VariableProblem{Variable::intcu, fmt::format("{:.0f} INTERPOLATED POINTS, MORE THAN {}",
+                                                        points, max_grid_points)};
+  return std::nullopt;
+}
+
+std::optional<VariableProblem> surface_problem(const Workspace& ws, bool allow_empty_surface) {
+  if (ws.nocur == 0) {
+    const bool empty = ws.nostr == 0 && ws.intcu == 0 && ws.intst == 0 && ws.inppn.empty() &&
+                       ws.inptg.empty() && ws.patches.empty() && ws.intpn.empty();
+    if (empty) return std::nullopt;
+    return VariableProblem{Variable::nocur, "NOCUR IS 0 BUT THERE IS A SURFACE"};
+  }
+  if (auto p = size_problem(ws.nocur, ws.nostr, ws.intcu, ws.intst)) return p;
+  for (Variable v : {Variable::inppn, Variable::inptg})
+    if (auto p = wrong_shape(v, v == Variable::inppn ? ws.inppn : ws.inptg, expected_shape(ws, v)))
+      return p;
+  if (auto p = not_finite(Variable::inppn, ws.inppn)) return p;
+  if (auto p = not_finite(Variable::inptg, ws.inptg)) return p;
+  // Column 4 of INPTG: the number of an input point.
+  for (std::size_t r = 0; r < ws.inptg.shape[0]; ++r) {
+    const double k = ws.inptg.ravel[4 * r + 3];
+    if (k != std::floor(k) || k < 0 || k > double(ws.nocur) * ws.nostr)
+      return VariableProblem{Variable::inptg,
+                             fmt::format("ROW {} OF INPTG NAMES NO INPUT POINT", r + 1)};
+  }
+  const bool none =
+      ws.patches.empty() && ws.intpn.empty() && ws.patches.shape.empty() && ws.intpn.shape.empty();
+  if (none && allow_empty_surface) return std::nullopt;
+  if (auto p = wrong_shape(Variable::patches, ws.patches, expected_shape(ws, Variable::patches)))
+    return p;
+  return wrong_shape(Variable::intpn, ws.intpn, expected_shape(ws, Variable::intpn));
+}
+
+std::optional<VariableProblem> image_problem(const Image& image, Variable points) {
+  const auto view = static_cast<Variable>(static_cast<int>(points) + 1);
+  const auto& d = image.desim;
+  if (d.what != 0 && d.what != 1)
+    return VariableProblem{view, fmt::format("{}[1] IS NOT 0 OR 1", info(view).name)};
+  const int p = static_cast<int>(d.projection);
+  if (p < 1 || p > 4)
+    return VariableProblem{view,
+                           fmt::format("{}[2] IS NOT A PROJECTION (1 TO 4)", info(view).name)};
+  for (double x : d.parameters)
+    if (!std::isfinite(x))
+      return VariableProblem{view,
+                             fmt::format("{} HOLDS A NUMBER THAT IS NOT FINITE", info(view).name)};
+  const auto& s = image.points.shape;
+  if (!(s.empty() || (s.size() == 3 && s[2] == 2)))
+    return VariableProblem{points, fmt::format("{} IS {}, NOT PLANES BY ROWS BY 2",
+                                               info(points).name, shape_words(s))};
+  if (!s.empty() && double(s[0]) * double(s[1]) > double(max_grid_points))
+    return VariableProblem{
+        points, fmt::format("{} HAS MORE THAN {} POINTS", info(points).name, max_grid_points)};
+  const auto& a = image.arrows.shape;
+  if (!(a.empty() || (a.size() == 2 && (a[1] == 6 || a[1] == 4))))
+    return VariableProblem{points, fmt::format("THE ARROWS OF {} ARE {}, NOT K BY 6",
+                                               info(points).name, shape_words(a))};
+  if (auto q = not_finite(points, image.points)) return q;
+  return not_finite(points, image.arrows);
+}
+
+std::optional<VariableProblem> status_problem(const std::array<int, 10>& status) {
+  if (status[0] != 0 && status[0] != 1)
+    return VariableProblem{Variable::status, "STATUS[1] IS NOT 0 OR 1"};
+  if (status[1] < 0 || status[1] > 2)
+    return VariableProblem{Variable::status, "STATUS[2] IS NOT 0, 1 OR 2"};
+  return std::nullopt;
+}
+
+}  // namespace igds
