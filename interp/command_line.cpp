@@ -71,7 +71,10 @@ CommandLine parse_command_line(const std::vector<std::string>& args) {
     }
     auto take_value = [&]() -> std::string {
       if (has_value) return value;
-      if (i + 1 >= args.size()) throw UsageError(name + " needs a value");
+      // An option word next is a forgotten value (`--disk --term none`), not a folder's name;
+      // `--disk=--odd` still names one.
+      if (i + 1 >= args.size() || args[i + 1].starts_with("--"))
+        throw UsageError(name + " needs a value");
       return args[++i];
     };
     if (name == "--help" && !has_value) {

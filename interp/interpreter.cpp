@@ -66,6 +66,7 @@ Interpreter::Outcome Interpreter::converse() {
     execute(words);
     save();
     ready_due_ = true;
+    if (terminal_.output_failed()) return Outcome::ended;
     if (strict_stop()) return Outcome::strict_stop;
     if (ending_ == Ending::cms) return Outcome::ended;
     if (ending_ == Ending::apl) {
@@ -211,8 +212,12 @@ void Interpreter::end_session(bool apl) {
 void Interpreter::save() {
   try {
     session_.save(ws_);
-  } catch (const Report& r) {
-    report(r.what());
+    if (!save_failure_.empty()) say("THE SESSION IS SAVED AGAIN");
+    save_failure_.clear();
+  } catch (const Error& r) {
+    // Said once per streak of failures: the same words after every command hide the dialogue.
+    if (r.what() != save_failure_) report(r.what());
+    save_failure_ = r.what();
   }
 }
 

@@ -33,8 +33,11 @@ class Interpreter final : public Context {
   // commands, their options and what the options take; at a question its answers and HELP.
   std::vector<std::string> completions(const std::vector<std::string>& before) const;
 
-  // Saves the session (a report is printed): done after every command and at the end.
+  // Saves the session: done after every command and at the end. A failure is reported once
+  // for as long as saves keep failing for the same reason, and once more when they work again.
   void save();
+  // True when the last save worked: the disk holds the session as it is now.
+  bool saved() const { return save_failure_.empty(); }
   // Error reports printed so far (INCORRECT ENTRY included).
   int error_count() const { return errors_; }
 
@@ -78,6 +81,7 @@ class Interpreter final : public Context {
   bool input_ended_ = false;  // the input ended inside a command
   bool ready_due_ = true;     // READY is printed before the next command line is read
   int errors_ = 0;
+  std::string save_failure_;  // the report of the failing saves; empty when the last one worked
 };
 
 }  // namespace igds

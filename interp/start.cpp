@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -43,7 +44,7 @@ class StdOutput final : public Output {
   void flush() override {
     if (std::fflush(stdout) != 0) failed_ = true;
   }
-  bool failed() const { return failed_ || std::ferror(stdout); }
+  bool failed() const override { return failed_ || std::ferror(stdout); }
 
  private:
   bool failed_ = false;
@@ -52,6 +53,9 @@ class StdOutput final : public Output {
 }  // namespace
 
 int igds_main(int argc, char** argv) {
+  // A reader that goes away (`igds | head -1`) is a failed write, not a death that leaves the
+  // lock behind: the conversation ends and the session is saved.
+  std::signal(SIGPIPE, SIG_IGN);
   CommandLine line;
   try {
     line = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));
@@ -144,7 +148,9 @@ int igds_main(int argc, char** argv) {
     }
     interpreter.save();
     out.flush();
-    return outcome == Interpreter::Outcome::strict_stop ? 3 : 0;
+    if (outcome == Interpreter::Outcome::strict_stop) return 3;
+    // The designer must learn from the status what the screen may not have shown.
+    return interpreter.saved() && !out.failed() ? 0 : 1;
   } catch (const Error& r) {
     out.flush();
     fmt::print(stderr, "{}\n", r.what());

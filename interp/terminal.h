@@ -51,6 +51,8 @@ class Output {
   virtual void write(std::string_view bytes) = 0;
   // Everything written so far reaches the terminal (before igds waits for input).
   virtual void flush() {}
+  // True once a write failed (a closed pipe, a full device): nobody reads igds any more.
+  virtual bool failed() const { return false; }
 };
 
 class Terminal {
@@ -58,6 +60,7 @@ class Terminal {
   Terminal(TermMode mode, TekOptions tek, Output& out);
 
   TermMode mode() const { return mode_; }
+  bool output_failed() const { return out_.failed(); }
   // The input in use: the command files one after the other, then the keyboard.
   void use_input(EventSource* input) { input_ = input; }
   EventSource* input() const { return input_; }

@@ -1,6 +1,8 @@
 // igds on command files: transcripts, the error reports, exit statuses, the saved session.
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <string>
 
@@ -309,6 +311,27 @@ TEST_CASE("exit statuses of the command line") {
       run_igds({"4013", "--term", "none", "--disk", disk.path().string()}, with_input("END CMS\n"));
   CHECK(device.status == 0);
   CHECK(device.out == "READY\nEND CMS\n");
+  // Output nobody can take: a full device, or a reader that leaves. igds ends, saves the
+  // session, leaves no lock, and the status says it did not go as it should.
+  if (std::filesystem::exists("/dev/full")) {
+    auto full = run({"sh", "-c",
+                     fmt::format("'{}' --term none --disk '{}' >/dev/full", igds_binary().string(),
+                                 disk.path().string())},
+                    with_input("CHANGE GRID 2 2\nHELP LONG\n"));
+    CHECK(full.status == 1);
+    CHECK(!std::filesystem::exists(disk.path() / "BINSAVE.IGDSLOCK"));
+  }
+  std::string many;
+  for (int i = 0; i < 2000; ++i) many += "HELP LONG\n";
+  write_file(disk.path() / "many.igds", many);
+  auto cut = run({"bash", "-c",
+                  fmt::format("'{}' --term none --disk '{}' '{}' | head -c 5; "
+                              "exit ${{PIPESTATUS[0]}}",
+                              igds_binary().string(), disk.path().string(),
+                              (disk.path() / "many.igds").string())});
+  CHECK(cut.out == "READY");
+  CHECK(cut.status == 1);
+  CHECK(!std::filesystem::exists(disk.path() / "BINSAVE.IGDSLOCK"));
 }
 
 TEST_CASE("tek mode: the output is what a 4013 receives") {

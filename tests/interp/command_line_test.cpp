@@ -42,6 +42,7 @@ TEST_CASE("command lines that are refused") {
   for (auto args : std::vector<std::vector<std::string>>{{"--bogus"},
                                                          {"-x"},
                                                          {"--disk"},
+                                                         {"--disk", "--term", "none", "-"},
                                                          {"--term", "vt100"},
                                                          {"--tek", "4015"},
                                                          {"--paper", "A0"},
@@ -51,6 +52,9 @@ TEST_CASE("command lines that are refused") {
     CHECK_THROWS_AS(parse_command_line(args), UsageError);
   }
   CHECK(usage_text().starts_with("usage: igds [4013|2250]"));
+  CHECK_THROWS_WITH_AS(parse_command_line({"--disk", "--term", "none"}), "--disk needs a value",
+                       UsageError);
+  CHECK(parse_command_line({"--disk=--odd"}).disk == "--odd");
 }
 
 TEST_CASE("the automatic terminal mode") {

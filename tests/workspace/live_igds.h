@@ -13,15 +13,17 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace igds::test {
 
 class LiveIgds {
  public:
-  // Runs `binary args...`; standard input is a pipe (keep_input) or /dev/null.
+  // Runs `binary args...`; standard input is a pipe (keep_input) or /dev/null. With `as_user`
+  // (root only), igds runs as that user and group number, for whom permissions count.
   LiveIgds(const std::filesystem::path& binary, const std::vector<std::string>& args,
-           bool keep_input) {
+           bool keep_input, int as_user = -1) {
     int out[2], in[2] = {-1, -1};
     // Close-on-exec: no other child keeps these pipes open (an input never ending).
     if (::pipe2(out, O_CLOEXEC) != 0 || (keep_input && ::pipe2(in, O_CLOEXEC) != 0))
@@ -33,6 +35,9 @@ class LiveIgds {
       ::dup2(keep_input ? in[0] : null, 0);
       ::dup2(out[1], 1);
       ::dup2(null, 2);  // dup2 clears close-on-exec on 0, 1 and 2 only
+      if (as_user >= 0 && (::setgid(static_cast<gid_t>(as_user)) != 0 ||
+                           ::setuid(static_cast<uid_t>(as_user)) != 0))
+        ::_exit(126);
       std::vector<std::string> all{binary.string()};
       all.insert(all.end(), args.begin(), args.end());
       std::vector<char*> argv;
@@ -79,6 +84,15 @@ class LiveIgds {
       ::poll(&p, 1, 10);
     }
     return true;
+  }
+
+  // Writes `text` to igds's standard input (kept by keep_input).
+  void send(std::string_view text) {
+    while (!text.empty()) {
+      ssize_t n = ::write(in_, text.data(), text.size());
+      if (n <= 0) throw std::runtime_error("write to igds");
+      text.remove_prefix(static_cast<std::size_t>(n));
+    }
   }
 
   // Ends input (as Ctrl-D) and waits for the exit status.
