@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "devices/device.h"
@@ -49,8 +50,11 @@ class HpglEncoder : public Device {
   void style(const Style& style) override;
   // PU;SP0; at the end of the plot.
   void finish();
+  // Room for about `vectors` more vectors, so that a large plot is not copied as it grows.
+  void reserve(std::size_t vectors);
 
   const std::string& bytes() const { return out_; }
+  std::string take_bytes() { return std::move(out_); }  // the plot, without a copy
   const PlotStats& stats() const { return stats_; }
 
  private:

@@ -62,6 +62,9 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
   Placed placed =
       place(picture.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)}, rendering);
   HpglEncoder hpgl(model, options.absolute);
+  std::size_t points = 0;
+  for (const auto& p : placed.paths) points += p.points.size();
+  hpgl.reserve(points);
   // The description first, where the pen starts from the origin; a line that would not fit on
   // the sheet is left out (and said, as clipping).
   bool clipped = placed.clipped;
@@ -107,7 +110,8 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
     hpgl.text(t.at, t.text);
   }
   hpgl.finish();
-  Plot plot{hpgl.bytes(), hpgl.stats()};
+  const PlotStats stats = hpgl.stats();
+  Plot plot{hpgl.take_bytes(), stats};
   plot.stats.clipped = clipped;
   return plot;
 }
