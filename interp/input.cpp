@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "interp/apl/keyboard.h"
 #include "interp/words.h"
 
 namespace igds {
@@ -212,6 +213,14 @@ ReadlineSource::ReadlineSource(std::filesystem::path history, Candidates candida
   rl_input_available_hook = keys_waiting;
   rl_attempted_completion_function = igds::complete;
   rl_basic_word_break_characters = const_cast<char*>(" \t,");
+  // APL without an APL keyboard: ` then a key types its glyph (interp/apl/keyboard.h).
+  for (const auto& k : apl::prefix_keys()) {
+    const char sequence[3] = {apl::prefix_key, k.key, 0};
+    const std::string glyph(k.glyph);
+    rl_macro_bind(sequence, glyph.c_str(), rl_get_keymap());
+  }
+  const char twice[3] = {apl::prefix_key, apl::prefix_key, 0};
+  rl_bind_keyseq(twice, rl_insert);  // `` is ` itself
   using_history();
   stifle_history(1000);
   read_history(history_.c_str());

@@ -9,6 +9,7 @@
 #include "commands/entries.h"
 #include "commands/picture.h"
 #include "commands/reports.h"
+#include "interp/apl/keyboard.h"
 #include "interp/apl_env.h"
 #include "interp/words.h"
 #include "workspace/apl.h"
@@ -17,23 +18,31 @@
 
 namespace igds {
 
+extern const Command save_command, restore_command;
+
 namespace {
 
 constexpr std::string_view apl_short_help =
-    "Type a variable's name, ⍴NAME for its shape, )VARS, START to go back to IGDS or )OFF to "
-    "leave.";
+    "Type an APL statement (the IGDS variables are APL variables), )VARS, )FNS, START to go back "
+    "to IGDS or )OFF to leave.";
 constexpr std::string_view apl_long_help =
-    R"(The APL environment shows the IGDS workspace variables (manual section 7):
+    R"(The APL environment is APL\360: any statement, on the IGDS workspace variables
+(manual section 7) and on variables and functions of your own.
   NOCUR NOSTR INTCU INTST   the grid: input curves and stringers, interpolated ones
   INPPN    input points, (NOCUR x NOSTR) x 3      INPTG   border tangents and point numbers
   PATCHES  the Coons matrices of every patch      INTPN   the interpolated grid
   IMAGE DESIM               the current image and its description
   TEMP1 DEST1 TEMP2 DEST2   the copies of STORE FIRST and SECOND
   STATUS   STATUS[1] is 1 for HELP LONG, 0 for SHORT
-Type a name to display it, ⍴NAME (or RHO NAME) for its shape, )VARS for the names
-that have a value, START to go back to IGDS (READY), )OFF to leave igds.
-A name without a value gives VALUE ERROR, anything else SYNTAX ERROR.
+The manual's functions: FIT COONS ASSON CONIC ISOM ORTHOG SCALE DESCR LUT INIT, and
+COMDIS 'SURFACE ISOMETRIC 3 30' (COMBUI COMCHA COMSTO COMSAV COMRES COMPLO COMWRI
+COMEND) runs that command. )VARS and )FNS list the names.
+START goes back to IGDS (READY): a changed INPPN, INPTG, NOCUR ... INTST makes PATCHES
+and INTPN again; a workspace that does not agree with itself is refused, with the
+reason, and APL goes on. )SAVE NAME and )LOAD NAME are SAVE and RESTORE; )OFF leaves.
+Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).
 Example:
+      INPPN[5;3]←2
       ⍴INTPN
 9 9 3)";
 
@@ -227,31 +236,65 @@ Interpreter::Outcome Interpreter::apl_environment() {
     bool& flag;
     ~Leave() { flag = false; }
   } leave{in_apl_};
+  if (!apl_) {
+    AplEnvironment::Hooks hooks;
+    hooks.say = [this](std::string_view line) { say(line); };
+    hooks.report = [this](std::string_view line) { report(line); };
+    hooks.read = [this](std::string_view prompt) -> std::optional<std::string> {
+      const Event e = terminal_.read_line(prompt);
+      if (e.kind != Event::Kind::line) return std::nullopt;
+      return e.text;
+    };
+    hooks.command = [this](const std::vector<std::string>& words) { execute(words); };
+    // )SAVE and )LOAD are SAVE and RESTORE of the surface: what the command says is the answer.
+    auto through = [this](const Command& command) {
+      return [this, &command](std::string_view name) -> std::string {
+        const int before = errors_;
+        execute({std::string(command.name), std::string(name)});
+        return errors_ == before ? fmt::format("{} {}", command.name, upper(name)) : std::string();
+      };
+    };
+    hooks.save = through(save_command);
+    hooks.load = through(restore_command);
+    apl_ = std::make_unique<AplEnvironment>(ws_, std::move(hooks));
+  }
+  // Leaving APL, by START or by )OFF: the workspace made whole again, or why it cannot be.
+  auto leave_apl = [this]() {
+    auto problem = apl_->start();
+    if (problem) report(fmt::format("CANNOT START: {}", *problem));
+    return !problem;
+  };
   for (;;) {
-    const Event e = terminal_.read_line(apl_prompt);
+    const Event e = terminal_.read_line(apl_->prompt());
     if (e.kind == Event::Kind::interrupt) continue;
-    if (e.kind != Event::Kind::line) return Outcome::ended;  // the end of the input is )OFF
+    if (e.kind != Event::Kind::line) {
+      leave_apl();
+      return Outcome::ended;  // the end of the input is )OFF
+    }
     auto words = split_words(e.text);
     if (words.empty()) continue;
     if (const HelpRequest help = help_request(words); help.asked) {
       if (help.length >= 0) ws_.status[0] = help.length;
-      terminal_.document(ws_.status[0] == 1 ? apl_long_help : apl_short_help);
+      if (ws_.status[0] == 1) {
+        // The prefix keys, from their table.
+        std::string text(apl_long_help);
+        text += "\nThe prefix keys:";
+        for (const auto& line : apl::keyboard_help()) text += "\n" + line;
+        terminal_.document(text);
+      } else {
+        terminal_.document(apl_short_help);
+      }
       continue;
     }
-    std::string joined;
-    for (const auto& w : words) joined += (joined.empty() ? "" : " ") + w;
-    AplReply reply = apl_line(ws_, joined);
-    bool error = false;
-    for (const auto& out : reply.lines) {
-      error = out == "VALUE ERROR" || out == "SYNTAX ERROR";
-      if (error)
-        report(out);
-      else
-        say(out);
+    const int before = errors_;
+    const auto next = apl_->execute(e.text);
+    if (options_.strict && terminal_.command_file() && errors_ > before)
+      return Outcome::strict_stop;
+    if (next == apl::Session::Next::start && leave_apl()) return Outcome::input_ended;
+    if (next == apl::Session::Next::off) {
+      leave_apl();
+      return Outcome::ended;
     }
-    if (error && options_.strict && terminal_.command_file()) return Outcome::strict_stop;
-    if (reply.next == AplNext::start) return Outcome::input_ended;
-    if (reply.next == AplNext::off) return Outcome::ended;
   }
 }
 
@@ -261,8 +304,9 @@ std::vector<std::string> Interpreter::completions(const std::vector<std::string>
     for (const Choice& c : choices) out.emplace_back(c.word);
   };
   if (in_apl_) {
-    out = {")VARS", ")OFF", "START", std::string(help_word())};
-    for (auto& name : defined_variables(ws_)) out.push_back(name);
+    out = apl_->names();
+    out.emplace_back("START");
+    out.emplace_back(help_word());
     return out;
   }
   if (current_ != nullptr) {

@@ -4,12 +4,14 @@
 // particular command: everything comes from the commands' declarations (commands/command.h).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "commands/command.h"
 #include "commands/context.h"
+#include "interp/apl_env.h"
 #include "interp/terminal.h"
 #include "workspace/disk/session.h"
 
@@ -74,6 +76,8 @@ class Interpreter final : public Context {
   const Command* current_ = nullptr;  // the command being run (nullptr at READY)
   const Prompt* asking_ = nullptr;    // the question being asked (for completion)
   bool in_apl_ = false;
+  // END APL's session: its own variables and functions last until igds ends.
+  std::unique_ptr<AplEnvironment> apl_;
   bool running_ = false;              // a command is running: a --strict stop abandons it
   std::vector<std::string> pending_;  // unread words
   bool on_line_ = false;              // the unread words are the command line's

@@ -1,6 +1,7 @@
 #include "interp/terminal.h"
 
 #include "devices/tek4013.h"
+#include "interp/apl/keyboard.h"
 
 namespace igds {
 
@@ -155,6 +156,7 @@ Event Terminal::read_line(std::string_view prompt, std::string_view above) {
 Event Terminal::edit_line(std::string_view prompt) {
   write_dialogue(prompt);
   std::string line;
+  bool prefix = false;  // the APL prefix key was typed: the next key is a glyph's
   for (;;) {
     out_.flush();
     Event e;
@@ -192,6 +194,18 @@ Event Terminal::edit_line(std::string_view prompt) {
       return {Event::Kind::end, {}};
     }
     if (static_cast<unsigned char>(c) < 0x20) continue;  // other control keys do nothing
+    if (prefix) {
+      // ` then a key: its APL glyph, else both keys as typed.
+      prefix = false;
+      const std::string_view glyph = apl::prefix_glyph(c);
+      if (c == apl::prefix_key)
+        e.text = std::string(1, apl::prefix_key);  // `` is ` itself
+      else
+        e.text = glyph.empty() ? std::string(1, apl::prefix_key) + e.text : std::string(glyph);
+    } else if (c == apl::prefix_key) {
+      prefix = true;
+      continue;
+    }
     line += e.text;
     out_.write(screen_->type(e.text));
   }

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -178,6 +179,9 @@ struct Workspace {
   // STATUS[1] = 1 for HELP LONG, 0 for SHORT; STATUS[2] = keyboard of the last PLOT
   // (0 none yet, 1 SELECTRIC, 2 EBCDIC); the others are reserved.
   std::array<int, 10> status{1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  // The functions defined in END APL, each as its source (header, then lines): part of the
+  // APL workspace, kept with the session.
+  std::vector<std::vector<std::string>> functions;
 
   Changes changes;  // not a variable of the manual: how the variables above changed
 
@@ -187,7 +191,7 @@ struct Workspace {
     return a.nocur == b.nocur && a.nostr == b.nostr && a.intcu == b.intcu && a.intst == b.intst &&
            a.inppn == b.inppn && a.inptg == b.inptg && a.patches == b.patches &&
            a.intpn == b.intpn && same_image(a.image, b.image) && same_image(a.temp1, b.temp1) &&
-           same_image(a.temp2, b.temp2) && a.status == b.status;
+           same_image(a.temp2, b.temp2) && a.status == b.status && a.functions == b.functions;
   }
 };
 

@@ -133,21 +133,29 @@ TEST_CASE("igds killed -9 at random moments: restart gives a state after a finis
   std::sort(runs.begin(), runs.end());
   // A fixed number of kills at moments spread evenly over a run (one in each of `total` equal
   // slices, at a random place inside it): the time the test takes varies, what it checks not.
+  // A fixed number of kills, spread over the commands by progress, not by time: kill k waits
+  // until command k % (commands + 1) has started (its READY seen), then a random part of one
+  // command's time. What the test checks does not depend on the machine's speed.
   const int total = 200;
+  const double per_command = runs[1] / double(commands.size() + 1);
   std::mt19937 random(20261121);
   std::uniform_real_distribution<double> inside(0, 1);
   const auto start = std::chrono::steady_clock::now();
   int taken_over = 0;
   std::set<std::size_t> states_seen;
   for (int kills = 0; kills < total; ++kills) {
-    const double moment = 1.1 * runs[1] * (kills + inside(random)) / total;
+    const std::size_t target = std::size_t(kills) % (commands.size() + 1);
     fs::remove_all(disk);
     fs::create_directory(disk);
     std::size_t finished = 0;
     {
       test::LiveIgds igds(test::igds_binary(),
                           {"--disk", disk.string(), "--term", "none", all.string()}, false);
-      std::this_thread::sleep_for(std::chrono::duration<double>(moment));
+      // Only a hang reaches this bound.
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+      while (count_ready(igds.output()) < target && std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+      std::this_thread::sleep_for(std::chrono::duration<double>(per_command * inside(random)));
       igds.kill();
       std::size_t ready = count_ready(igds.output());
       finished = ready > 0 ? ready - 1 : 0;
@@ -175,5 +183,5 @@ TEST_CASE("igds killed -9 at random moments: restart gives a state after a finis
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                   taken_over, states_seen.size()));
   CHECK(taken_over > 0);
-  CHECK(states_seen.size() > commands.size() / 4);  // the kills fell all over the file
+  CHECK(states_seen.size() > commands.size() / 2);  // the kills fell all over the file
 }

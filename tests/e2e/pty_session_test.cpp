@@ -84,6 +84,11 @@ TEST_CASE("an interactive session through a pseudo-terminal") {
     CHECK(igds.expect("\n2\r\n"));
     igds.send("\xE2\x8D\xB4INTPN\r");  // ⍴INTPN
     CHECK(igds.expect("\n5 5 3\r\n"));
+    // Without an APL keyboard: ` then r is ⍴, ` then - is ×.
+    igds.send("`r`rINTPN\r");
+    CHECK(igds.expect("\n3\r\n"));
+    igds.send("NOCUR`-NOSTR\r");
+    CHECK(igds.expect("\n4\r\n"));
     igds.send("START\r");
     REQUIRE(igds.expect("READY"));
     igds.send("\x04");  // Ctrl-D at READY is END

@@ -112,9 +112,10 @@ TEST_CASE("END APL: START goes back to READY, errors in APL style") {
   TempDir disk;
   auto r = run_commands(disk, "E A\nIMAGE\nINPPN\n2+2\nH S\nSTART\nH S\nEND CMS\n");
   CHECK(r.status == 0);
-  CHECK(r.out.find("      IMAGE\nVALUE ERROR\n      INPPN\n\n      2+2\nSYNTAX ERROR\n") !=
-        std::string::npos);
-  CHECK(r.out.find("      H S\nType a variable's name") != std::string::npos);
+  CHECK(
+      r.out.find("      IMAGE\nVALUE ERROR\n      IMAGE\n      ^\n      INPPN\n\n      2+2\n4\n") !=
+      std::string::npos);
+  CHECK(r.out.find("      H S\nType an APL statement") != std::string::npos);
   CHECK(r.out.find("      START\nREADY\nH S\nType a command:") != std::string::npos);
 }
 
@@ -229,6 +230,40 @@ CMS
   CHECK(next.out.find("HELP\nType a command: BUILD CHANGE") != std::string::npos);
 }
 
+TEST_CASE("END APL is APL: a point changed by indexed assignment, START, and the surface follows") {
+  TempDir disk;
+  auto r = run_commands(disk, std::string(saddle_build) +
+                                  "END APL\n"
+                                  "⍝ Raise the middle point and look at the grid's highest point.\n"
+                                  "INPPN[5;3]←7\n"
+                                  "∇Z←TOP A\n"
+                                  "Z←⌈/,A[;;3]\n"
+                                  "∇\n"
+                                  "START\n"
+                                  "END APL\n"
+                                  "TOP INTPN\n"
+                                  "⍴FIT\n"
+                                  "COMDIS 'SURFACE ORTHOGONAL XY'\n"
+                                  "DESCR DESIM\n"
+                                  "NOCUR←5\n"
+                                  "START\n"
+                                  "NOCUR←3\n"
+                                  ")OFF\n");
+  CHECK(r.status == 0);
+  // START made INTPN again: its highest point is the raised one.
+  CHECK(r.out.find("      TOP INTPN\n7\n") != std::string::npos);
+  const auto comdis = r.out.find("      COMDIS 'SURFACE ORTHOGONAL XY'\n");
+  CHECK(r.out.find("IMAGE: SURFACE, ORTHOGONAL XY\n", comdis) != std::string::npos);
+  CHECK(r.out.find("      DESCR DESIM\nIMAGE: SURFACE, ORTHOGONAL XY\n") != std::string::npos);
+  CHECK(r.out.find("      START\nCANNOT START: INPPN IS 9 BY 3, NOT 15 BY 3\n") !=
+        std::string::npos);
+  // The change and the function are the session's: the next start has them.
+  auto again = run_commands(disk, "END APL\nINPPN[5;3]\nTOP INTPN\n)FNS\n)OFF\n");
+  CHECK(again.out.find("      INPPN[5;3]\n7\n") != std::string::npos);
+  CHECK(again.out.find("      TOP INTPN\n7\n") != std::string::npos);
+  CHECK(again.out.find(" TOP\n") != std::string::npos);
+}
+
 TEST_CASE("--strict stops at the first error report of a command file") {
   TempDir disk;
   auto r = run_commands(disk, "HELP SHORT\nBUILD NOW\nHELP SHORT\n", {"--strict"});
@@ -242,7 +277,7 @@ TEST_CASE("--strict stops at the first error report of a command file") {
   // And an APL error.
   auto apl = run_commands(disk, "END APL\nNOSUCH\nSTART\nHELP SHORT\n", {"--strict"});
   CHECK(apl.status == 3);
-  CHECK(apl.out.ends_with("VALUE ERROR\n"));
+  CHECK(apl.out.ends_with("VALUE ERROR\n      NOSUCH\n      ^\n"));
   // Without --strict everything runs and the status is 0.
   CHECK(run_commands(disk, "BUILD NOW\nHELP SHORT\n").status == 0);
 }

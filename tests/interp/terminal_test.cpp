@@ -44,6 +44,15 @@ TEST_CASE("tek mode: a line typed key by key, with a key taken back, echoed by i
     for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
 }
 
+TEST_CASE("tek mode: the APL prefix key, then a key, types its glyph") {
+  Tek t;
+  t.keys.type("`rINPPN`k\r");  // `k has no glyph: both keys as typed
+  const Event e = t.terminal.read_line("      ");
+  CHECK(e.text == "⍴INPPN`k");
+  t.keys.type("X`[2`-3``\r");
+  CHECK(t.terminal.read_line("      ").text == "X←2×3`");
+}
+
 TEST_CASE("tek mode: Ctrl-C and the end of the input are events of the wait") {
   Tek t;
   t.keys.type("1 2\x03");

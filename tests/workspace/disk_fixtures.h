@@ -181,6 +181,7 @@ inline void check_same_workspace(const Workspace& a, const Workspace& b) {
   CHECK(same_bits(a.temp1, b.temp1));
   CHECK(same_bits(a.temp2, b.temp2));
   CHECK(a.status == b.status);
+  CHECK(a.functions == b.functions);
 }
 
 }  // namespace igds::test

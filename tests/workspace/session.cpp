@@ -123,6 +123,30 @@ TEST_CASE("a saved session is loaded bit for bit, every variable") {
   }
 }
 
+TEST_CASE("END APL's defined functions are kept with the session") {
+  Scratch s;
+  Workspace ws = test::make_workspace(3, 3, 1, 1);
+  ws.functions = {{"Z←TOP A", "Z←⌈/,A[;;3]"}, {"HELLO", "'⍝ ¯1'"}};
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+    // A function changed alone is a change: the session is written again.
+    ws.functions.pop_back();
+    session.save(ws);
+  }
+  test::check_same_workspace(load_fresh(s.disk), ws);
+  // Counts that the file cannot hold are FORMAT, never a huge allocation.
+  disk::SessionTable t;
+  t.functions = {{"F"}};
+  std::string bytes = disk::encode_session(t);
+  CHECK(disk::decode_session(bytes).functions == t.functions);
+  std::string crafted = bytes;
+  crafted[crafted.size() - 10] = '\xFF';  // the count of functions, now 4278190081
+  CHECK_THROWS_AS(disk::decode_session(crafted), disk::Damage);
+  CHECK_THROWS_AS(disk::decode_session(bytes.substr(0, bytes.size() - 1)), disk::Damage);
+}
+
 TEST_CASE("a save rewrites only what changed") {
   Scratch s;
   Workspace ws = test::make_workspace(10, 10, 10, 10);  // INTPN 100 x 100 x 3, three images
@@ -600,6 +624,14 @@ TEST_CASE("variable files without a session are kept aside, never deleted") {
                                   vars.begin()->substr(0, 8)));
   CHECK(files_of_type(s.dir.path(), ".IGDSVARS").empty());
   CHECK(files_of_type(s.dir.path(), ".IGDSBAD").size() == 3);
+  // Temporaries of a first save killed before its session file: removed, with nothing to say.
+  Scratch first;
+  test::write_file(first.dir.path() / "B0000001.IGDSVARS.IGDSTEMP", "half");
+  test::write_file(first.dir.path() / "BINSAVE.IGDSCONT.IGDSTEMP", "half");
+  notices.clear();
+  CHECK(load_fresh(first.disk, &notices) == Workspace{});
+  CHECK(notices.empty());
+  CHECK(files_of_type(first.dir.path(), ".IGDSTEMP").empty());
 }
 
 TEST_CASE(

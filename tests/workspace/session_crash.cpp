@@ -91,8 +91,11 @@ TEST_CASE("Session::save killed -9 at random moments: old or new, never torn") {
     // Garbage of the killed save is gone after load: only what the session names is left.
     for (const auto& e : fs::directory_iterator(dir.path())) {
       std::string name = e.path().filename().string();
+      CAPTURE(name);
+      // A kill inside the very first save leaves variable files and no session: they are kept
+      // aside, never deleted (a session file moved away looks the same).
       CHECK((name == "BINSAVE.IGDSCONT" || name == "BINSAVE.IGDSLOCK" ||
-             name.ends_with(".IGDSVARS")));
+             name.ends_with(".IGDSVARS") || name.ends_with(".IGDSBAD")));
     }
     std::size_t vars = 0;
     for (const auto& e : fs::directory_iterator(dir.path()))

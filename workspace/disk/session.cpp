@@ -373,9 +373,12 @@ Workspace Session::State::read_session() {
     // away, or a crash while a damaged one was being put aside).
     std::vector<std::string> names = disk::folder_entries(disk.dir()), kept;
     std::sort(names.begin(), names.end());
-    for (const auto& name : names)
-      if (disk::variable_file_number(name))
+    for (const auto& name : names) {
+      if (name.ends_with(disk::temporary_suffix))
+        ::unlink((disk.dir() / name).c_str());  // an unfinished write: never data
+      else if (disk::variable_file_number(name))
         kept.push_back(disk::put_aside(disk.dir(), name.substr(0, 8), name));
+    }
     if (!kept.empty())
       notices.push_back(fmt::format("{} VARIABLE FILES WITHOUT A SESSION FILE: KEPT AS {}{}",
                                     kept.size(), kept.front(), kept.size() > 1 ? " ..." : ""));
@@ -394,6 +397,9 @@ Workspace Session::State::read_session() {
   if (t.current != 0) {
     ws = inputs_of(*t.record(t.current));
     ws.status = t.status;
+  }
+  ws.functions = t.functions;
+  if (t.current != 0) {
     if (!t.derived) {
       for (auto [v, stored] :
            {std::pair{Variable::patches, &t.patches}, {Variable::intpn, &t.intpn}}) {
@@ -612,7 +618,8 @@ void Session::save(Workspace& ws) {
     images_same = images_same && (now ? e.kind != ImageEntry::absent && now.is(e.shown)
                                       : e.kind == ImageEntry::absent);
   }
-  if (surface_same && images_same && old.status == ws.status) return;
+  if (surface_same && images_same && old.status == ws.status && old.functions == ws.functions)
+    return;
 
   // Never a session that the next start would refuse.
   if (auto p = surface_problem(ws))
@@ -621,6 +628,7 @@ void Session::save(Workspace& ws) {
 
   SessionTable next = old;
   next.status = ws.status;
+  next.functions = ws.functions;
   State::Writing w{s, next, {}};
   try {
     // The surface: a new record when it changed, sharing the pieces its edits left alone. A

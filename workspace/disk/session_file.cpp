@@ -174,6 +174,14 @@ std::string encode_session(const SessionTable& t) {
         break;
     }
   }
+  w.u32(static_cast<std::uint32_t>(t.functions.size()));
+  for (const auto& f : t.functions) {
+    w.u32(static_cast<std::uint32_t>(f.size()));
+    for (const auto& line : f) {
+      w.u32(static_cast<std::uint32_t>(line.size()));
+      w.bytes(line);
+    }
+  }
   return w.str();
 }
 
@@ -223,6 +231,18 @@ SessionTable decode_session(std::string_view payload) {
       case ImageEntry::linked_file:
         e.linked = read_ref(r);
         break;
+    }
+  }
+  if (!r.at_end()) {
+    // Each count is checked against what is left, so a crafted count cannot make a huge table.
+    const std::uint32_t functions = r.u32();
+    if (functions > r.left() / 4) throw Damage("FORMAT");
+    t.functions.resize(functions);
+    for (auto& f : t.functions) {
+      const std::uint32_t lines = r.u32();
+      if (lines == 0 || lines > r.left() / 4) throw Damage("FORMAT");
+      f.resize(lines);
+      for (auto& line : f) line = std::string(r.bytes(r.u32()));
     }
   }
   r.finish();

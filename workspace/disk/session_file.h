@@ -71,6 +71,9 @@ struct SessionTable {
   bool derived = true;         // PATCHES and INTPN are made again from the inputs
   StoredArray patches, intpn;  // else these
   std::array<ImageEntry, 3> images;
+  // END APL's defined functions, each its lines (written after the images; a file without them,
+  // from an igds that did not keep them, has none).
+  std::vector<std::vector<std::string>> functions;
 
   const Record* record(std::uint32_t id) const;
   Record* record(std::uint32_t id);
