@@ -208,9 +208,10 @@ bool AplEnvironment::owns(std::string_view name) const {
 }
 
 std::optional<Value> AplEnvironment::get(std::string_view name) {
+  if (auto kept = values_.find(name); kept != values_.end()) return kept->second;
   auto a = workspace_variable(ws_, name);
   if (!a) return std::nullopt;
-  return apl::to_value(*a);
+  return values_.emplace(std::string(name), apl::to_value(*a)).first->second;
 }
 
 void AplEnvironment::check(std::string_view name, const Value& value) {
@@ -248,6 +249,7 @@ void AplEnvironment::check(std::string_view name, const Value& value) {
 
 void AplEnvironment::set(std::string_view name, const Value& value) {
   const VariableInfo& info = *find_variable(name);
+  values_.clear();  // an image and its description change together; START may remake others
   Array a = apl::to_array(value);
   switch (info.id) {
     case Variable::nocur:
@@ -298,6 +300,7 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
 
 std::optional<std::string> AplEnvironment::start() {
   if (assigned_.empty()) return std::nullopt;
+  values_.clear();
   auto was = [&](std::initializer_list<std::string_view> names) {
     return std::any_of(names.begin(), names.end(),
                        [&](std::string_view n) { return assigned_.count(std::string(n)) > 0; });
@@ -518,6 +521,7 @@ void AplEnvironment::define_manual_functions() {
           if (auto problem = start())
             throw apl::Error(ErrorKind::domain, fmt::format("CANNOT START: {}", *problem));
           hooks_.command(line);
+          values_.clear();
           return std::nullopt;
         },
         fmt::format("{} 'WORDS': the command {} with those words", function, command));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -54,6 +55,8 @@ class AplEnvironment final : public apl::Host {
   std::vector<std::string> names() const;
   // Ctrl-C while a statement runs.
   void interrupt() { session_.interrupt(); }
+  // The workspace may have changed outside APL (commands ran since the last line).
+  void forget() { values_.clear(); }
 
   // apl::Host
   void print(std::string_view line) override;
@@ -73,6 +76,9 @@ class AplEnvironment final : public apl::Host {
   Hooks hooks_;
   apl::Session session_;
   std::set<std::string> assigned_;  // the IGDS globals assigned since the last START
+  // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
+  // statement, not a copy of INTPN.
+  std::map<std::string, apl::Value, std::less<>> values_;
 };
 
 }  // namespace igds

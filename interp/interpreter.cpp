@@ -258,6 +258,7 @@ Interpreter::Outcome Interpreter::apl_environment() {
     hooks.load = through(restore_command);
     apl_ = std::make_unique<AplEnvironment>(ws_, std::move(hooks));
   }
+  apl_->forget();
   // Leaving APL, by START or by )OFF: the workspace made whole again, or why it cannot be.
   auto leave_apl = [this]() {
     auto problem = apl_->start();

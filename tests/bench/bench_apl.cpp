@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "interp/apl/session.h"
+#include "interp/apl_env.h"
 #include "tests/bench/bench.h"
+#include "workspace/kernels/surface.h"
 
 namespace igds::bench {
 
@@ -107,6 +109,56 @@ IGDS_BENCH("apl") {
   fmt::print("apl_numpy_ratio_sum_ravel {:.2f}\n", numpy[1] / sum);
   fmt::print("apl_numpy_ratio_plane_1 {:.2f}\n", numpy[2] / plane);
   fmt::print("apl_numpy_ratio_inner_product {:.2f}\n", numpy[3] / product);
+}
+
+// The same statements in END APL itself (interp/apl_env.h) on the 4 M-point surface of a 500 x
+// 500 input grid with INTCU = INTST = 3: INTPN read from the workspace, assignments checked.
+IGDS_BENCH("apl_workspace") {
+  Workspace ws;
+  ws.nocur = ws.nostr = 500;
+  ws.intcu = ws.intst = 3;
+  ws.inppn = Array({250000, 3});
+  for (std::size_t i = 0; i < 500; ++i)
+    for (std::size_t j = 0; j < 500; ++j) {
+      double* p = ws.inppn.data() + 3 * (i * 500 + j);
+      p[0] = double(j), p[1] = 1.5 * double(i), p[2] = std::sin(0.05 * double(j));
+    }
+  ws.inptg = Array({2000, 4});
+  Surface surface = interpolate({500, 500, 3, 3, &ws.inppn, &ws.inptg});
+  ws.patches = std::move(surface.patches);
+  ws.intpn = std::move(surface.intpn);
+  std::size_t printed = 0;
+  AplEnvironment::Hooks hooks;
+  hooks.say = hooks.report = [&](std::string_view) { ++printed; };
+  hooks.read = [](std::string_view) { return std::nullopt; };
+  hooks.command = [](const std::vector<std::string>&) {};
+  hooks.save = hooks.load = [](std::string_view) { return std::string(); };
+  AplEnvironment apl(ws, hooks);
+  auto run = [&](const char* line) { apl.execute(line); };
+  const double first = best_seconds(1, [&] { run("X←INTPN×2"); });  // INTPN made an APL value
+  const double times2 = best_seconds(5, [&] { run("X←INTPN×2"); });
+  const double sum = best_seconds(5, [&] { run("S←+/,INTPN"); });
+  const double plane = best_seconds(5, [&] { run("Y←INTPN[;;1]"); });
+  const double assign = best_seconds(3, [&] { run("INPPN[1;3]←INPPN[1;3]"); });
+  const double start = best_seconds(3, [&] {
+    run("INPPN[1;3]←INPPN[1;3]");
+    apl.start();
+  });
+  constexpr int small_runs = 20000;
+  const double small = best_seconds(3,
+                                    [&] {
+                                      for (int i = 0; i < small_runs; ++i) run("A←1+2");
+                                    }) /
+                       small_runs;
+  fmt::print("apl_workspace_points {}\n", ws.intpn.size() / 3);
+  fmt::print("apl_workspace_first_read_intpn_s {:.6f}\n", first);
+  fmt::print("apl_workspace_intpn_times_2_s {:.6f}\n", times2);
+  fmt::print("apl_workspace_sum_ravel_intpn_s {:.6f}\n", sum);
+  fmt::print("apl_workspace_intpn_plane_1_s {:.6f}\n", plane);
+  fmt::print("apl_workspace_assign_one_point_s {:.6f}\n", assign);
+  fmt::print("apl_workspace_assign_and_start_s {:.6f}\n", start);
+  fmt::print("apl_workspace_small_statement_us {:.3f}\n", small * 1e6);
+  if (printed != 0) fmt::print(stderr, "bench_apl: {} lines printed\n", printed);
 }
 
 }  // namespace igds::bench
