@@ -239,8 +239,18 @@ TEST_CASE("END APL is APL: a point changed by indexed assignment, START, and the
                                   "∇Z←TOP A\n"
                                   "Z←⌈/,A[;;3]\n"
                                   "∇\n"
+                                  "∇Z←COUNT A;I\n"
+                                  "Z←I←0\n"
+                                  "L:I←I+1\n"
+                                  "Z←Z+A[I]>5\n"
+                                  "→(I<⍴A)/L\n"
+                                  "∇\n"
                                   "START\n"
+                                  "DISPLAY SURFACE ORTHOGONAL XZ\n"
                                   "END APL\n"
+                                  "⌈/,IMAGE[;;2]\n"
+                                  "COUNT ,INTPN[;;3]\n"
+                                  "+/,INTPN[;;3]>5\n"
                                   "TOP INTPN\n"
                                   "⍴FIT\n"
                                   "COMDIS 'SURFACE ORTHOGONAL XY'\n"
@@ -252,6 +262,19 @@ TEST_CASE("END APL is APL: a point changed by indexed assignment, START, and the
   CHECK(r.status == 0);
   // START made INTPN again: its highest point is the raised one.
   CHECK(r.out.find("      TOP INTPN\n7\n") != std::string::npos);
+  // DISPLAY drew the raised surface: the highest point of its XZ view is the raised one.
+  CHECK(r.out.find("      ⌈/,IMAGE[;;2]\n7\n") != std::string::npos);
+  // A function that loops over INTPN agrees with APL's own reduction.
+  const auto loop = r.out.find("      COUNT ,INTPN[;;3]\n");
+  const auto reduction = r.out.find("      +/,INTPN[;;3]>5\n");
+  REQUIRE(loop != std::string::npos);
+  REQUIRE(reduction != std::string::npos);
+  const auto value_after = [&](std::size_t at) {
+    const auto from = r.out.find('\n', at) + 1;
+    return r.out.substr(from, r.out.find('\n', from) - from);
+  };
+  CHECK(value_after(loop) == value_after(reduction));
+  CHECK(value_after(loop) != "0");
   const auto comdis = r.out.find("      COMDIS 'SURFACE ORTHOGONAL XY'\n");
   CHECK(r.out.find("IMAGE: SURFACE, ORTHOGONAL XY\n", comdis) != std::string::npos);
   CHECK(r.out.find("      DESCR DESIM\nIMAGE: SURFACE, ORTHOGONAL XY\n") != std::string::npos);
