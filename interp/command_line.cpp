@@ -37,6 +37,20 @@ options:
 )";
 }
 
+const std::vector<OptionSpec>& command_line_options() {
+  static const std::vector<OptionSpec> options{
+      {"--disk", "DIR", {}},
+      {"--term", "MODE", {"xterm", "tek", "none"}},
+      {"--tek", "MODEL", {"4013", "4014"}},
+      {"--plotter", "PATH", {}},
+      {"--paper", "SIZE", {"A4", "A3", "LETTER", "B"}},
+      {"--strict", "", {}},
+      {"--help", "", {}},
+      {"--version", "", {}},
+  };
+  return options;
+}
+
 CommandLine parse_command_line(const std::vector<std::string>& args) {
   CommandLine line;
   bool options_done = false;

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands/context.h"
@@ -36,5 +37,15 @@ TermMode choose_term(bool stdout_is_terminal, const char* term_env, const char* 
 
 // The usage message (--help, and after a usage error).
 std::string usage_text();
+
+// The options, for the manual page and the shell's completion (interp/manual.h): each name, the
+// word that stands for its value in the usage ("" when it takes none) and the values it takes
+// when they are a fixed list. parse_command_line accepts exactly these.
+struct OptionSpec {
+  std::string_view name;
+  std::string_view value;
+  std::vector<std::string_view> values;
+};
+const std::vector<OptionSpec>& command_line_options();
 
 }  // namespace igds
