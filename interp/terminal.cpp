@@ -1,5 +1,7 @@
 #include "interp/terminal.h"
 
+#include <cstdio>
+
 #include "devices/tek4013.h"
 #include "interp/apl/keyboard.h"
 
@@ -151,6 +153,47 @@ Event Terminal::read_line(std::string_view prompt, std::string_view above) {
     say(shown);
   }
   return e;
+}
+
+Event Terminal::pick(std::string_view prompt) {
+  if (!input_) return {};
+  if (mode_ == TermMode::tek && input_->gives_keys()) {
+    write_dialogue(prompt);
+    out_.write("\x1B\x1A");  // ESC SUB: GIN mode, the crosshair
+    out_.flush();
+    std::string report;
+    while (report.size() < 5) {
+      Event e = input_->key(std::nullopt);
+      if (e.kind != Event::Kind::key) return e;
+      report += e.text;
+    }
+    // The terminator, when the terminal sends one (CR, or CR and EOT).
+    for (int k = 0; k < 2; ++k) {
+      Event e = input_->key(std::chrono::milliseconds(50));
+      if (e.kind != Event::Kind::key) break;
+      if (e.text != "\r" && e.text != "\x04") {
+        typed_ahead_.push_back(std::move(e.text));
+        break;
+      }
+    }
+    auto five = [&](std::size_t i) { return static_cast<unsigned char>(report[i]) & 0x1F; };
+    Event picked{Event::Kind::pick, report.substr(0, 1)};
+    picked.x = (five(1) << 5) | five(2);
+    picked.y = (five(3) << 5) | five(4);
+    write_dialogue("\n");
+    return picked;
+  }
+  Event e = read_line(prompt);
+  if (e.kind != Event::Kind::line) return e;
+  // X Y [KEY]: two whole numbers on the screen, and the key (a blank when none is given).
+  int x = 0, y = 0;
+  char key[2] = {' ', 0};
+  const int n = std::sscanf(e.text.c_str(), "%d %d %1s", &x, &y, key);
+  if (n < 2 || x < 0 || y < 0 || x > 1023 || y > 779) return e;
+  Event picked{Event::Kind::pick, key};
+  picked.x = x;
+  picked.y = y;
+  return picked;
 }
 
 Event Terminal::edit_line(std::string_view prompt) {

@@ -19,9 +19,12 @@
 namespace igds {
 
 struct Event {
-  enum class Kind { line, key, interrupt, end, timeout };
+  enum class Kind { line, key, pick, interrupt, end, timeout };
   Kind kind = Kind::end;
-  std::string text;  // line: the line, without its end; key: the key's bytes (one character)
+  // line: the line, without its end; key: the key's bytes (one character); pick: the key that
+  // made it.
+  std::string text;
+  int x = 0, y = 0;  // pick: the position in 4013 addresses (0..1023, 0..779)
 };
 
 // Where input comes from: a command file or a pipe, the keyboard (lines through GNU Readline or
@@ -85,6 +88,13 @@ class Terminal {
   // The next line after `prompt`; `above` is a line written before the prompt (READY), which
   // Readline shows as the first line of its prompt. Ends with Event::line, interrupt or end.
   Event read_line(std::string_view prompt, std::string_view above = {});
+
+  // A position picked on the screen (Event::pick), after `prompt`. On a Tek terminal typing
+  // keys, GIN mode: the crosshair, and the report of the key pressed (the key, then x and y in
+  // two 5-bit characters each, then xterm's ginTerminator). From a command file or a line
+  // source, a line `X Y [KEY]`. Anything else that line holds comes back as Event::line; an
+  // interrupt or the end of the input as themselves.
+  Event pick(std::string_view prompt);
 
   // The screen of the tek and xterm modes (nullptr in none mode).
   const TekScreen* screen() const { return screen_.get(); }

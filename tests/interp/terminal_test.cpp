@@ -53,6 +53,43 @@ TEST_CASE("tek mode: the APL prefix key, then a key, types its glyph") {
   CHECK(t.terminal.read_line("      ").text == "X←2×3`");
 }
 
+TEST_CASE("tek mode: a pick is GIN mode, the crosshair's report decoded") {
+  Tek t;
+  // Key A at x 500 (15, 20 in 5-bit halves) and y 300 (9, 12), then xterm's CR; then a line.
+  t.keys.type("A/4),\rNOCUR\r");
+  const Event e = t.terminal.pick("POINT? ");
+  REQUIRE(e.kind == Event::Kind::pick);
+  CHECK(e.text == "A");
+  CHECK(e.x == 500);
+  CHECK(e.y == 300);
+  CHECK(t.out.text.find("\x1B\x1A") != std::string::npos);
+  CHECK(t.terminal.read_line("      ").text == "NOCUR");
+  // No terminator at all: the next key is kept for the next line.
+  t.keys.type("  ! !X\r");
+  const Event corner = t.terminal.pick("POINT? ");
+  CHECK(corner.x == 1);
+  CHECK(corner.y == 1);
+  CHECK(t.terminal.read_line("      ").text == "X");
+  // Ctrl-C instead of a pick.
+  t.keys.type("\x03");
+  CHECK(t.terminal.pick("POINT? ").kind == Event::Kind::interrupt);
+}
+
+TEST_CASE("command files: a pick is a line X Y [KEY]") {
+  StringOutput out;
+  ScriptedSource lines{false, true};
+  Terminal terminal{TermMode::none, {}, out};
+  terminal.use_input(&lines);
+  lines.lines({"500 300 A", "12 34", "500", "2000 1"});
+  Event e = terminal.pick("POINT? ");
+  CHECK((e.kind == Event::Kind::pick && e.x == 500 && e.y == 300 && e.text == "A"));
+  e = terminal.pick("POINT? ");
+  CHECK((e.kind == Event::Kind::pick && e.x == 12 && e.y == 34 && e.text == " "));
+  CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // not a position
+  CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // off the screen
+  CHECK(terminal.pick("POINT? ").kind == Event::Kind::end);
+}
+
 TEST_CASE("tek mode: Ctrl-C and the end of the input are events of the wait") {
   Tek t;
   t.keys.type("1 2\x03");
