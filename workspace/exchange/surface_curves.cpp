@@ -12,21 +12,6 @@ namespace igds {
 
 namespace {
 
-void require_shape(const char* name, const Array* a, std::vector<std::size_t> expected) {
-  if (a == nullptr) {
-    DataError e(DataError::Problem::missing);
-    e.variable = name;
-    throw e;
-  }
-  if (a->shape != expected || a->size() != Array::count(expected)) {
-    DataError e(DataError::Problem::shape);
-    e.variable = name;
-    e.shape = a->shape;
-    e.expected = std::move(expected);
-    throw e;
-  }
-}
-
 void require_grid(const SurfaceInput& in) {
   if (in.nocur < 2 || in.nostr < 2) throw DataError(DataError::Problem::grid_too_small);
   if (in.intcu < 0 || in.intst < 0) throw DataError(DataError::Problem::negative_density);

@@ -1,5 +1,7 @@
 #include "workspace/kernels/data_error.h"
 
+#include "workspace/kernels/array.h"
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -53,6 +55,21 @@ const char* DataError::what() const noexcept {
     return "data error";
   }
   return text_.c_str();
+}
+
+void require_shape(const char* variable, const Array* a, std::vector<std::size_t> expected) {
+  if (a == nullptr) {
+    DataError e(DataError::Problem::missing);
+    e.variable = variable;
+    throw e;
+  }
+  if (a->shape != expected || a->size() != Array::count(expected)) {
+    DataError e(DataError::Problem::shape);
+    e.variable = variable;
+    e.shape = a->shape;
+    e.expected = std::move(expected);
+    throw e;
+  }
 }
 
 }  // namespace igds

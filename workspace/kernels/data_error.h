@@ -40,4 +40,10 @@ struct DataError : std::exception {
   mutable std::string text_;
 };
 
+struct Array;
+
+// Throws DataError missing (no array) or shape (`a` is not of shape `expected`), naming
+// `variable`: the check every kernel makes of the arrays it is given.
+void require_shape(const char* variable, const Array* a, std::vector<std::size_t> expected);
+
 }  // namespace igds

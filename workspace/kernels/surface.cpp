@@ -13,21 +13,6 @@ namespace igds {
 
 namespace {
 
-void check_shape(const char* name, const Array* a, std::vector<std::size_t> expected) {
-  if (a == nullptr) {
-    DataError e(DataError::Problem::missing);
-    e.variable = name;
-    throw e;
-  }
-  if (a->shape != expected || a->size() != Array::count(expected)) {
-    DataError e(DataError::Problem::shape);
-    e.variable = name;
-    e.shape = a->shape;
-    e.expected = std::move(expected);
-    throw e;
-  }
-}
-
 [[noreturn]] void refuse(DataError::Problem problem, std::size_t number) {
   DataError e(problem);
   e.number = number;
@@ -63,7 +48,7 @@ void check_grid(const SurfaceInput& in) {
     throw e;
   }
   const std::size_t n = std::size_t(in.nocur) * std::size_t(in.nostr);
-  check_shape("INPPN", in.inppn, {n, 3});
+  require_shape("INPPN", in.inppn, {n, 3});
   for (std::size_t k = 0; k < n; ++k) {
     if (!finite(in.inppn->data() + 3 * k, 3)) refuse(DataError::Problem::point_not_finite, k + 1);
   }
@@ -72,7 +57,7 @@ void check_grid(const SurfaceInput& in) {
 // Everything interpolate needs beyond check_grid: INPTG's shape and finite tangents.
 void check_tangents(const SurfaceInput& in) {
   const std::size_t rows = 2 * (std::size_t(in.nocur) + std::size_t(in.nostr));
-  check_shape("INPTG", in.inptg, {rows, 4});
+  require_shape("INPTG", in.inptg, {rows, 4});
   for (std::size_t r = 0; r < rows; ++r) {
     if (!finite(in.inptg->data() + 4 * r, 3))
       refuse(DataError::Problem::tangent_not_finite, tangent_point(in, r));
@@ -81,7 +66,7 @@ void check_tangents(const SurfaceInput& in) {
 
 void check_patches(const SurfaceInput& in, const Array& patches) {
   const std::size_t pr = in.nocur - 1, pc = in.nostr - 1;
-  check_shape("PATCHES", &patches, {pr, pc, 3, 4, 4});
+  require_shape("PATCHES", &patches, {pr, pc, 3, 4, 4});
   for (std::size_t p = 0; p < pr * pc; ++p) {
     if (!finite(patches.data() + 48 * p, 48)) refuse(DataError::Problem::patch_not_finite, p + 1);
   }
