@@ -306,9 +306,12 @@ std::optional<std::string> AplEnvironment::start() {
                        [&](std::string_view n) { return assigned_.count(std::string(n)) > 0; });
   };
   const bool inputs = was({"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG"});
-  const bool derived = was({"PATCHES", "INTPN"}) && !(ws_.patches.empty() && ws_.intpn.empty());
+  // PATCHES or INTPN given values of their own are kept; emptied, they are made again.
+  const bool assigned_derived = was({"PATCHES", "INTPN"});
+  const bool emptied = assigned_derived && (ws_.patches.empty() || ws_.intpn.empty());
+  const bool derived = assigned_derived && !emptied;
   auto reason = [](const VariableProblem& p) { return p.reason; };
-  if (inputs && !derived) {
+  if ((inputs || emptied) && !derived) {
     // The inputs changed: PATCHES and INTPN are made again from them, as CHANGE does.
     if (auto p = size_problem(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) return reason(*p);
     Array patches = std::move(ws_.patches), intpn = std::move(ws_.intpn);

@@ -118,6 +118,13 @@ TEST_CASE("START refuses a workspace that does not agree with itself, with the r
   CHECK(!apl.ws.changes.derived);
   CHECK(apl("INTPN←2 2 3⍴0").empty());
   CHECK(apl.env.start().value_or("").find("INTPN") != std::string::npos);
+  // Emptied, PATCHES is made again from the inputs, and INTPN with it (the bad INTPN goes).
+  CHECK(apl("PATCHES←⍳0").empty());
+  REQUIRE(!apl.env.start());
+  const Surface expected = interpolate({3, 2, 1, 1, &apl.ws.inppn, &apl.ws.inptg});
+  CHECK(apl.ws.patches == expected.patches);
+  CHECK(apl.ws.intpn == expected.intpn);
+  CHECK(apl.ws.changes.derived);
 }
 
 TEST_CASE("the manual's functions call igds's code") {
