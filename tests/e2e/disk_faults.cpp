@@ -69,14 +69,19 @@ enum class Fault { read_only, full, removed };
 std::string run_with(Fault fault, const fs::path& disk) {
   // Root writes through permission bits: igds runs as nobody on a folder of its own.
   const int as_user = fault == Fault::read_only && ::geteuid() == 0 ? 65534 : -1;
+  fs::path binary = test::igds_binary();
   if (as_user >= 0) {
+    // A copy of the binary beside the disk: the build folder may be closed to others (/root).
     fs::permissions(disk.parent_path(), fs::perms::owner_all | fs::perms::others_exec);
     REQUIRE(::chown(disk.c_str(), 65534, 65534) == 0);
+    const fs::path copy = disk.parent_path() / "igds";
+    fs::copy_file(binary, copy);
+    fs::permissions(copy, fs::perms::owner_all | fs::perms::others_read | fs::perms::others_exec);
+    binary = copy;
   }
   std::string after;
   {
-    test::LiveIgds igds(test::igds_binary(), {"--disk", disk.string(), "--term", "none"}, true,
-                        as_user);
+    test::LiveIgds igds(binary, {"--disk", disk.string(), "--term", "none"}, true, as_user);
     igds.send(build_3x3);
     igds.send("SAVE OLD\nDISPLAY SURFACE ISOMETRIC 3 30\nSTORE FILE OLDPIC\n");
     REQUIRE(igds.wait_for("STORE FILE OLDPIC\nREADY\n", 60));
