@@ -123,20 +123,34 @@ TEST_CASE("igds-tek: xterm -t with the 4013's window around igds, or what to ins
   // An xterm that only says how it was called.
   write_file(bin.path() / "xterm", "#!/bin/sh\nprintf '%s|' \"$@\"\n");
   fs::permissions(bin.path() / "xterm", fs::perms::owner_all);
-  auto r = run({launcher, "--disk", "/tmp/x", "hull.igds"}, no_xterm);
+  // Installed: bin/igds-tek runs the bin/igds beside it.
+  TempDir installed;
+  fs::copy_file(launcher, installed.path() / "igds-tek");
+  write_file(installed.path() / "igds", "#!/bin/sh\n");
+  fs::permissions(installed.path() / "igds", fs::perms::owner_all);
+  auto r =
+      run({(installed.path() / "igds-tek").string(), "--disk", "/tmp/x", "hull.igds"}, no_xterm);
   CHECK(r.status == 0);
   CHECK(r.out ==
-        "-t|-title|igds|-xrm|XTerm*tekGeometry: 1024x780|-xrm|XTerm*ginTerminator: CRonly|-e|igds|"
-        "--disk|/tmp/x|hull.igds|");
+        "-t|-title|igds|-xrm|XTerm*tekGeometry: 1024x780|-xrm|XTerm*ginTerminator: "
+        "CRonly|-e|" +
+            (installed.path() / "igds").string() + "|--disk|/tmp/x|hull.igds|");
   RunOptions no_display = no_xterm;
   no_display.env["DISPLAY"] = "";
-  r = run({launcher}, no_display);
+  r = run({(installed.path() / "igds-tek").string()}, no_display);
   CHECK(r.status == 1);
   CHECK(r.err.find("no X display") != std::string::npos);
+  // No igds anywhere: said before any window opens.
+  TempDir lone;
+  fs::copy_file(launcher, lone.path() / "igds-tek");
+  r = run({"/bin/sh", (lone.path() / "igds-tek").string()}, no_xterm);
+  CHECK(r.status == 1);
+  CHECK(r.err.find("igds is not installed") != std::string::npos);
+  CHECK(r.out == "");
   fs::remove(bin.path() / "xterm");
   RunOptions nothing;
   nothing.env = {{"PATH", bin.path().string()}, {"DISPLAY", ":1"}};
-  r = run({"/bin/sh", launcher}, nothing);
+  r = run({"/bin/sh", (installed.path() / "igds-tek").string()}, nothing);
   CHECK(r.status == 1);
   CHECK(r.err.find("xterm is not installed") != std::string::npos);
 }
