@@ -11,6 +11,7 @@
 #include "interp/apl/session.h"
 #include "interp/apl_env.h"
 #include "tests/bench/bench.h"
+#include "tests/bench/inputs.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds::bench {
@@ -114,16 +115,12 @@ IGDS_BENCH("apl") {
 // The same statements in END APL itself (interp/apl_env.h) on the 4 M-point surface of a 500 x
 // 500 input grid with INTCU = INTST = 3: INTPN read from the workspace, assignments checked.
 IGDS_BENCH("apl_workspace") {
+  Input in = wavy(500, 500);
   Workspace ws;
   ws.nocur = ws.nostr = 500;
   ws.intcu = ws.intst = 3;
-  ws.inppn = Array({250000, 3});
-  for (std::size_t i = 0; i < 500; ++i)
-    for (std::size_t j = 0; j < 500; ++j) {
-      double* p = ws.inppn.data() + 3 * (i * 500 + j);
-      p[0] = double(j), p[1] = 1.5 * double(i), p[2] = std::sin(0.05 * double(j));
-    }
-  ws.inptg = Array({2000, 4});
+  ws.inppn = std::move(in.inppn);
+  ws.inptg = std::move(in.inptg);
   Surface surface = interpolate({500, 500, 3, 3, &ws.inppn, &ws.inptg});
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);

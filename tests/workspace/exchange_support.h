@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/kernels/helpers.h"
 #include "tests/support/golden.h"
 #include "tests/support/process.h"
 #include "workspace/kernels/surface.h"
@@ -19,18 +20,7 @@
 
 namespace igds::test::exchange {
 
-// A small deterministic generator (SplitMix64), so that every run sees the same data.
-struct Random {
-  std::uint64_t state;
-  explicit Random(std::uint64_t seed) : state(seed) {}
-  double uniform(double lo, double hi) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31;
-    return lo + (hi - lo) * double(z >> 11) * 0x1.0p-53;
-  }
-};
+using test::Random;  // tests/kernels/helpers.h
 
 // A NOCUR x NOSTR surface with border tangents: a bent, twisted sheet with uneven chords (so
 // that it is C0 only across its patch borders), in the INPTG row order of workspace/state.h.
