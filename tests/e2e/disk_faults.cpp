@@ -173,3 +173,33 @@ TEST_CASE("the disk removed under igds: every command reports, igds goes on") {
   CHECK(has(out, "RESTORE OLD\nFILE NOT FOUND\n"));
   CHECK(count(out, "THE LAST SAVED SESSION IS KEPT") == 1);
 }
+
+TEST_CASE("a disk that fills and has room again: the failure said once, then the save said") {
+  test::TempDir scratch;
+  test::SmallDisk small(scratch.path() / "disk", 512);
+  IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
+  const fs::path disk = small.path();
+  test::LiveIgds igds(test::igds_binary(), {"--disk", disk.string(), "--term", "none"}, true);
+  igds.send(build_3x3);
+  REQUIRE(igds.wait_for("INTERPOLATED CURVES AND STRINGERS? 1 1\nREADY\n", 60));
+  {
+    std::FILE* f = std::fopen((disk / "FILLER").c_str(), "wb");
+    REQUIRE(f);
+    std::vector<char> block(4096, 'x');
+    while (std::fwrite(block.data(), 1, block.size(), f) == block.size()) {
+    }
+    while (std::fwrite("x", 1, 1, f) == 1 && std::fflush(f) == 0) {
+    }
+    std::fclose(f);
+  }
+  igds.send("CHANGE GRID 4 4\nCHANGE GRID 3 3\n");
+  REQUIRE(igds.wait_for("CHANGE GRID 3 3\nREADY\n", 60));
+  fs::remove(disk / "FILLER");
+  igds.send("CHANGE GRID 5 5\nEND CMS\n");
+  CHECK(igds.finish() == 0);
+  const std::string out = igds.output();
+  CAPTURE(out);
+  CHECK(count(out, "THE LAST SAVED SESSION IS KEPT") == 1);
+  CHECK(has(out, "CHANGE GRID 5 5\nTHE SESSION IS SAVED AGAIN\nREADY\n"));
+  CHECK(session_on(disk).intcu == 5);
+}
