@@ -12,6 +12,7 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "workspace/disk/cards.h"
 #include "workspace/disk/disk.h"
+#include "workspace/disk/files.h"
 #include "workspace/error.h"
 
 using namespace igds;
@@ -125,6 +126,56 @@ TEST_CASE("WRITE of a surface not interpolated yet: zero shape cards and no valu
   std::size_t overflow = 0;
   std::string text = disk::char_cards(ws, &overflow);
   CHECK(text.ends_with("    0    0    0\n    0    0    0    0    0\n"));
+}
+
+TEST_CASE("WRITE's cards made in pieces of any size are the cards made at once") {
+  Workspace ws = test::make_workspace(4, 5, 3, 2, false);
+  ws.inppn.ravel[3] = 1e9;  // one value that does not fit F10.3
+  std::size_t overflow = 0;
+  const std::string whole = disk::char_cards(ws, &overflow);
+  CHECK(overflow >= 1);
+  for (std::size_t room : {disk::CardMaker::longest_card, std::size_t{100}, std::size_t{1000}}) {
+    CAPTURE(room);
+    disk::CardMaker cards(ws);
+    CHECK(cards.size() == whole.size());
+    std::string pieces, piece(room, '\0');
+    while (std::size_t n = cards.fill(piece.data(), room)) {
+      CHECK(n <= room);
+      CHECK(piece[n - 1] == '\n');  // whole cards only
+      pieces.append(piece, 0, n);
+    }
+    CHECK(pieces == whole);
+    CHECK(cards.overflow() == overflow);
+  }
+}
+
+TEST_CASE("WRITE on a disk that fills up, in the first piece or a later one: old file kept") {
+  test::TempDir dir;
+  Disk disk(dir.path());
+  Workspace small = small_surface();
+  write_char(disk, "SMALL", small);
+  const std::string old = test::read_file(disk.path("SMALL", "IGDSCHAR"));
+  // More than one piece of cards (8 MB each): about 14 MB.
+  Workspace big = test::make_workspace(60, 60, 10, 10, false);
+  std::size_t overflow = 0;
+  REQUIRE(disk::char_cards(big, &overflow).size() > (std::size_t{9} << 20));
+  for (std::size_t limit : {std::size_t{0}, std::size_t{4096}, std::size_t{9} << 20}) {
+    CAPTURE(limit);
+    disk::set_write_limit_for_testing(limit);
+    std::string report;
+    try {
+      write_char(disk, "SMALL", big);
+    } catch (const Report& r) {
+      report = r.what();
+    }
+    disk::set_write_limit_for_testing(std::nullopt);
+    CHECK(report == "CANNOT WRITE SMALL.IGDSCHAR (NO SPACE LEFT ON DEVICE); NO FILE CHANGED");
+    CHECK(test::read_file(disk.path("SMALL", "IGDSCHAR")) == old);
+    CHECK(!std::filesystem::exists(disk::temporary_for(disk.path("SMALL", "IGDSCHAR"))));
+  }
+  const std::string cards = disk::char_cards(big, &overflow);
+  CHECK(write_char(disk, "SMALL", big) == overflow);
+  CHECK(test::read_file(disk.path("SMALL", "IGDSCHAR")) == cards);
 }
 
 TEST_CASE("WRITE agrees with gfortran writing the same values with the same formats") {

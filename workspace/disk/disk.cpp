@@ -260,10 +260,15 @@ Image load_image(const Disk& disk, std::string_view name) {
 
 std::size_t write_char(const Disk& disk, std::string_view name, const Workspace& ws) {
   const std::string n = checked(name);
-  std::size_t overflow = 0;
-  const std::string text = disk::char_cards(ws, &overflow);
-  write_user_file(disk, n, "IGDSCHAR", text);
-  return overflow;
+  disk::CardMaker cards(ws);
+  try {
+    disk::write_file(disk.path(n, "IGDSCHAR"),
+                     [&](char* out, std::size_t room) { return cards.fill(out, room); });
+  } catch (const disk::IoError& e) {
+    throw Report(
+        fmt::format("CANNOT WRITE {} ({}); NO FILE CHANGED", file_name(n, "IGDSCHAR"), e.reason()));
+  }
+  return cards.overflow();
 }
 
 }  // namespace igds

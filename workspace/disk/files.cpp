@@ -13,6 +13,8 @@
 #include <cerrno>
 #include <climits>
 #include <cstring>
+#include <future>
+#include <memory>
 #include <utility>
 
 #include <fmt/format.h>
@@ -87,8 +89,27 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
   }
 }
 
-// Creates `path` (it must not exist; never through a link), writes, fsyncs; removes it on failure.
-void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
+// Writes a large file's pieces as fill() makes them: the next piece is made while the last one is
+// copied to the system, in two buffers of `piece` bytes, so that a text of hundreds of megabytes
+// costs about the slower of the two and never a buffer of its size.
+void write_filled(int fd, const Fill& fill) {
+  constexpr std::size_t piece = std::size_t{8} << 20;
+  std::unique_ptr<char[]> buffers[2] = {std::make_unique_for_overwrite<char[]>(piece),
+                                        std::make_unique_for_overwrite<char[]>(piece)};
+  std::future<void> writing;  // the piece being written, whose errors get() rethrows
+  for (int b = 0;; b ^= 1) {
+    const std::size_t n = fill(buffers[b].get(), piece);
+    if (writing.valid()) writing.get();
+    if (n == 0) return;
+    const char* bytes = buffers[b].get();
+    writing = std::async(std::launch::async, [fd, bytes, n] { write_runs(fd, {{bytes, n}}); });
+  }
+}
+
+// Creates `path` (it must not exist; never through a link), writes by `write(fd)`, fsyncs;
+// removes it on failure.
+template <class Write>
+void create_and_write(const std::filesystem::path& path, const Write& write) {
   Fd fd(::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0644));
   if (fd.get() < 0) {
     if (errno == ELOOP) throw IoError(ELOOP, "A SYMBOLIC LINK IS IN THE WAY");
@@ -96,13 +117,17 @@ void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
     throw IoError(errno);
   }
   try {
-    write_runs(fd.get(), bytes.runs());
+    write(fd.get());
     if (::fdatasync(fd.get()) != 0) throw IoError(errno);
     fd.finish();
-  } catch (const IoError&) {
+  } catch (...) {
     ::unlink(path.c_str());
     throw;
   }
+}
+
+void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
+  create_and_write(path, [&](int fd) { write_runs(fd, bytes.runs()); });
 }
 
 // Clears the way for a temporary: a stale file or link there is removed (never followed), a
@@ -112,6 +137,33 @@ void clear_temporary(const std::filesystem::path& tmp) {
   if (::lstat(tmp.c_str(), &st) != 0) return;
   if (S_ISDIR(st.st_mode)) throw IoError(EISDIR);
   if (::unlink(tmp.c_str()) != 0 && errno != ENOENT) throw IoError(errno);
+}
+
+// Writes the temporary of `target` by `write`, then puts it in place (see write_file).
+template <class Write>
+bool write_in_place(const std::filesystem::path& target, const Write& write, bool replace) {
+  auto tmp = temporary_for(target);
+  clear_temporary(tmp);
+  create_and_write(tmp, write);
+  int moved;
+  if (replace) {
+    moved = ::rename(tmp.c_str(), target.c_str());
+  } else {
+    moved = ::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE);
+    if (moved != 0 && (errno == EINVAL || errno == ENOSYS)) {
+      // File systems without RENAME_NOREPLACE: a hard link fails when the name is taken.
+      moved = ::link(tmp.c_str(), target.c_str());
+      if (moved == 0) ::unlink(tmp.c_str());
+    }
+  }
+  if (moved != 0) {
+    int error = errno;
+    ::unlink(tmp.c_str());
+    if (!replace && error == EEXIST) return false;
+    throw IoError(error);
+  }
+  sync_folder(target.parent_path());
+  return true;
 }
 
 }  // namespace
@@ -146,28 +198,13 @@ std::filesystem::path temporary_for(const std::filesystem::path& target) {
 }
 
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace) {
-  auto tmp = temporary_for(target);
-  clear_temporary(tmp);
-  create_and_write(tmp, bytes);
-  int moved;
-  if (replace) {
-    moved = ::rename(tmp.c_str(), target.c_str());
-  } else {
-    moved = ::renameat2(AT_FDCWD, tmp.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE);
-    if (moved != 0 && (errno == EINVAL || errno == ENOSYS)) {
-      // File systems without RENAME_NOREPLACE: a hard link fails when the name is taken.
-      moved = ::link(tmp.c_str(), target.c_str());
-      if (moved == 0) ::unlink(tmp.c_str());
-    }
-  }
-  if (moved != 0) {
-    int error = errno;
-    ::unlink(tmp.c_str());
-    if (!replace && error == EEXIST) return false;
-    throw IoError(error);
-  }
-  sync_folder(target.parent_path());
-  return true;
+  return write_in_place(
+      target, [&](int fd) { write_runs(fd, bytes.runs()); }, replace);
+}
+
+bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace) {
+  return write_in_place(
+      target, [&](int fd) { write_filled(fd, fill); }, replace);
 }
 
 bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,6 +37,13 @@ std::filesystem::path temporary_for(const std::filesystem::path& target);
 // nothing. On failure the temporary is removed, `target` is as it was, and IoError is thrown.
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace = true);
 bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace = true);
+
+// A file's bytes made piece by piece: fill(out, room) puts at most `room` bytes (several
+// megabytes) at `out` and returns how many; 0 ends the file.
+using Fill = std::function<std::size_t(char* out, std::size_t room)>;
+// The same for bytes made while they are written (a listing of hundreds of megabytes): the next
+// piece is made while the last one is being written.
+bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace = true);
 
 // Writes a new file whole (O_EXCL: never an existing one, never through a link) and fsyncs it;
 // the caller makes it reachable later (and syncs the folder).
