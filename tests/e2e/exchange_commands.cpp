@@ -155,7 +155,7 @@ TEST_CASE("EXPORT DUCT of an image not of the surface: the image as projected") 
   ctx.ws.changes.replaced();  // the surface changed since the image was drawn
   ctx.run(export_command, "DUCT", {"IMAGE"});
   const DuctPicture p = read_duct(read_file(dir.path() / "IMAGE.DUCTPIC"));
-  CHECK(p.counters[6] == 2);  // I7: in the plane
+  CHECK(p.counters[6] == 2);                                           // I7: in the plane
   CHECK(p.counters[7] == static_cast<int>(Projection::assonometric));  // I8: DESIM[2]
   CHECK(p.header.at(1) == "SURFACE ASSONOMETRIC 110 130 120");
   // One straight-line instruction per curve and per stringer of the image, as it is drawn.
@@ -418,6 +418,40 @@ TEST_CASE("igds: EXPORT IGES and STEP read by OpenCASCADE, every INTPN point fou
                         step ? "STEP" : "IGES", probes.size(), worst));
     CHECK(worst <= 1e-9);
   }
+}
+
+TEST_CASE("igds: DISPLAY PICTURE on the 4013, kept by the session for the next igds") {
+  TempDir disk;
+  fs::copy_file(hand_written(), disk.path() / "HAND.DUCTPIC");
+  write_file(disk.path() / "first.igds", "DISPLAY PICTURE HAND ORTHOGONAL XY\nSTORE FIRST\n");
+  RunOptions options;
+  options.timeout_seconds = 60;
+  const RunResult first = run_igds(
+      {"--term", "tek", "--disk", disk.path().string(), (disk.path() / "first.igds").string()},
+      options);
+  CHECK(first.status == 0);
+  // The whole session is a 4013 stream: the picture's dashed (ESC c) and chain-dashed (ESC b)
+  // vectors, its texts, and the description.
+  CHECK(first.out.find("\x1b"
+                       "c") != std::string::npos);
+  CHECK(first.out.find("\x1b"
+                       "b") != std::string::npos);
+  const TekDrawing decoded = decode_tek(first.out);
+  CHECK(decoded.errors.empty());
+  std::string texts;
+  for (const TekPage& page : decoded.pages)
+    for (const TekText& text : page.texts) texts += text.text + "\n";
+  CHECK(texts.find("ORIGIN\n") != std::string::npos);
+  CHECK(texts.find("COLOURS 1 2 3 4 5\n") != std::string::npos);
+  // The next igds has the picture as IMAGE and TEMP1; EXPORT DUCT writes it as projected.
+  fs::remove(disk.path() / "HAND.DUCTPIC");
+  const RunResult next = run_commands(disk, "DISPLAY FIRST\nEXPORT DUCT AGAIN\n");
+  INFO(next.out);
+  CHECK(next.out.find("IMAGE: PICTURE, ORTHOGONAL XY") != std::string::npos);
+  CHECK(next.out.find("AGAIN.DUCTPIC: THE IMAGE AS PROJECTED, ") != std::string::npos);
+  const DuctPicture again = read_duct(read_file(disk.path() / "AGAIN.DUCTPIC"));
+  CHECK(again.counters[6] == 2);
+  CHECK(again.texts.size() == 3);
 }
 
 }  // namespace igds::test::exchange
