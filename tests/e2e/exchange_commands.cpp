@@ -352,6 +352,15 @@ TEST_CASE("a picture image is kept by STORE FILE and by the session, and cannot 
     REQUIRE(back.temp2->picture);
     CHECK(picture_of(back.temp2).drawing.size() == 21);
   }
+  // An IGDSIMAG file whose picture does not read (written whole, so its checksum is right).
+  Image bad;
+  bad.desim = {2, Projection::orthogonal, {1, 0, 0}};
+  bad.picture =
+      std::make_shared<const ImagePicture>(ImagePicture{"BAD", "NOT A PICTURE\n", {}, {}});
+  store_image(disk, "BADPIC", bad);
+  CHECK(report_of([&] { (void)load_image(disk, "BADPIC"); }) ==
+        "FILE DAMAGED: BADPIC.IGDSIMAG (PICTURE LINE 2: NO LINE HOLDING ONLY '*' ENDS THE HEADER); "
+        "CURRENT IMAGE KEPT");
   // END APL may not give a picture image other points or another view.
   Image moved = *saved.image;
   moved.desim.projection = Projection::orthogonal;
