@@ -187,8 +187,8 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
   // A picture image is its drawing, made from its text as its DESIM says: neither is assigned.
   if (image.picture && (d != image.picture->desim || !image.points.empty()))
     return VariableProblem{points,
-                           fmt::format("{} IS A DUCT PICTURE: ITS {} AND {} ARE NOT "
-                                       "ASSIGNED (DISPLAY PICTURE MAKES IT AGAIN)",
+                           fmt::format("{} IS A DUCT PICTURE: {} AND {} CANNOT BE CHANGED "
+                                       "(DISPLAY PICTURE MAKES ANOTHER)",
                                        info(points).name, info(points).name, info(view).name)};
   const int p = static_cast<int>(d.projection);
   if (p < 1 || p > 4)
