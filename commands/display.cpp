@@ -1,15 +1,21 @@
-// DISPLAY FIRST | SECOND | FILE | INPUT | SURFACE (manual 4.4): a new current image, drawn.
+// DISPLAY FIRST | SECOND | FILE | INPUT | SURFACE (manual 4.4): a new current image, drawn;
+// and PICTURE, a DUCT 4.4 picture file projected like a surface (docs/exchange.md).
 #include "commands/answers.h"
 #include "commands/command.h"
+#include "commands/reports.h"
 #include "commands/view.h"
 
 #include <vector>
+
+#include <fmt/format.h>
+
+#include "workspace/exchange/duct.h"
 
 namespace igds {
 
 namespace {
 
-enum Option { first, second, file, input, surface };
+enum Option { first, second, file, input, surface, picture };
 
 constexpr Choice options[] = {
     {"FIRST", first, {}, "the copy kept by STORE FIRST"},
@@ -17,11 +23,40 @@ constexpr Choice options[] = {
     {"FILE", file, "[name]", "the image kept by STORE FILE in NAME.IGDSIMAG"},
     {"INPUT", input, "[projection [parameters]]", "the input points, border and tangents"},
     {"SURFACE", surface, "[projection [parameters]]", "the whole interpolated grid"},
+    {"PICTURE", picture, "[name [projection [parameters]]]",
+     "the DUCT picture NAME.DUCTPIC, projected like a surface"},
 };
 
 const Prompt file_prompt{"FILE NAME?",
                          "The name of an image kept with STORE FILE: 1 to 8 letters, digits\n"
                          "or $ # @ + - _ (type IGDSIMAG)."};
+
+const Prompt picture_prompt{"FILE NAME?",
+                            "The name of a DUCT picture file: 1 to 8 letters, digits or\n"
+                            "$ # @ + - _ (type DUCTPIC)."};
+
+// NAME.DUCTPIC read and drawn in space before the projection is asked: a damaged or foreign
+// picture is refused at once, with its line, and nothing changes.
+Image ask_picture(Context& ctx) {
+  // The name, then whatever followed it on the line answers the projection's questions.
+  const std::string name = ask_for(ctx, picture_prompt, [&](const std::vector<std::string>& w) {
+    const auto n = cms_name(w[0]);
+    if (!n) throw ParameterError(name_rule);
+    ctx.unread(std::vector<std::string>(w.begin() + 1, w.end()));
+    return *n;
+  });
+  constexpr std::string_view kept = "CURRENT IMAGE KEPT";
+  std::string text = read_user_file(ctx.disk(), name, "DUCTPIC", duct_max_file_bytes, kept);
+  Drawing3 drawing;
+  try {
+    drawing = duct_drawing(read_duct(text));
+  } catch (const DuctError& e) {
+    throw Report(fmt::format("FILE DAMAGED: {}.DUCTPIC ({}); {}", name, e.reason(), kept));
+  }
+  return ask_image(ctx, [&](const Workspace&, const View& view) {
+    return picture_image(name, text, drawing, view);
+  });
+}
 
 void show(Context& ctx, ImageRef image) {
   Workspace& ws = ctx.workspace();
@@ -52,12 +87,15 @@ void run_display(Context& ctx, const Choice* option) {
       if (!ws.has_surface()) throw Report(reports::surface_not_found);
       show(ctx, std::make_shared<const Image>(ask_image(ctx, surface_image)));
       return;
+    case picture:
+      show(ctx, std::make_shared<const Image>(ask_picture(ctx)));
+      return;
   }
 }
 
 // FILE NAME?, then the projection's questions.
 const std::vector<const Prompt*> questions = [] {
-  std::vector<const Prompt*> all{&file_prompt};
+  std::vector<const Prompt*> all{&file_prompt, &picture_prompt};
   for (const Prompt* q : view_questions()) all.push_back(q);
   return all;
 }();
@@ -65,19 +103,22 @@ const std::vector<const Prompt*> questions = [] {
 }  // namespace
 
 std::string_view image_kind_word(int what) {
-  return what == 0 ? options[input].word : what == 1 ? options[surface].word : "IMAGE";
+  return what == 0   ? options[input].word
+         : what == 1 ? options[surface].word
+         : what == 2 ? options[picture].word
+                     : "IMAGE";
 }
 
 extern const Command display_command{
     .name = "DISPLAY",
     .options = options,
     .follows = {},
-    .option_prompt = {"FIRST, SECOND, FILE, INPUT OR SURFACE?",
+    .option_prompt = {"FIRST, SECOND, FILE, INPUT, SURFACE OR PICTURE?",
                       "INPUT or SURFACE: project the current surface; FIRST, SECOND or FILE:\n"
-                      "show an image kept by STORE.",
+                      "show an image kept by STORE; PICTURE: project a DUCT picture file.",
                       options},
     .bad_option = reports::incorrect_parameter,  // the manual's 4.4
-    .summary = "projects and draws the input or the surface, or draws a kept image again",
+    .summary = "projects and draws the input, the surface or a DUCT picture, or a kept image",
     .long_help = R"(DISPLAY makes a new current image and draws it on the left of the
 screen with a short description beside it. The screen is not erased
 first (ERASE does that): images are drawn one over the other.
@@ -92,6 +133,12 @@ first (ERASE does that): images are drawn one over the other.
                            (IMAGE NOT FOUND if there is none).
   DISPLAY FILE [name]      the image kept by STORE FILE in
                            NAME.IGDSIMAG (FILE NOT FOUND).
+  DISPLAY PICTURE [name [projection [parameters]]]  the DUCT 4.4
+      picture file NAME.DUCTPIC (EXPORT DUCT writes them; so did
+      DUCT), projected like a surface: lines, conic arcs, Bezier
+      spans, marks and texts, dashes and colours as the device
+      draws them. A damaged picture gets FILE DAMAGED with the line
+      and what is wrong; the current image is kept.
 
 Projections and their parameters (what is not on the line is asked):
   CONIC x y z         perspective from the view point x y z towards
@@ -111,7 +158,8 @@ reason; typed at a question, the question is asked again.
 Examples:
   DISPLAY SURFACE ASSONOMETRIC 110 130 120
   D I C 100 -50 80        (DISPLAY INPUT CONIC, view point 100 -50 80)
-  D SU O XY)",
+  D SU O XY
+  DISPLAY PICTURE HULL ORTHOGONAL XY)",
     .questions = questions,
     .run = run_display,
 };

@@ -1,42 +1,148 @@
-// EXPORT SVG | TEK | HPGL [name]: the current image in a file for other programs.
+// EXPORT SVG | TEK | HPGL | DUCT | IGES | STEP [name]: the current image, or the current surface
+// exactly, in a file for other programs.
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <tuple>
+#include <utility>
+
 #include <fmt/format.h>
 
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/picture.h"
+#include "commands/reports.h"
 #include "devices/plot.h"
 #include "devices/svg.h"
 #include "devices/terminal.h"
 #include "workspace/error.h"
+#include "workspace/exchange/duct.h"
+#include "workspace/exchange/iges.h"
+#include "workspace/exchange/step.h"
+#include "workspace/exchange/surface_curves.h"
 
 namespace igds {
 
 namespace {
 
-enum Option { svg, tek, hpgl };
+enum Option { svg, tek, hpgl, duct, iges, step };
 
-// The option's word is also the file's type: NAME.SVG, NAME.TEK, NAME.HPGL.
+// The file types: the option's word for the pictures, the usual extensions for the exchange
+// files (DUCTPIC as docs/exchange.md names DUCT pictures; IGS and STP as CAD systems expect).
+constexpr std::string_view types[] = {"SVG", "TEK", "HPGL", "DUCTPIC", "IGS", "STP"};
+
+// After the three of the pictures, so that no abbreviation of them changes.
 constexpr Choice options[] = {
     {"SVG", svg, "[name]", "NAME.SVG, a picture any web browser shows"},
     {"TEK", tek, "[name]", "NAME.TEK, the bytes a Tektronix 4013 would receive"},
     {"HPGL", hpgl, "[name]", "NAME.HPGL, the plot PLOT would send"},
+    {"DUCT", duct, "[name]", "NAME.DUCTPIC, a DUCT 4.4 picture of the surface or the image"},
+    {"IGES", iges, "[name]", "NAME.IGS, the surface as exact B-spline patches (IGES 5.3)"},
+    {"STEP", step, "[name]", "NAME.STP, the same in STEP (ISO 10303-21, AP214)"},
 };
 
 const Prompt file_prompt{"FILE NAME?",
                          "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file\n"
                          "of that name and type is replaced)."};
 
+// The date the exchange files carry: now, local time; SOURCE_DATE_EPOCH (seconds since 1970,
+// UTC), when set, as reproducible builds date their files (the golden tests use it).
+Timestamp export_date() {
+  std::time_t t = std::time(nullptr);
+  bool utc = false;
+  if (const char* fixed = std::getenv("SOURCE_DATE_EPOCH"); fixed && *fixed) {
+    char* end = nullptr;
+    const long long seconds = std::strtoll(fixed, &end, 10);
+    if (*end == '\0' && seconds >= 0) {
+      t = static_cast<std::time_t>(seconds);
+      utc = true;
+    }
+  }
+  std::tm tm{};
+  if (utc ? gmtime_r(&t, &tm) == nullptr : localtime_r(&t, &tm) == nullptr) return {};
+  return {tm.tm_year + 1900, tm.tm_mon + 1, tm.tm_mday, tm.tm_hour, tm.tm_min, tm.tm_sec};
+}
+
+SurfaceInput input_of(const Workspace& ws) {
+  return {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg};
+}
+
+// What EXPORT DUCT writes (docs/decisions.md): the surface itself, in space and exactly, when
+// there is one and the current image is none or a DISPLAY INPUT or SURFACE of it; the current
+// image as projected (I7 = 2) otherwise (a picture, an image of another surface or from a file).
+bool duct_of_surface(const Workspace& ws) {
+  if (!ws.has_surface()) return false;
+  if (!ws.image) return true;
+  return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
+}
+
+// The bytes of EXPORT DUCT and what the report says they hold.
+std::pair<std::string, std::string_view> duct_file(const Workspace& ws, const std::string& name) {
+  const std::string date = duct_date(export_date());
+  if (duct_of_surface(ws)) {
+    const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
+    const std::string title =
+        fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
+    return {write_duct(duct_picture(drawing, {name, date, title})), "THE SURFACE IN SPACE"};
+  }
+  if (!ws.image) throw Report(reports::surface_not_found);
+  std::string title;
+  for (const std::string& line : describe(ws.image->desim, 72))
+    title += (title.empty() ? "" : " ") + line;
+  const Picture picture = picture_of(ws.image);
+  return {
+      write_duct(duct_picture(picture.drawing, {name, date, title}, ws.image->desim.projection)),
+      "THE IMAGE AS PROJECTED"};
+}
+
+std::string cad_file(const Workspace& ws, const std::string& name, Option option) {
+  if (!ws.has_surface()) throw Report(reports::surface_not_found);
+  const CadHeader header{name, fmt::format("{}.{}", name, types[option]), export_date(), "", ""};
+  return option == iges ? write_iges(input_of(ws), ws.patches, header)
+                        : write_step(input_of(ws), ws.patches, header);
+}
+
 void run_export(Context& ctx, const Choice* option) {
   const Workspace& ws = ctx.workspace();
-  if (!ws.image) throw Report(reports::image_not_found);
+  const auto code = static_cast<Option>(option->code);
+  const std::string_view type = types[code];
+  if (code == iges || code == step) {
+    if (!ws.has_surface()) throw Report(reports::surface_not_found);
+  } else if (code == duct) {
+    if (!ws.has_surface() && !ws.image) throw Report(reports::surface_not_found);
+  } else if (!ws.image) {
+    throw Report(reports::image_not_found);
+  }
   const std::string name = ask_file_name(ctx, file_prompt);
-  std::string_view type = option->word;
-  const Picture picture = picture_of(ws.image);
-  std::string bytes = option->code == svg   ? svg_of(picture)
-                      : option->code == tek ? tek_stream(picture, ctx.options().tek)
-                                            : plot_hpgl(picture, ctx.options().plot).hpgl;
+  std::string bytes;
+  std::string_view holds;
+  try {
+    switch (code) {
+      case svg:
+      case tek:
+      case hpgl: {
+        const Picture picture = picture_of(ws.image);
+        bytes = code == svg   ? svg_of(picture)
+                : code == tek ? tek_stream(picture, ctx.options().tek)
+                              : plot_hpgl(picture, ctx.options().plot).hpgl;
+        break;
+      }
+      case duct:
+        std::tie(bytes, holds) = duct_file(ws, name);
+        break;
+      case iges:
+      case step:
+        bytes = cad_file(ws, name, code);
+        break;
+    }
+  } catch (const DataError& e) {
+    throw worded(e, "NO FILE WRITTEN");
+  }
   write_user_file(ctx.disk(), name, type, bytes);
-  ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
+  if (holds.empty())
+    ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
+  else
+    ctx.say(fmt::format("{}.{}: {}, {} BYTES", name, type, holds, bytes.size()));
 }
 
 constexpr const Prompt* questions[] = {&file_prompt};
@@ -47,13 +153,14 @@ extern const Command export_command{
     .name = "EXPORT",
     .options = options,
     .follows = {},
-    .option_prompt = {"SVG, TEK OR HPGL?",
+    .option_prompt = {"SVG, TEK, HPGL, DUCT, IGES OR STEP?",
                       "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013\n"
-                      "stream) or HPGL (a plot).",
+                      "stream), HPGL (a plot), DUCT (a DUCT picture), IGES or STEP (CAD).",
                       options},
-    .summary = "writes the current image into NAME.SVG, NAME.TEK or NAME.HPGL",
+    .summary = "writes the current image (SVG, TEK, HPGL, DUCT) or the surface (DUCT, IGES, STEP)",
     .long_help = R"(EXPORT writes the current image (the one last displayed), with its
-description, to a file on the disk for other programs:
+description, or the current surface itself, to a file on the disk for
+other programs:
 
   EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid
                       out as on the Tektronix screen
@@ -62,15 +169,31 @@ description, to a file on the disk for other programs:
                       description); tek2plot and xterm -t read it
   EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a
                       plotter or hp2xx
+  EXPORT DUCT [name]  NAME.DUCTPIC, a DUCT 4.4 picture file: the
+                      surface's curves and stringers as exact Bezier
+                      spans in space, the input points and border
+                      tangents in colour 2, when the current image is
+                      of the current surface (or there is none); else
+                      the current image as projected (a picture read
+                      by DISPLAY PICTURE, an image of another surface
+                      or from a file)
+  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: each patch
+                      an exact bicubic B-spline surface, the input
+                      curves and stringers B-spline curves (IGES 5.3)
+  EXPORT STEP [name]  NAME.STP, the same geometry in STEP (AP214)
 
 A file of the same name and type is replaced. With no current image
-EXPORT says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits
-or $ # @ + - _ gets INCORRECT PARAMETER.
+EXPORT SVG, TEK or HPGL says IMAGE NOT FOUND; with no surface EXPORT
+IGES or STEP (and DUCT with no image either) says SURFACE NOT FOUND; a
+name that is not 1 to 8 letters, digits or $ # @ + - _ gets INCORRECT
+PARAMETER. The exchange files are dated now, or by SOURCE_DATE_EPOCH.
 
-Example (EX S is EXPORT SVG):
+Example (EX S is EXPORT SVG, EX I is EXPORT IGES):
   DISPLAY SURFACE ASSONOMETRIC 110 130 120
   EXPORT SVG HULL
-  EX T HULL)",
+  EX T HULL
+  EXPORT DUCT HULL
+  EX I HULL)",
     .questions = questions,
     .run = run_export,
 };

@@ -184,7 +184,33 @@ std::string describe_line(const Description& d) {
   return fmt::format("IMAGE: {}, {}", image_kind_word(d.what), projection);
 }
 
+namespace {
+
+// A DUCT picture's image: its drawing as projected, its name, and its colours (the 4013 draws
+// them all alike, so the description says which there are).
+Picture picture_of_duct(const Image& image) {
+  Picture pic;
+  pic.caption = describe(image.desim, caption_width);
+  if (!image.picture) return pic;
+  pic.drawing = image.picture->drawing;
+  pic.caption.insert(pic.caption.begin() + 1, fitted(image.picture->name, caption_width));
+  std::vector<int> pens;
+  for (const auto& item : pic.drawing.items())
+    if (std::find(pens.begin(), pens.end(), item.style.pen) == pens.end())
+      pens.push_back(item.style.pen);
+  std::sort(pens.begin(), pens.end());
+  if (pens.size() > 1) {
+    std::string line = "COLOURS";
+    for (int pen : pens) line += fmt::format(" {}", pen);
+    pic.caption.push_back(fitted(line, caption_width));
+  }
+  return pic;
+}
+
+}  // namespace
+
 Picture picture_of(std::shared_ptr<const Image> image) {
+  if (image->desim.what == 2) return picture_of_duct(*image);
   Picture pic;
   pic.caption = describe(image->desim, caption_width);
   Grid g = grid_of(image->points);

@@ -16,7 +16,10 @@ namespace igds {
 // each non-zero border tangent as an arrow (shaft and head, one polyline), the input points as
 // square marks. DISPLAY SURFACE: one polyline per curve, then one per stringer, reading the
 // image's own points (not copied). An IMAGE of a shape other than planes x rows x 2 gives no
-// lines (never a crash); non-finite points break a line.
+// lines (never a crash); non-finite points break a line. DISPLAY PICTURE (desim.what == 2): the
+// picture's projected drawing with its colours and dashes; the description adds the picture's
+// name after PICTURE, and COLOURS and the colours used when there are several (the 4013 draws
+// them alike).
 Picture picture_of(std::shared_ptr<const Image> image);
 Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);

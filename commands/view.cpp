@@ -141,7 +141,7 @@ View parse_view(Projection projection, std::span<const std::string> words) {
   throw ParameterError();
 }
 
-Image ask_image(Context& ctx, Image (*make)(const Workspace&, const View&)) {
+Image ask_image(Context& ctx, const std::function<Image(const Workspace&, const View&)>& make) {
   const Choice* projection =
       ask_for(ctx, projection_prompt, [&](const std::vector<std::string>& w) {
         const Choice* c = choose(projections, w[0]);

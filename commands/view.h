@@ -2,6 +2,7 @@
 // parameters, and asking for the image of the input points or of the interpolated grid.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -36,8 +37,8 @@ extern const Prompt projection_prompt;
 std::span<const Prompt* const> view_questions();
 
 // Asks for the projection and its parameters (from the command line, or question by question)
-// and makes the image with `make` (input_image or surface_image of workspace/images.h): a bad
-// answer typed at a question gets its report and the question again.
-Image ask_image(Context& ctx, Image (*make)(const Workspace&, const View&));
+// and makes the image with `make` (input_image or surface_image of workspace/images.h, or a
+// picture's): a bad answer typed at a question gets its report and the question again.
+Image ask_image(Context& ctx, const std::function<Image(const Workspace&, const View&)>& make);
 
 }  // namespace igds

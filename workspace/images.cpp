@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "workspace/drawing/project.h"
+#include "workspace/exchange/duct.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
 
@@ -88,6 +90,28 @@ Image surface_image(const Workspace& ws, const View& view) {
   image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view,
                            bounding_box_centre(as_vec3(ws.inppn)));
   image.drawn_from = recipe_of(ws, true);
+  return image;
+}
+
+Image picture_image(std::string name, std::string text, const View& view) {
+  const Drawing3 drawing = duct_drawing(read_duct(text));
+  return picture_image(std::move(name), std::move(text), drawing, view);
+}
+
+Image picture_image(std::string name, std::string text, const Drawing3& drawing, const View& view) {
+  const Box3 box = bounding_box(drawing);
+  const Vec3 centre = box.lo.x <= box.hi.x ? box.centre() : Vec3{};
+  if (view.projection == Projection::conic &&
+      box.contains({view.parameters[0], view.parameters[1], view.parameters[2]}))
+    throw DataError(DataError::Problem::view_inside_box);
+  auto picture = std::make_shared<ImagePicture>();
+  picture->name = std::move(name);
+  picture->text = std::move(text);
+  picture->desim = {2, view.projection, view.parameters};
+  picture->drawing = project(drawing, view, centre);
+  Image image;
+  image.desim = picture->desim;
+  image.picture = std::move(picture);
   return image;
 }
 

@@ -4,6 +4,8 @@
 // same function makes both, bit for bit.
 #pragma once
 
+#include <string>
+
 #include "workspace/kernels/project.h"
 #include "workspace/state.h"
 
@@ -15,7 +17,17 @@ namespace igds {
 Image input_image(const Workspace& ws, const View& view);
 Image surface_image(const Workspace& ws, const View& view);
 
-// The image `desim` describes (DESIM[1] 0 input, 1 surface) of the surface of `ws`.
+// DISPLAY PICTURE: the DUCT picture `text` of NAME.DUCTPIC drawn in space (duct_drawing of
+// workspace/exchange/duct.h) and seen as `view` says, CONIC towards the centre of the picture's
+// bounding box (control points included). DESIM[1] is 2; IMAGE is empty, the drawing is in
+// Image::picture. Throws DuctError for a damaged or foreign picture, DataError for a view the
+// picture does not allow (view_inside_box, behind_eye, ...).
+Image picture_image(std::string name, std::string text, const View& view);
+// The same, with the picture already read and drawn in space from `text` (`drawing`).
+Image picture_image(std::string name, std::string text, const Drawing3& drawing, const View& view);
+
+// The image `desim` describes (DESIM[1] 0 input, 1 surface) of the surface of `ws` (a picture
+// image, DESIM[1] 2, is made by picture_image from its text, not from a surface).
 Image image_of(const Workspace& ws, const Description& desim);
 
 }  // namespace igds

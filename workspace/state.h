@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "workspace/drawing/drawing.h"
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/project.h"
 
@@ -19,10 +20,20 @@ namespace igds {
 
 // DESIM: what an image shows and how it was projected.
 struct Description {
-  int what = 0;                                    // DESIM[1]: 0 input points, 1 surface
+  int what = 0;  // DESIM[1]: 0 input points, 1 surface, 2 a DUCT picture (DISPLAY PICTURE)
   Projection projection = Projection::orthogonal;  // DESIM[2]
   std::array<double, 3> parameters{};  // DESIM[3 4 5]: view point, angles, axis+angle, plane
   friend bool operator==(const Description&, const Description&) = default;
+};
+
+// The picture of DISPLAY PICTURE: the DUCT picture file's text (spec duct.md), which is what is
+// kept on the disk, and the drawing it makes seen as `desim` says, made once when the image is
+// made (workspace/images.h picture_image).
+struct ImagePicture {
+  std::string name;  // NAME of NAME.DUCTPIC
+  std::string text;
+  Description desim;
+  Drawing2 drawing;
 };
 
 // A projected image: IMAGE with its DESIM (or TEMP1/DEST1, TEMP2/DEST2).
@@ -44,9 +55,14 @@ struct Image {
   // (the session keeps a second name of that file instead of writing the image again).
   std::filesystem::path file;
   std::uint64_t file_sum = 0;
+  // DESIM[1] = 2 only: the picture (IMAGE is then empty: the picture is not a grid).
+  std::shared_ptr<const ImagePicture> picture;
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
-    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows;
+    const bool same_picture =
+        a.picture == b.picture || (a.picture && b.picture && a.picture->name == b.picture->name &&
+                                   a.picture->text == b.picture->text);
+    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows && same_picture;
   }
 };
 

@@ -179,8 +179,17 @@ std::optional<VariableProblem> surface_problem(const Workspace& ws, bool allow_e
 std::optional<VariableProblem> image_problem(const Image& image, Variable points) {
   const auto view = static_cast<Variable>(static_cast<int>(points) + 1);
   const auto& d = image.desim;
-  if (d.what != 0 && d.what != 1)
-    return VariableProblem{view, fmt::format("{}[1] IS NOT 0 OR 1", info(view).name)};
+  if (d.what == 2 && !image.picture)
+    return VariableProblem{
+        view, fmt::format("{}[1] IS 2 BUT THE IMAGE IS NOT A DUCT PICTURE", info(view).name)};
+  if (d.what != 0 && d.what != 1 && d.what != 2)
+    return VariableProblem{view, fmt::format("{}[1] IS NOT 0, 1 OR 2", info(view).name)};
+  // A picture image is its drawing, made from its text as its DESIM says: neither is assigned.
+  if (image.picture && (d != image.picture->desim || !image.points.empty()))
+    return VariableProblem{points,
+                           fmt::format("{} IS A DUCT PICTURE: {} AND {} CANNOT BE CHANGED "
+                                       "(DISPLAY PICTURE MAKES ANOTHER)",
+                                       info(points).name, info(points).name, info(view).name)};
   const int p = static_cast<int>(d.projection);
   if (p < 1 || p > 4)
     return VariableProblem{view,

@@ -1,12 +1,19 @@
 // Speed of the exchange files for the 500 x 500 surface of the "grid" benchmark: the DUCT picture
 // (with INTCU = INTST = 1: 999 curves and 999 stringers of Bézier spans, three million pixels,
 // within the reader's four million) written and read back, IGES and STEP written. MB/s counts
-// the file's bytes.
+// the file's bytes. Then the commands themselves, files written to a scratch disk: EXPORT DUCT,
+// EXPORT IGES and DISPLAY PICTURE of that file.
 #include <fmt/core.h>
 
-#include <cmath>
-#include <string>
+#include <stdlib.h>
 
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "commands/command.h"
+#include "commands/context.h"
 #include "tests/bench/bench.h"
 #include "tests/bench/inputs.h"
 #include "workspace/exchange/duct.h"
@@ -14,6 +21,11 @@
 #include "workspace/exchange/step.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/surface.h"
+
+namespace igds {
+extern const Command export_command;
+extern const Command display_command;
+}  // namespace igds
 
 namespace {
 
@@ -28,6 +40,72 @@ void report(const char* name, double seconds, std::size_t bytes) {
     fmt::print("{}_mb {:.1f}\n", name, double(bytes) / 1e6);
     fmt::print("{}_mb_per_s {:.1f}\n", name, double(bytes) / 1e6 / seconds);
   }
+}
+
+// A Context that answers from the command line only and shows nothing: the command's own work.
+class QuietContext final : public igds::Context {
+ public:
+  QuietContext(std::filesystem::path dir, igds::Workspace ws) : ws_(std::move(ws)), disk_(dir) {}
+  void run(const igds::Command& command, std::string_view option, std::vector<std::string> words) {
+    pending_ = std::move(words);
+    command.run(*this, igds::choose(command.options, option));
+  }
+  igds::Workspace& workspace() override { return ws_; }
+  const igds::Options& options() const override { return options_; }
+  const igds::Disk& disk() const override { return disk_; }
+  std::vector<std::string> ask(const igds::Prompt&) override {
+    if (pending_.empty()) throw igds::EndOfInput{};
+    return std::exchange(pending_, {});
+  }
+  void unread(std::vector<std::string> words) override {
+    words.insert(words.end(), pending_.begin(), pending_.end());
+    pending_ = std::move(words);
+  }
+  bool has_pending() const override { return !pending_.empty(); }
+  bool pending_from_command_line() const override { return !pending_.empty(); }
+  void say(std::string_view) override {}
+  void document(std::string_view) override {}
+  void report(std::string_view) override {}
+  void show(const igds::ImageRef&) override {}
+  void erase() override {}
+  void send_to_terminal(std::string_view) override {}
+  void end_session(bool) override {}
+
+ private:
+  igds::Workspace ws_;
+  igds::Options options_;
+  igds::Disk disk_;
+  std::vector<std::string> pending_;
+};
+
+// The commands on the surface, through the disk (files written crash-safely, fsync'd).
+void bench_commands(const Input& in, const igds::Surface& surface) {
+  char scratch[] = "/tmp/igds-bench-exchange-XXXXXX";
+  if (!mkdtemp(scratch)) return;
+  const std::filesystem::path dir = scratch;
+  igds::Workspace ws;
+  ws.nocur = in.nocur;
+  ws.nostr = in.nostr;
+  ws.intcu = ws.intst = 1;
+  ws.inppn = in.inppn;
+  ws.inptg = in.inptg;
+  ws.patches = surface.patches;
+  ws.intpn = surface.intpn;
+  QuietContext ctx(dir, std::move(ws));
+  const double duct =
+      igds::bench::best_seconds(3, [&] { ctx.run(igds::export_command, "DUCT", {"GRID"}); });
+  report("command_export_duct_500x500_int1", duct,
+         std::filesystem::file_size(dir / "GRID.DUCTPIC"));
+  const double iges =
+      igds::bench::best_seconds(3, [&] { ctx.run(igds::export_command, "IGES", {"GRID"}); });
+  report("command_export_iges_500x500", iges, std::filesystem::file_size(dir / "GRID.IGS"));
+  const double picture = igds::bench::best_seconds(3, [&] {
+    ctx.run(igds::display_command, "PICTURE", {"GRID", "ASSONOMETRIC", "110", "130", "120"});
+  });
+  report("command_display_picture_500x500_int1", picture,
+         std::filesystem::file_size(dir / "GRID.DUCTPIC"));
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
 }
 
 }  // namespace
@@ -73,4 +151,6 @@ IGDS_BENCH("exchange") {
     report(fmt::format("step_500x500_{}", suffix).c_str(), step, text.size());
     text = std::string();
   }
+
+  bench_commands(in, surface);
 }

@@ -107,12 +107,14 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS"));
   CHECK(resolved(command("DISPLAY").options) ==
-        table("F=FIRST I=INPUT S=SECOND FI=FIRST IN=INPUT SE=SECOND SU=SURFACE"));
+        table("F=FIRST I=INPUT P=PICTURE S=SECOND FI=FIRST IN=INPUT PI=PICTURE SE=SECOND "
+              "SU=SURFACE"));
   CHECK(resolved(command("PLOT").options) == table("E=EBCDIC S=SELECTRIC EB=EBCDIC SE=SELECTRIC"));
   CHECK(resolved(command("STORE").options) == table("F=FIRST S=SECOND FI=FIRST SE=SECOND"));
   CHECK(resolved(command("END").options) == table("A=APL C=CMS AP=APL CM=CMS"));
   CHECK(resolved(command("HELP").options) == table("L=LONG S=SHORT LO=LONG SH=SHORT"));
-  CHECK(resolved(command("EXPORT").options) == table("H=HPGL S=SVG T=TEK HP=HPGL SV=SVG TE=TEK"));
+  CHECK(resolved(command("EXPORT").options) ==
+        table("D=DUCT H=HPGL I=IGES S=SVG T=TEK DU=DUCT HP=HPGL IG=IGES ST=STEP SV=SVG TE=TEK"));
   CHECK(resolved(projection_choices()) ==
         table("A=ASSONOMETRIC C=CONIC I=ISOMETRIC O=ORTHOGONAL AS=ASSONOMETRIC AX=AXONOMETRIC "
               "CO=CONIC IS=ISOMETRIC OR=ORTHOGONAL"));

@@ -13,6 +13,7 @@
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
+#include "workspace/images.h"
 
 namespace igds::test::devices {
 
@@ -180,6 +181,52 @@ TEST_CASE("xmllint reads the SVG; its coordinates are the Tek ones, y flipped") 
       CHECK(svg.find(">" + line + "</text>") != std::string::npos);
     }
   }
+}
+
+TEST_CASE("a DUCT picture's dashes and colours: 4014 line styles, HP-GL pens and types, SVG") {
+  // The hand-written picture (tests/workspace/data): solid, dashed and chain-dashed lines and
+  // arcs in colours 1 to 5.
+  const Image im =
+      picture_image("HAND", read_file(source_dir() / "tests/workspace/data/hand_written.ductpic"),
+                    {Projection::orthogonal, {1, 0, 0}});
+  Recorder r;
+  draw_tek_display(picture_of(im), r, 1);
+  const std::vector<Style> styles = r.drawn_styles();
+  auto code = [](Dash dash) {
+    return dash == Dash::solid ? '`' : dash == Dash::dotted ? 'a' : dash == Dash::chain ? 'b' : 'c';
+  };
+  // The stream decoded here: every path where it was meant, in its line style.
+  const std::string stream = tek_stream(im, {10});
+  const TekDecoded d = decode_tek(stream, 10);
+  REQUIRE(d.paths == r.drawn());
+  REQUIRE(d.dashes.size() == styles.size());
+  int solid = 0, dashed = 0, chain = 0;
+  for (std::size_t k = 0; k < styles.size(); ++k) {
+    CHECK(d.dashes[k] == code(styles[k].dash));
+    solid += d.dashes[k] == '`';
+    dashed += d.dashes[k] == 'c';
+    chain += d.dashes[k] == 'b';
+  }
+  CHECK(solid > 0);
+  CHECK(dashed > 0);
+  CHECK(chain > 0);
+  // tek2plot draws the same vectors, the dashed ones dashed.
+  if (have_program("tek2plot")) {
+    const std::string svg = tek2plot_svg(stream);
+    CHECK(show(svg_paths(svg)) == show(in_tek2plot_units(r.drawn(), 1)));
+    CHECK(svg.find("stroke-dasharray") != std::string::npos);
+  }
+  // HP-GL: a pen per colour, LT2 dashed and LT4 chain-dashed; hp2xx reads it.
+  const Plot plot = plot_hpgl(im, {});
+  for (const char* instruction : {"SP2;", "SP3;", "SP4;", "SP5;", "LT2;", "LT4;", "LT;"})
+    CHECK(plot.hpgl.find(instruction) != std::string::npos);
+  // SVG: strokes in colour and dash arrays.
+  const std::string svg = svg_of(im);
+  for (const char* attribute : {"stroke=\"red\"", "stroke=\"magenta\"", "stroke-dasharray=\"8 4\"",
+                                "stroke-dasharray=\"12 3 2 3\""})
+    CHECK(svg.find(attribute) != std::string::npos);
+  IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
+  hp2xx(plot.hpgl);
 }
 
 }  // namespace igds::test::devices

@@ -89,14 +89,21 @@ struct Recorder : Device {
     std::string line;
   };
   std::vector<DevicePath> paths;
+  std::vector<Style> styles;  // each path's style
   std::vector<Text> texts;
   int pages = 0;
+  Style current;
+  void style(const Style& s) override { current = s; }
   void move(DevicePoint p) override {
-    if (!paths.empty() && paths.back().back() == p) return;
+    if (!paths.empty() && paths.back().back() == p && styles.back() == current) return;
     paths.push_back({p});
+    styles.push_back(current);
   }
   void draw(DevicePoint p) override {
-    if (paths.empty()) paths.push_back({p});
+    if (paths.empty()) {
+      paths.push_back({p});
+      styles.push_back(current);
+    }
     if (!(paths.back().back() == p)) paths.back().push_back(p);
   }
   void text(DevicePoint p, std::string_view line) override {
@@ -110,12 +117,20 @@ struct Recorder : Device {
       if (p.size() >= 2) out.push_back(p);
     return out;
   }
+  // The styles of drawn(), path by path.
+  std::vector<Style> drawn_styles() const {
+    std::vector<Style> out;
+    for (std::size_t k = 0; k < paths.size(); ++k)
+      if (paths[k].size() >= 2) out.push_back(styles[k]);
+    return out;
+  }
 };
 
 // What a 4010 (10 bits) or a 4014 (12 bits) does with a stream, decoded independently of the
 // encoder: graph-mode polylines, alpha text with the beam position where it started, pages.
 struct TekDecoded {
   std::vector<DevicePath> paths;  // one per dark move followed by vectors
+  std::vector<char> dashes;       // each path's 4014 line style: '`' solid, 'a' .. 'd' dashes
   std::vector<std::pair<DevicePoint, std::string>> texts;
   int pages = 0;
   bool ends_in_alpha = true;
@@ -127,6 +142,7 @@ inline TekDecoded decode_tek(std::string_view s, int bits) {
   bool graph = false, dark = false, after_lo_y = false;
   int hi_y = 0, lo_y = 0, hi_x = 0, extra = 0;
   int pending_lo = -1;  // a 0x60..0x7F byte not yet known to be LoY or Extra
+  char dash = '`';
   std::string* text = nullptr;
   for (std::size_t i = 0; i < s.size(); ++i) {
     unsigned char c = static_cast<unsigned char>(s[i]);
@@ -135,6 +151,14 @@ inline TekDecoded decode_tek(std::string_view s, int bits) {
         ++d.pages;
         graph = false;
         text = nullptr;
+      }
+      if (s[i + 1] >= '`' && s[i + 1] <= 'd' && s[i + 1] != dash) {
+        dash = s[i + 1];
+        // Vectors after the change are in the new style: a path of their own from the beam.
+        if (graph && !dark && d.beam) {
+          d.paths.push_back({*d.beam});
+          d.dashes.push_back(dash);
+        }
       }
       ++i;
       continue;
@@ -179,9 +203,10 @@ inline TekDecoded decode_tek(std::string_view s, int bits) {
       DevicePoint p = bits == 12 ? DevicePoint{(hi_x << 7) | (lo_x << 2) | (extra & 3),
                                                (hi_y << 7) | (lo_y << 2) | ((extra >> 2) & 3)}
                                  : DevicePoint{(hi_x << 5) | lo_x, (hi_y << 5) | lo_y};
-      if (dark || d.paths.empty())
+      if (dark || d.paths.empty()) {
         d.paths.push_back({p});
-      else
+        d.dashes.push_back(dash);
+      } else
         d.paths.back().push_back(p);
       dark = false;
       after_lo_y = false;
@@ -191,9 +216,14 @@ inline TekDecoded decode_tek(std::string_view s, int bits) {
   }
   d.ends_in_alpha = !graph;
   std::vector<DevicePath> drawn;
-  for (auto& p : d.paths)
-    if (p.size() >= 2) drawn.push_back(std::move(p));
+  std::vector<char> dashes;
+  for (std::size_t k = 0; k < d.paths.size(); ++k)
+    if (d.paths[k].size() >= 2) {
+      drawn.push_back(std::move(d.paths[k]));
+      dashes.push_back(d.dashes[k]);
+    }
   d.paths = std::move(drawn);
+  d.dashes = std::move(dashes);
   return d;
 }
 

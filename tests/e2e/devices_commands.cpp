@@ -242,7 +242,8 @@ TEST_CASE("PLOT, EXPORT, ERASE: help texts and options as the table needs them")
     return out;
   };
   CHECK(words(plot_command.options) == std::vector<std::string_view>{"SELECTRIC", "EBCDIC"});
-  CHECK(words(export_command.options) == std::vector<std::string_view>{"SVG", "TEK", "HPGL"});
+  CHECK(words(export_command.options) ==
+        std::vector<std::string_view>{"SVG", "TEK", "HPGL", "DUCT", "IGES", "STEP"});
   CHECK(erase_command.options.empty());
   CHECK(plot_command.long_help.find("no longer changes the output") != std::string_view::npos);
   for (const Command* c : {&plot_command, &export_command, &erase_command}) {

@@ -1,5 +1,6 @@
 #include "workspace/disk/disk.h"
 
+#include <algorithm>
 #include <cstring>
 #include <system_error>
 
@@ -9,6 +10,7 @@
 #include "workspace/disk/files.h"
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
+#include "workspace/exchange/duct.h"
 #include "workspace/kernels/limits.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
@@ -158,9 +160,13 @@ std::size_t max_surface_file_bytes() {
 std::size_t max_image_file_bytes() {
   // The points of max_grid_points, an arrow (6 numbers) for every border tangent of
   // max_input_points in a line.
-  return disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
-         array_bytes(3, 2 * double(max_grid_points)) +
-         array_bytes(2, 6 * 2 * (double(max_input_points) + 1));
+  const std::size_t grid = disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
+                           array_bytes(3, 2 * double(max_grid_points)) +
+                           array_bytes(2, 6 * 2 * (double(max_input_points) + 1));
+  // Or a DUCT picture: empty points and arrows, a name of up to 8 characters, the text.
+  const std::size_t picture = disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
+                              2 * array_bytes(0, 0) + 8 + 8 + 8 + duct_max_file_bytes;
+  return std::max(grid, picture);
 }
 
 void save_surface(const Disk& disk, std::string_view name, const Workspace& ws) {
@@ -231,6 +237,13 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   ws.patches = std::move(in.patches);
   ws.intpn = std::move(in.intpn);
   ws.changes.replaced(derived);
+}
+
+std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                           std::size_t max_bytes, std::string_view kept) {
+  const std::string n = checked(name);
+  const disk::MappedFile file = open_or_report(disk, n, type, max_bytes, kept);
+  return std::string(file.bytes());
 }
 
 void store_image(const Disk& disk, std::string_view name, const Image& image) {

@@ -6,6 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "workspace/exchange/duct.h"
+#include "workspace/images.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
 
 namespace igds::disk {
@@ -168,6 +171,13 @@ void Writer::image(const Image& image) {
   for (double p : image.desim.parameters) f64(p);
   array(image.points);
   array(image.arrows);
+  // A picture (DESIM[1] = 2, which no earlier igds wrote) adds its name and its DUCT text.
+  if (image.desim.what == 2 && image.picture) {
+    u64(image.picture->name.size());
+    bytes(image.picture->name);
+    u64(image.picture->text.size());
+    borrow(image.picture->text);
+  }
 }
 
 void Writer::append(const Writer& other) {
@@ -250,6 +260,21 @@ Image Reader::image(std::size_t max_elements) {
   for (double& p : image.desim.parameters) p = f64();
   image.points = array(max_elements);
   image.arrows = array(max_elements);
+  if (image.desim.what == 2) {
+    // bytes() refuses a length beyond what is left before anything is allocated.
+    std::string name(bytes(static_cast<std::size_t>(u64())));
+    std::string text(bytes(static_cast<std::size_t>(u64())));
+    const int p = static_cast<int>(image.desim.projection);
+    if (p < 1 || p > 4) throw Damage("FORMAT");
+    try {
+      image = picture_image(std::move(name), std::move(text),
+                            {image.desim.projection, image.desim.parameters});
+    } catch (const DuctError& e) {
+      throw Damage("PICTURE " + e.reason());
+    } catch (const DataError&) {
+      throw Damage("PICTURE: ITS VIEW");
+    }
+  }
   return image;
 }
 

@@ -60,7 +60,8 @@ class Writer {
   void borrow(std::string_view b);  // referred to
   // Rank (u32), shape (u64 each), element count (u64), the doubles (borrowed).
   void array(const Array& a);
-  // DESIM[1] DESIM[2] (i32), DESIM[3 4 5] (f64), the points, the arrows.
+  // DESIM[1] DESIM[2] (i32), DESIM[3 4 5] (f64), the points, the arrows; a picture
+  // (DESIM[1] = 2) then its name and its DUCT text, each a length (u64) and the bytes.
   void image(const Image& image);
   // Another writer's runs, after these.
   void append(const Writer& other);
@@ -90,7 +91,8 @@ class Reader {
   std::string_view bytes(std::size_t n);
   // At most `max_elements` elements (more: Damage "FORMAT").
   Array array(std::size_t max_elements = std::size_t(1) << 60);
-  // The image of IGDSIMAG and the session; its points and arrows within `max_elements`.
+  // The image of IGDSIMAG and the session; its points and arrows within `max_elements`. A
+  // picture is drawn again from its text (Damage "PICTURE LINE n: ..." when it does not read).
   Image image(std::size_t max_elements = std::size_t(1) << 60);
   std::size_t left() const { return in_.size() - pos_; }
   bool at_end() const { return pos_ == in_.size(); }

@@ -22,6 +22,9 @@ namespace igds {
 // The most pixels, and the most instructions, a picture may hold: counts above are refused before
 // anything is allocated for them.
 inline constexpr std::size_t duct_max_pixels = 4'000'000;
+// The largest picture file read (DISPLAY PICTURE): that many pixels and as many instructions in
+// their fields, with TU parameters (88 bytes for the two lines), and room for texts.
+inline constexpr std::size_t duct_max_file_bytes = 400u << 20;
 
 // The parts of an instruction code (duct.md, "Instruction code"), each with its value in the code.
 enum class DuctArc : std::uint16_t { line = 0, conic = 512, bezier = 1024 };  // IARC

@@ -111,16 +111,21 @@ void add_input(Drawing3& d, const SurfaceInput& in) {
 }  // namespace
 
 Drawing3 surface_curves(const SurfaceInput& in, const Surface& surface) {
-  require_patches(in, surface.patches);
+  return surface_curves(in, surface.patches, surface.intpn);
+}
+
+Drawing3 surface_curves(const SurfaceInput& in, const Array& patches_array,
+                        const Array& intpn_array) {
+  require_patches(in, patches_array);
   const std::size_t nc = in.nocur, ns = in.nostr, ic = in.intcu, is = in.intst;
   const GridShape g = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
-  require_shape("INTPN", &surface.intpn, {g.rows, g.cols, 3});
+  require_shape("INTPN", &intpn_array, {g.rows, g.cols, 3});
   require_shape("INPPN", in.inppn, {nc * ns, 3});
   require_shape("INPTG", in.inptg, {2 * (nc + ns), 4});
 
   const std::vector<Hermite> wv = blending(in.intcu), wu = blending(in.intst);
-  const double* patches = surface.patches.data();
-  const double* intpn = surface.intpn.data();
+  const double* patches = patches_array.data();
+  const double* intpn = intpn_array.data();
   auto grid = [&](std::size_t row, std::size_t col) {
     return Vec3::load(intpn + 3 * (row * g.cols + col));
   };

@@ -31,6 +31,8 @@ inline constexpr double input_mark_size = 3;
 //   DISPLAY INPUT draws its arrows), and a square at every input point (Role::point, index k).
 // Throws DataError (shape) when PATCHES or INTPN do not have the shapes of `input`.
 Drawing3 surface_curves(const SurfaceInput& input, const Surface& surface);
+// The same from PATCHES and INTPN where they are (the workspace's own, not copied).
+Drawing3 surface_curves(const SurfaceInput& input, const Array& patches, const Array& intpn);
 
 // The whole surface as one bicubic Bézier net: (3(NOCUR-1)+1) rows by (3(NOSTR-1)+1) columns of
 // x y z, row 3i + b and column 3j + a holding control (a, b) of patch (i, j) (a along the curves,

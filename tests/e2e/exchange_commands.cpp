@@ -1,0 +1,466 @@
+// EXPORT DUCT, IGES and STEP and DISPLAY PICTURE (commands/export.cpp, display.cpp): the golden
+// files of a small surface written by the command, a hand-written DUCT picture displayed and
+// decoded, the round trip EXPORT DUCT then DISPLAY PICTURE, damaged pictures refused with their
+// line, a picture image kept by STORE FILE and by the session, and the IGES file of the real igds
+// read by OpenCASCADE.
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "commands/command.h"
+#include "commands/picture.h"
+#include "devices/render.h"
+#include "devices/terminal.h"
+#include "tests/e2e/e2e_support.h"
+#include "tests/support/fake_context.h"
+#include "tests/support/process.h"
+#include "tests/support/skip.h"
+#include "tests/support/tek_decoder.h"
+#include "tests/workspace/exchange_support.h"
+#include "tests/workspace/occt_support.h"
+#include "workspace/disk/session.h"
+#include "workspace/drawing/project.h"
+#include "workspace/error.h"
+#include "workspace/exchange/duct.h"
+#include "workspace/exchange/iges.h"
+#include "workspace/exchange/step.h"
+#include "workspace/exchange/surface_curves.h"
+#include "workspace/images.h"
+#include "workspace/variables.h"
+
+namespace igds {
+extern const Command export_command;
+extern const Command display_command;
+extern const Command store_command;
+}  // namespace igds
+
+namespace igds::test::exchange {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// 22 SEP 1987 09:55:50 UTC, the date of the golden files.
+constexpr const char* golden_epoch = "559302950";
+const Timestamp golden_date{1987, 9, 22, 9, 55, 50};
+
+// SOURCE_DATE_EPOCH set while it lives.
+struct FixedDate {
+  FixedDate() { setenv("SOURCE_DATE_EPOCH", golden_epoch, 1); }
+  ~FixedDate() { unsetenv("SOURCE_DATE_EPOCH"); }
+};
+
+template <class F>
+std::string report_of(F f) {
+  try {
+    f();
+  } catch (const Error& r) {
+    return r.what();
+  }
+  return "";
+}
+
+// The workspace of the golden surface, as BUILD leaves it.
+Workspace workspace_of(const TestSurface& t) {
+  Workspace ws;
+  ws.nocur = t.input.nocur;
+  ws.nostr = t.input.nostr;
+  ws.intcu = t.input.intcu;
+  ws.intst = t.input.intst;
+  ws.inppn = t.inppn;
+  ws.inptg = t.inptg;
+  ws.patches = t.surface.patches;
+  ws.intpn = t.surface.intpn;
+  ws.changes.replaced();
+  return ws;
+}
+
+fs::path hand_written() {
+  return source_dir() / "tests/workspace/data/hand_written.ductpic";
+}
+
+// The shortest distance from `p` to the polyline.
+double distance_to(DevicePoint p, const DevicePath& path) {
+  double best = INFINITY;
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+    const double ax = path[k].x, ay = path[k].y, bx = path[k + 1].x, by = path[k + 1].y;
+    const double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((p.x - ax) * dx + (p.y - ay) * dy) / len2 : 0;
+    t = std::clamp(t, 0.0, 1.0);
+    best = std::min(best, std::hypot(p.x - (ax + t * dx), p.y - (ay + t * dy)));
+  }
+  if (path.size() == 1) best = std::hypot(p.x - path[0].x, p.y - path[0].y);
+  return best;
+}
+
+// The largest distance of a vertex of either path from the other path.
+double path_gap(const DevicePath& a, const DevicePath& b) {
+  double gap = 0;
+  for (DevicePoint p : a) gap = std::max(gap, distance_to(p, b));
+  for (DevicePoint p : b) gap = std::max(gap, distance_to(p, a));
+  return gap;
+}
+
+}  // namespace
+
+TEST_CASE("EXPORT DUCT, IGES and STEP of a small surface: the golden files, the reports") {
+  const FixedDate date;
+  const TestSurface t = golden_surface();
+  TempDir dir;
+  FakeContext ctx(dir.path(), workspace_of(t));
+  ctx.run(export_command, "DUCT", {"hull"});
+  ctx.run(export_command, "IGES", {"HULL"});
+  ctx.type({"hull"});
+  ctx.run(export_command, "STEP");
+  CHECK(ctx.prompts == std::vector<std::string>{"FILE NAME?"});
+  const std::string duct = read_file(dir.path() / "HULL.DUCTPIC");
+  const std::string iges = read_file(dir.path() / "HULL.IGS");
+  const std::string step = read_file(dir.path() / "HULL.STP");
+  check_golden("export_5x4.ductpic", duct);
+  check_golden("export_5x4.igs", iges);
+  check_golden("export_5x4.stp", step);
+  // What the libraries write for the same surface, name and date.
+  CHECK(duct == write_duct(duct_picture(
+                    surface_curves(t.input, t.surface),
+                    {"HULL", duct_date(golden_date), "SURFACE 5 X 4, INTCU 2, INTST 2"})));
+  CHECK(iges == write_iges(t.input, t.surface.patches, {"HULL", "HULL.IGS", golden_date, "", ""}));
+  CHECK(step == write_step(t.input, t.surface.patches, {"HULL", "HULL.STP", golden_date, "", ""}));
+  CHECK(duct.starts_with("IGDS PICTURE FILE HULL 22 SEP 1987 09:55:50\n"));
+  CHECK(iges.find("15H19870922.095550") != std::string::npos);
+  CHECK(ctx.said == std::vector<std::string>{
+                        fmt::format("HULL.DUCTPIC: THE SURFACE IN SPACE, {} BYTES", duct.size()),
+                        fmt::format("HULL.IGS: {} BYTES", iges.size()),
+                        fmt::format("HULL.STP: {} BYTES", step.size())});
+
+  // An image of the current surface changes nothing: the surface is written in space.
+  ctx.ws.image = std::make_shared<const Image>(
+      surface_image(ctx.ws, {Projection::assonometric, {110, 130, 120}}));
+  ctx.run(export_command, "DU", {"AGAIN"});
+  const std::string again = read_file(dir.path() / "AGAIN.DUCTPIC");
+  CHECK(again.substr(again.find('\n')) == duct.substr(duct.find('\n')));
+}
+
+TEST_CASE("EXPORT DUCT of an image not of the surface: the image as projected") {
+  const FixedDate date;
+  const TestSurface t = golden_surface();
+  TempDir dir;
+  FakeContext ctx(dir.path(), workspace_of(t));
+  const View view{Projection::assonometric, {110, 130, 120}};
+  Image image = surface_image(ctx.ws, view);
+  ctx.ws.image = std::make_shared<const Image>(image);
+  ctx.ws.changes.replaced();  // the surface changed since the image was drawn
+  ctx.run(export_command, "DUCT", {"IMAGE"});
+  const DuctPicture p = read_duct(read_file(dir.path() / "IMAGE.DUCTPIC"));
+  CHECK(p.counters[6] == 2);                                           // I7: in the plane
+  CHECK(p.counters[7] == static_cast<int>(Projection::assonometric));  // I8: DESIM[2]
+  CHECK(p.header.at(1) == "SURFACE ASSONOMETRIC 110 130 120");
+  // One straight-line instruction per curve and per stringer of the image, as it is drawn.
+  CHECK(p.instructions.size() == picture_of(ctx.ws.image).drawing.size());
+  CHECK(ctx.said.at(0).starts_with("IMAGE.DUCTPIC: THE IMAGE AS PROJECTED, "));
+  // No surface: the image alone.
+  ctx.ws = Workspace{};
+  ctx.ws.image = std::make_shared<const Image>(image);
+  ctx.run(export_command, "DUCT", {"ALONE"});
+  CHECK(read_file(dir.path() / "ALONE.DUCTPIC").find("SURFACE ASSONOMETRIC") != std::string::npos);
+}
+
+TEST_CASE("EXPORT DUCT, IGES, STEP: SURFACE NOT FOUND, INCORRECT PARAMETER, nothing written") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  for (const char* option : {"DUCT", "IGES", "STEP"})
+    CHECK(report_of([&] { ctx.run(export_command, option, {"A"}); }) == reports::surface_not_found);
+  // An image is enough for DUCT, never for IGES and STEP.
+  FakeContext with_image(dir.path());
+  with_image.ws.image = std::make_shared<const Image>(
+      surface_image(workspace_of(golden_surface()), {Projection::orthogonal, {1, 0, 0}}));
+  CHECK(report_of([&] { with_image.run(export_command, "IGES", {"A"}); }) ==
+        reports::surface_not_found);
+  FakeContext surface(dir.path(), workspace_of(golden_surface()));
+  CHECK(report_of([&] { surface.run(export_command, "IGES", {"A.B"}); }) ==
+        "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _");
+  CHECK(ctx.prompts.empty());
+  CHECK(fs::is_empty(dir.path()));
+}
+
+TEST_CASE("DISPLAY PICTURE: a hand-written picture with every curve, pen code, mark and dash") {
+  TempDir dir;
+  fs::copy_file(hand_written(), dir.path() / "HAND.DUCTPIC");
+  FakeContext ctx(dir.path());
+  ctx.type({"ORTHOGONAL", "XY"});
+  ctx.run(display_command, "PI", {"hand"});
+  CHECK(ctx.prompts == std::vector<std::string>{"PROJECTION?", "PLANE XY, YZ OR XZ?"});
+  REQUIRE(ctx.shown.size() == 1);
+  REQUIRE(ctx.ws.image);
+  const Image& image = *ctx.ws.image;
+  CHECK(image.desim.what == 2);
+  CHECK(image.desim.projection == Projection::orthogonal);
+  CHECK(!image_problem(image));
+  REQUIRE(image.picture);
+  CHECK(image.picture->name == "HAND");
+  const Picture picture = picture_of(ctx.ws.image);
+  // The drawing of the picture, seen from above: 21 items (tests/workspace/exchange_duct.cpp).
+  const Drawing3 space = duct_drawing(read_duct(read_file(hand_written())));
+  CHECK(picture.drawing.size() == space.size());
+  CHECK(picture.drawing.size() == 21);
+  CHECK(picture.caption ==
+        std::vector<std::string>{"PICTURE", "HAND", "ORTHOGONAL", "XY", "COLOURS 1 2 3 4 5"});
+  CHECK(describe_line(image.desim) == "IMAGE: PICTURE, ORTHOGONAL XY");
+
+  // The 4013 stream: dashed (ESC c) and chain-dashed (ESC b) vectors besides solid ones, the
+  // texts at their pixels, nothing off the screen.
+  const std::string stream = tek_stream(picture, {});
+  CHECK(stream.find("\x1b"
+                    "c") != std::string::npos);
+  CHECK(stream.find("\x1b"
+                    "b") != std::string::npos);
+  const TekDrawing decoded = decode_tek(stream);
+  CHECK(decoded.errors.empty());
+  REQUIRE(decoded.pages.size() == 2);  // before and after the stream's ESC FF
+  const TekPage& page = decoded.pages[1];
+  CHECK(page.segments.size() > 50);
+  std::vector<std::string> texts;
+  for (const TekText& text : page.texts) texts.push_back(text.text);
+  for (const char* expected : {"IGDS HAND-WRITTEN DUCT PICTURE FOR THE READER TESTS", "ORIGIN",
+                               "%mm", "PICTURE", "HAND", "COLOURS 1 2 3 4 5"})
+    CHECK(std::find(texts.begin(), texts.end(), expected) != texts.end());
+  for (const TekSegment& s : page.segments) {
+    CHECK(s.a.x >= 0);
+    CHECK(s.b.x <= 1023);
+  }
+
+  // STORE, then DISPLAY FIRST: the same picture.
+  ctx.run(store_command, "FIRST");
+  ctx.run(display_command, "FIRST");
+  CHECK(same_image(ctx.ws.image, ctx.ws.temp1));
+}
+
+TEST_CASE("DISPLAY PICTURE: the projection on the line, CONIC, and its refusals") {
+  TempDir dir;
+  fs::copy_file(hand_written(), dir.path() / "HAND.DUCTPIC");
+  FakeContext ctx(dir.path());
+  ctx.run(display_command, "PICTURE", {"HAND", "CONIC", "100", "-50", "80"});
+  REQUIRE(ctx.ws.image);
+  CHECK(ctx.ws.image->desim.projection == Projection::conic);
+  CHECK(ctx.prompts.empty());
+  // A view point inside the picture's box is refused at the question, and asked again.
+  ctx.type({"20 10 2", "200 100 80"});
+  ctx.run(display_command, "PICTURE", {"HAND", "CONIC"});
+  CHECK(ctx.reports == 1);
+  CHECK(ctx.ws.image->desim.parameters == std::array<double, 3>{200, 100, 80});
+}
+
+TEST_CASE("DISPLAY PICTURE: damaged, foreign and missing pictures refused, the image kept") {
+  TempDir dir;
+  fs::copy_file(hand_written(), dir.path() / "HAND.DUCTPIC");
+  std::string text = read_file(hand_written());
+  // Line 7, the second instruction: IARC 1536 does not decompose.
+  const std::size_t at = text.find("        2072      2");
+  REQUIRE(at != std::string::npos);
+  text.replace(at, 19, "        3584      2");
+  write_file(dir.path() / "BAD.DUCTPIC", text);
+  write_file(dir.path() / "FOREIGN.DUCTPIC", "<svg xmlns=\"http://www.w3.org/2000/svg\"/>\n");
+  FakeContext ctx(dir.path());
+  ctx.run(display_command, "PICTURE", {"HAND", "ORTHOGONAL", "XY"});
+  const Workspace before = ctx.ws;
+  CHECK(report_of([&] {
+          ctx.run(display_command, "PICTURE", {"BAD", "ORTHOGONAL", "XY"});
+        }) ==
+        "FILE DAMAGED: BAD.DUCTPIC (LINE 7: INSTRUCTION CODE 3584 DOES NOT DECOMPOSE); "
+        "CURRENT IMAGE KEPT");
+  const std::string foreign = report_of([&] {
+    ctx.run(display_command, "PICTURE", {"FOREIGN", "ORTHOGONAL", "XY"});
+  });
+  CHECK(foreign.starts_with("FILE DAMAGED: FOREIGN.DUCTPIC (LINE 2: "));
+  CHECK(foreign.ends_with("); CURRENT IMAGE KEPT"));
+  CHECK(report_of([&] { ctx.run(display_command, "PICTURE", {"NONE"}); }) ==
+        reports::file_not_found);
+  CHECK(ctx.ws == before);
+  CHECK(ctx.shown.size() == 1);
+  CHECK(ctx.prompts.empty());
+}
+
+TEST_CASE("round trip: EXPORT DUCT then DISPLAY PICTURE draws the surface's own vectors") {
+  const TestSurface t = golden_surface();
+  TempDir dir;
+  FakeContext ctx(dir.path(), workspace_of(t));
+  ctx.run(export_command, "DUCT", {"HULL"});
+  ctx.run(display_command, "PICTURE", {"HULL", "ASSONOMETRIC", "110", "130", "120"});
+  REQUIRE(ctx.ws.image);
+  const Drawing2 read_back = picture_of(ctx.ws.image).drawing;
+  const View view{Projection::assonometric, {110, 130, 120}};
+  const Drawing3 exact = surface_curves(t.input, t.surface);
+  const Drawing2 expected = project(exact, view, bounding_box(exact).centre());
+  REQUIRE(read_back.size() == expected.size());
+  // Both placed as the screen places the exact one: every vector within the flattening
+  // tolerance (and the rounding to device units) of the other's.
+  const Box screen{0, 0, 4095, 3119};
+  const Placement at = fit(expected, screen, 12);
+  const Rendering rendering{1, 0.2};
+  const Placed a = place(expected, at, screen, rendering);
+  const Placed b = place(read_back, at, screen, rendering);
+  REQUIRE(a.paths.size() == b.paths.size());
+  REQUIRE(a.paths.size() > 40);
+  double worst = 0;
+  for (std::size_t k = 0; k < a.paths.size(); ++k) {
+    CHECK(a.paths[k].style == b.paths[k].style);
+    worst = std::max(worst, path_gap(a.paths[k].points, b.paths[k].points));
+  }
+  MESSAGE(
+      fmt::format("round trip: {} paths, largest gap {:.3f} device units", a.paths.size(), worst));
+  // Each side flattened within 0.2 of its curve, each vertex rounded by up to 0.71.
+  CHECK(worst <= 2 * 0.2 + std::sqrt(2.0));
+}
+
+TEST_CASE("a picture image is kept by STORE FILE and by the session, and cannot be assigned") {
+  TempDir dir;
+  fs::copy_file(hand_written(), dir.path() / "HAND.DUCTPIC");
+  Workspace saved;
+  {
+    FakeContext ctx(dir.path());
+    ctx.run(display_command, "PICTURE", {"HAND", "ASSONOMETRIC", "110", "130", "120"});
+    ctx.run(store_command, "FILE", {"KEPT"});
+    ctx.run(store_command, "SECOND");
+    ctx.run(display_command, "FILE", {"KEPT"});
+    REQUIRE(ctx.ws.image->picture);
+    CHECK(same_image(ctx.ws.image, ctx.ws.temp2));
+    CHECK(picture_of(ctx.ws.image).drawing.size() == 21);
+    saved = ctx.ws;
+  }
+  // The session: written, then read back by a new igds (the file itself set aside first, so that
+  // the images must come from the session's own files).
+  const Disk disk(dir.path());
+  {
+    Session session(disk);
+    session.load();
+    session.save(saved);
+  }
+  fs::rename(dir.path() / "KEPT.IGDSIMAG", dir.path() / "KEPT.OLD");
+  fs::remove(dir.path() / "HAND.DUCTPIC");
+  {
+    Session session(disk);
+    Workspace back = session.load();
+    session.complete(back);
+    CHECK(session.notices().empty());
+    REQUIRE(back.image);
+    REQUIRE(back.temp2);
+    CHECK(*back.image == *saved.image);
+    CHECK(*back.temp2 == *saved.temp2);
+    REQUIRE(back.temp2->picture);
+    CHECK(picture_of(back.temp2).drawing.size() == 21);
+  }
+  // An IGDSIMAG file whose picture does not read (written whole, so its checksum is right).
+  Image bad;
+  bad.desim = {2, Projection::orthogonal, {1, 0, 0}};
+  bad.picture =
+      std::make_shared<const ImagePicture>(ImagePicture{"BAD", "NOT A PICTURE\n", {}, {}});
+  store_image(disk, "BADPIC", bad);
+  CHECK(report_of([&] { (void)load_image(disk, "BADPIC"); }) ==
+        "FILE DAMAGED: BADPIC.IGDSIMAG (PICTURE LINE 2: NO LINE HOLDING ONLY '*' ENDS THE HEADER); "
+        "CURRENT IMAGE KEPT");
+  // END APL may not give a picture image other points or another view.
+  Image moved = *saved.image;
+  moved.desim.projection = Projection::orthogonal;
+  CHECK(image_problem(moved));
+  Image plain;
+  plain.desim = {2, Projection::orthogonal, {1, 0, 0}};
+  CHECK(image_problem(plain));
+}
+
+namespace {
+
+// BUILD typed for a test surface: one point a line, the tangents in INPTG's row order (corners
+// say along the curve, 1, or the stringer, 0), then INTCU and INTST.
+std::string build_commands(const TestSurface& t) {
+  const int nc = t.input.nocur, ns = t.input.nostr;
+  std::string s = fmt::format("BUILD\n{} {}\n", nc, ns);
+  for (int k = 0; k < nc * ns; ++k) {
+    const double* p = t.inppn.data() + 3 * k;
+    s += fmt::format("{} {:.15f} {:.15f} {:.15f}\n", k + 1, p[0], p[1], p[2]);
+  }
+  s += "\n";
+  auto corner = [&](int k) { return k == 1 || k == ns || k == (nc - 1) * ns + 1 || k == nc * ns; };
+  for (int r = 0; r < 2 * (nc + ns); ++r) {
+    const double* tg = t.inptg.data() + 4 * r;
+    const bool along_curve = r < 2 * nc;
+    const int k = along_curve ? (r / 2) * ns + (r % 2 ? ns : 1)
+                              : ((r - 2 * nc) % 2 ? (nc - 1) * ns : 0) + (r - 2 * nc) / 2 + 1;
+    s += fmt::format("{} {:.15f} {:.15f} {:.15f}", k, tg[0], tg[1], tg[2]);
+    s += corner(k) ? fmt::format(" {}\n", along_curve ? 1 : 0) : "\n";
+  }
+  s += fmt::format("\n{} {}\n", t.input.intcu, t.input.intst);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("igds: EXPORT IGES and STEP read by OpenCASCADE, every INTPN point found again") {
+  TempDir disk;
+  const auto draw = find_draw(disk.path());
+  IGDS_SKIP_UNLESS(draw.has_value(),
+                   "OpenCASCADE's DRAW (occt-draw or DRAWEXE) is not installed: scripts/setup "
+                   "--test installs it");
+  const TestSurface t = golden_surface();
+  const RunResult run = run_commands(
+      disk, build_commands(t) + "EXPORT IGES HULL\nEXPORT STEP HULL\nEXPORT DUCT HULL\n");
+  INFO(run.out);
+  CHECK(run.status == 0);
+  CHECK(run.out.find("INCORRECT") == std::string::npos);
+  REQUIRE(fs::exists(disk.path() / "HULL.IGS"));
+  REQUIRE(fs::exists(disk.path() / "HULL.STP"));
+  CHECK(run.out.find("HULL.DUCTPIC: THE SURFACE IN SPACE, ") != std::string::npos);
+  for (bool step : {false, true}) {
+    CAPTURE(step);
+    const std::vector<Probe> probes = probes_of(t, SurfaceForm::patches, 1);
+    const Result r =
+        run_draw(*draw, disk.path(), disk.path() / (step ? "HULL.STP" : "HULL.IGS"), step, probes);
+    INFO(r.all.substr(0, 4000));
+    CHECK(no_messages(r.transfer_checks));
+    CHECK(no_messages(r.model_checks));
+    CHECK(r.shape_check.find("This shape seems to be valid") != std::string::npos);
+    CHECK(r.counts.find("FACE      : 12\n") != std::string::npos);
+    const double worst = worst_error(t, probes, r);
+    MESSAGE(fmt::format("igds EXPORT {}: {} probes, largest relative error {:.2e}",
+                        step ? "STEP" : "IGES", probes.size(), worst));
+    CHECK(worst <= 1e-9);
+  }
+}
+
+TEST_CASE("igds: DISPLAY PICTURE on the 4013, kept by the session for the next igds") {
+  TempDir disk;
+  fs::copy_file(hand_written(), disk.path() / "HAND.DUCTPIC");
+  write_file(disk.path() / "first.igds", "DISPLAY PICTURE HAND ORTHOGONAL XY\nSTORE FIRST\n");
+  RunOptions options;
+  options.timeout_seconds = 60;
+  const RunResult first = run_igds(
+      {"--term", "tek", "--disk", disk.path().string(), (disk.path() / "first.igds").string()},
+      options);
+  CHECK(first.status == 0);
+  // The whole session is a 4013 stream: the picture's dashed (ESC c) and chain-dashed (ESC b)
+  // vectors, its texts, and the description.
+  CHECK(first.out.find("\x1b"
+                       "c") != std::string::npos);
+  CHECK(first.out.find("\x1b"
+                       "b") != std::string::npos);
+  const TekDrawing decoded = decode_tek(first.out);
+  CHECK(decoded.errors.empty());
+  std::string texts;
+  for (const TekPage& page : decoded.pages)
+    for (const TekText& text : page.texts) texts += text.text + "\n";
+  CHECK(texts.find("ORIGIN\n") != std::string::npos);
+  CHECK(texts.find("COLOURS 1 2 3 4 5\n") != std::string::npos);
+  // The next igds has the picture as IMAGE and TEMP1; EXPORT DUCT writes it as projected.
+  fs::remove(disk.path() / "HAND.DUCTPIC");
+  const RunResult next = run_commands(disk, "DISPLAY FIRST\nEXPORT DUCT AGAIN\n");
+  INFO(next.out);
+  CHECK(next.out.find("IMAGE: PICTURE, ORTHOGONAL XY") != std::string::npos);
+  CHECK(next.out.find("AGAIN.DUCTPIC: THE IMAGE AS PROJECTED, ") != std::string::npos);
+  const DuctPicture again = read_duct(read_file(disk.path() / "AGAIN.DUCTPIC"));
+  CHECK(again.counters[6] == 2);
+  CHECK(again.texts.size() == 3);
+}
+
+}  // namespace igds::test::exchange

@@ -1,0 +1,194 @@
+// OpenCASCADE's DRAW test harness as a reader of igds's IGES and STEP files (Debian's occt-draw,
+// DRAWEXE elsewhere; scripts/setup --test installs it): finding it, running a check script on a
+// file, and the probes where igds knows the answer. Shared by tests/workspace/exchange_occt.cpp
+// and the end-to-end EXPORT IGES test (tests/e2e/exchange_commands.cpp).
+#pragma once
+
+#include <doctest/doctest.h>
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/process.h"
+#include "tests/workspace/exchange_support.h"
+#include "workspace/exchange/iges.h"
+#include "workspace/kernels/fit.h"
+
+namespace igds::test::exchange {
+
+namespace fs = std::filesystem;
+
+struct Draw {
+  std::string program;
+  std::map<std::string, std::string> env;
+};
+
+// The DRAW program, and a library path where the plugins `pload` opens by their unversioned
+// names can be found (Debian ships only libTK*.so.7 without its -dev packages).
+inline std::optional<Draw> find_draw(const fs::path& scratch) {
+  Draw d;
+  for (const char* name : {"DRAWEXE", "occt-draw-7.6", "occt-draw"}) {
+    if (have_program(name)) {
+      d.program = name;
+      break;
+    }
+  }
+  if (d.program.empty()) return std::nullopt;
+  const fs::path libs = scratch / "lib";
+  fs::create_directories(libs);
+  for (const char* plugin : {"libTKTopTest", "libTKXSDRAW"}) {
+    for (const char* dir : {"/usr/lib/x86_64-linux-gnu", "/usr/lib/aarch64-linux-gnu", "/usr/lib64",
+                            "/usr/lib", "/usr/local/lib"}) {
+      std::error_code ec;
+      if (fs::exists(fs::path(dir) / (std::string(plugin) + ".so"), ec)) break;
+      bool linked = false;
+      for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string file = entry.path().filename().string();
+        if (file.rfind(std::string(plugin) + ".so.", 0) == 0) {
+          fs::create_symlink(entry.path(), libs / (std::string(plugin) + ".so"), ec);
+          linked = true;
+          break;
+        }
+      }
+      if (linked) break;
+    }
+  }
+  const char* old = std::getenv("LD_LIBRARY_PATH");
+  d.env["LD_LIBRARY_PATH"] = libs.string() + (old && *old ? std::string(":") + old : "");
+  return d;
+}
+
+// One evaluation: a surface (face number f, 1-based) at (u, v), or a curve (edge e) at t.
+struct Probe {
+  bool surface = true;
+  std::size_t item = 0;
+  double u = 0, v = 0;
+  Vec3 expected;
+};
+
+struct Result {
+  std::string transfer_checks, model_checks, shape_check, counts;
+  std::vector<Vec3> values;
+  std::string all;
+};
+
+// Reads `file` with igesread or stepread, then evaluates the probes on the sub-shapes of the
+// result in order (faces, then edges, as the file lists its entities).
+inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& file, bool step,
+                       const std::vector<Probe>& probes) {
+  std::string tcl = "pload MODELING DATAEXCHANGEKERNEL\n";
+  if (step)
+    tcl += fmt::format("set read [stepread {{{}}} r *]\nrenamevar r_1 shape\n", file.string());
+  else
+    tcl += fmt::format("set read [igesread {{{}}} shape *]\n", file.string());
+  tcl +=
+      "puts \"READ-BEGIN\\n$read\\nREAD-END\"\n"
+      "puts \"TRANSFER-BEGIN\\n[tpstat c]\\nTRANSFER-END\"\n"
+      "puts \"MODEL-BEGIN\\n[data c]\\nMODEL-END\"\n"
+      "puts \"SHAPE-BEGIN\\n[checkshape shape]\\nSHAPE-END\"\n"
+      "puts \"COUNT-BEGIN\\n[nbshapes shape]\\nCOUNT-END\"\n"
+      "explode shape\n"
+      "set probes {\n";
+  for (const Probe& p : probes)
+    tcl += fmt::format("{{{} {} {:.17g} {:.17g}}}\n", p.surface ? "s" : "c", p.item, p.u, p.v);
+  tcl +=
+      "}\n"
+      "foreach p $probes {\n"
+      "  lassign $p kind k u v\n"
+      "  if {![info exists made($kind$k)]} {\n"
+      "    if {$kind == \"s\"} { mksurface g$kind$k shape_$k } else { mkcurve g$kind$k shape_$k }\n"
+      "    set made($kind$k) 1\n"
+      "  }\n"
+      "  if {$kind == \"s\"} { svalue g$kind$k $u $v x y z } else { cvalue g$kind$k $u x y z }\n"
+      "  puts \"VALUE [dval x] [dval y] [dval z]\"\n"
+      "}\n"
+      "exit\n";
+  const fs::path script = dir / (step ? "check_step.tcl" : "check_iges.tcl");
+  write_file(script, tcl);
+  RunOptions options;
+  options.env = draw.env;
+  options.cwd = dir;
+  options.timeout_seconds = 600;
+  const RunResult run = igds::test::run({draw.program, "-b", "-f", script.string()}, options);
+  Result r;
+  r.all = run.out + run.err;
+  auto between = [&](const std::string& begin, const std::string& end) {
+    const std::size_t a = run.out.find(begin + "\n"), b = run.out.find("\n" + end);
+    return a == std::string::npos || b == std::string::npos || b < a
+               ? std::string()
+               : run.out.substr(a + begin.size() + 1, b - a - begin.size() - 1);
+  };
+  r.transfer_checks = between("TRANSFER-BEGIN", "TRANSFER-END");
+  r.model_checks = between("MODEL-BEGIN", "MODEL-END");
+  r.shape_check = between("SHAPE-BEGIN", "SHAPE-END");
+  r.counts = between("COUNT-BEGIN", "COUNT-END");
+  std::istringstream lines(run.out);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("VALUE ", 0) != 0) continue;
+    std::istringstream values(line.substr(6));
+    Vec3 v;
+    values >> v.x >> v.y >> v.z;
+    r.values.push_back(values ? v : Vec3{NAN, NAN, NAN});
+  }
+  return r;
+}
+
+// Probes at INTPN points (every `step`th) on the faces of the patches (or the one surface), and
+// at the input points on the curves and stringers, edges numbered after the faces.
+inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std::size_t step) {
+  const auto& in = t.input;
+  const std::size_t nc = in.nocur, ns = in.nostr, ic = in.intcu, is = in.intst;
+  const GridShape g = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
+  std::vector<Probe> probes;
+  for (std::size_t k = 0; k < g.rows * g.cols; k += step) {
+    const std::size_t row = k / g.cols, col = k % g.cols;
+    const std::size_t i = std::min(row / (ic + 1), nc - 2), j = std::min(col / (is + 1), ns - 2);
+    Probe p;
+    p.item = form == SurfaceForm::one ? 1 : i * (ns - 1) + j + 1;
+    p.u = double(j) + double(col - j * (is + 1)) / double(is + 1);
+    p.v = double(i) + double(row - i * (ic + 1)) / double(ic + 1);
+    p.expected = Vec3::load(t.surface.intpn.data() + 3 * k);
+    probes.push_back(p);
+  }
+  const std::size_t faces = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
+  for (std::size_t i = 0; i < nc; ++i) {
+    double t_k = 0;
+    for (std::size_t j = 0; j < ns; ++j) {
+      const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
+      if (j > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * (i * ns + j - 1)));
+      probes.push_back({false, faces + i + 1, t_k, 0, p});
+    }
+  }
+  for (std::size_t j = 0; j < ns; ++j) {
+    double t_k = 0;
+    for (std::size_t i = 0; i < nc; ++i) {
+      const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
+      if (i > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * ((i - 1) * ns + j)));
+      probes.push_back({false, faces + nc + j + 1, t_k, 0, p});
+    }
+  }
+  return probes;
+}
+
+// The largest error of the probes, relative to the largest coordinate of INTPN.
+inline double worst_error(const TestSurface& t, const std::vector<Probe>& probes, const Result& r) {
+  REQUIRE(r.values.size() == probes.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < probes.size(); ++k) {
+    const double e = norm(r.values[k] - probes[k].expected);
+    worst = std::max(worst, std::isfinite(e) ? e : INFINITY);
+  }
+  return worst / largest_coordinate(t.surface.intpn);
+}
+
+inline bool no_messages(const std::string& checks) {
+  return checks.find("Nb Total:0  for 0 items") != std::string::npos;
+}
+
+}  // namespace igds::test::exchange
