@@ -68,12 +68,15 @@ TEST_CASE("Session::save killed -9 at random moments: old or new, never torn") {
       }
     }
     ::close(done[1]);
+    int last = first - 1, k = 0;
+    // Every other kill waits for a save to have returned first, so that kills land in the
+    // middle of a session's life on a slow or loaded machine too, not only at its start.
+    if (kill % 2 == 1 && ::read(done[0], &k, sizeof k) == sizeof k) last = k;
     std::this_thread::sleep_for(std::chrono::microseconds(micros(random)));
     ::kill(child, SIGKILL);
     int status = 0;
     ::waitpid(child, &status, 0);
     REQUIRE(WIFSIGNALED(status));
-    int last = first - 1, k = 0;
     while (::read(done[0], &k, sizeof k) == sizeof k) last = k;
     ::close(done[0]);
 
@@ -103,5 +106,5 @@ TEST_CASE("Session::save killed -9 at random moments: old or new, never torn") {
     CHECK(vars <= 4);  // INTPN, PATCHES, IMAGE, TEMP1 at most
   }
   MESSAGE(kills << " kills; " << advanced << " of them after at least one save had returned");
-  CHECK(advanced > kills / 10);
+  CHECK(advanced >= kills / 2);
 }
