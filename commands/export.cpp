@@ -35,8 +35,10 @@ void run_export(Context& ctx, const Choice* option) {
   std::string bytes = option->code == svg   ? svg_of(picture)
                       : option->code == tek ? tek_stream(picture, ctx.options().tek)
                                             : plot_hpgl(picture, ctx.options().plot).hpgl;
+  const bool existed = ctx.disk().exists(name, type);
   write_user_file(ctx.disk(), name, type, bytes);
   ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
+  if (existed) ctx.say(fmt::format("{}.{} REPLACED", name, type));
 }
 
 constexpr const Prompt* questions[] = {&file_prompt};
@@ -63,9 +65,10 @@ description, to a file on the disk for other programs:
   EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a
                       plotter or hp2xx
 
-A file of the same name and type is replaced. With no current image
-EXPORT says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits
-or $ # @ + - _ gets INCORRECT PARAMETER.
+A file of the same name and type is replaced, and EXPORT says so
+(HULL.SVG REPLACED). With no current image EXPORT says IMAGE NOT
+FOUND; a name that is not 1 to 8 letters, digits or $ # @ + - _ gets
+INCORRECT PARAMETER.
 
 Example (EX S is EXPORT SVG):
   DISPLAY SURFACE ASSONOMETRIC 110 130 120

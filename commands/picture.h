@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "workspace/drawing/drawing.h"
@@ -14,9 +15,12 @@ namespace igds {
 
 // DISPLAY INPUT (desim.what == 0): the border of the NOCUR x NOSTR grid as one closed polyline,
 // each non-zero border tangent as an arrow (shaft and head, one polyline), the input points as
-// square marks. DISPLAY SURFACE: one polyline per curve, then one per stringer, reading the
-// image's own points (not copied). An IMAGE of a shape other than planes x rows x 2 gives no
-// lines (never a crash); non-finite points break a line.
+// square marks, then their numbers as texts (Role::label, index k) beside them. DISPLAY SURFACE:
+// one polyline per curve, then one per stringer, reading the image's own points (not copied).
+// An IMAGE of a shape other than planes x rows x 2 gives no lines (never a crash); non-finite
+// points break a line. A zoomed image (Image::window): only what lies inside the window, lines
+// cut at its edges, and the window's corners as two one-point polylines (they draw nothing) so
+// that the window is what gets scaled to the screen.
 Picture picture_of(std::shared_ptr<const Image> image);
 Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);
@@ -28,6 +32,12 @@ std::vector<std::string> describe(const Description& desim, std::size_t width);
 // A one-line description of an image (what, projection, parameters), as the none terminal
 // mode prints it: IMAGE: SURFACE, ASSONOMETRIC 110 130 120.
 std::string describe_line(const Description& desim);
+
+// The same for an image, saying when it is zoomed: the caption gets a line ZOOMED, the line
+// `, ZOOMED TO x0 y0 x1 y1` (the window's corners).
+std::vector<std::string> image_caption(const Image& image, std::size_t width);
+std::string image_line(const Image& image);
+inline constexpr std::string_view zoomed_word = "ZOOMED";
 
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);

@@ -44,9 +44,14 @@ struct Image {
   // (the session keeps a second name of that file instead of writing the image again).
   std::filesystem::path file;
   std::uint64_t file_sum = 0;
+  // ZOOM: the part shown, corners x0 y0 x1 y1 (x0 < x1, y0 < y1) in the units of `points`;
+  // nullopt: the whole image. A way of looking at the image, not kept on the disk
+  // (docs/decisions.md).
+  std::optional<std::array<double, 4>> window;
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
-    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows;
+    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows &&
+           a.window == b.window;
   }
 };
 
