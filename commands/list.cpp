@@ -150,10 +150,7 @@ std::string image_lines(const Workspace& ws, const ImageRef& image, std::string_
                                     : "");
   if (!image->file.empty())
     out += indent + fmt::format("FROM {}\n", image->file.filename().string());
-  if (const auto& w = image->window)
-    out +=
-        indent + fmt::format("{} TO {} {} {} {}\n", zoomed_word, plain_number((*w)[0]),
-                             plain_number((*w)[1]), plain_number((*w)[2]), plain_number((*w)[3]));
+  if (const auto& w = image->window) out += indent + zoom_words(*w) + '\n';
   return out;
 }
 

@@ -290,11 +290,16 @@ std::vector<std::string> image_caption(const Image& image, std::size_t width) {
   return lines;
 }
 
+std::string zoom_words(const std::array<double, 4>& window) {
+  // Five significant digits: a window picked on the screen is not known closer than that.
+  auto number = [](double v) { return plain_number(std::stod(fmt::format("{:.5g}", v))); };
+  return fmt::format("{} TO {} {} {} {}", zoomed_word, number(window[0]), number(window[1]),
+                     number(window[2]), number(window[3]));
+}
+
 std::string image_line(const Image& image) {
   std::string line = describe_line(image.desim);
-  if (const auto& w = image.window)
-    line += fmt::format(", {} TO {} {} {} {}", zoomed_word, plain_number((*w)[0]),
-                        plain_number((*w)[1]), plain_number((*w)[2]), plain_number((*w)[3]));
+  if (const auto& w = image.window) line += ", " + zoom_words(*w);
   return line;
 }
 

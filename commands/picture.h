@@ -3,6 +3,7 @@
 // and the description written beside them. The devices draw the result without knowing grids.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -38,6 +39,8 @@ std::string describe_line(const Description& desim);
 std::vector<std::string> image_caption(const Image& image, std::size_t width);
 std::string image_line(const Image& image);
 inline constexpr std::string_view zoomed_word = "ZOOMED";
+// ZOOMED TO x0 y0 x1 y1, the window's corners to five significant digits.
+std::string zoom_words(const std::array<double, 4>& window);
 
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);

@@ -207,11 +207,14 @@ void Interpreter::show(const ImageRef& image) {
 }
 
 std::optional<DevicePoint> Interpreter::pick(const Prompt& prompt) {
-  const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
-  if (e.kind == Event::Kind::interrupt) throw Abandon{};
-  if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
-  if (e.kind != Event::Kind::line) throw EndOfInput{};
-  return std::nullopt;
+  asking_ = &prompt;
+  for (;;) {
+    const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
+    if (e.kind == Event::Kind::interrupt) throw Abandon{};
+    if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
+    if (e.kind != Event::Kind::line) throw EndOfInput{};
+    if (!answer_help(split_words(e.text), prompt)) return std::nullopt;
+  }
 }
 
 void Interpreter::erase() {
