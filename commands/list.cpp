@@ -35,11 +35,15 @@ std::string column(double value) {
 std::string point_listing(const Workspace& ws) {
   std::string out = fmt::format("INPUT POINTS: {} CURVES OF {} POINTS\n", ws.nocur, ws.nostr);
   out += fmt::format("{:>5}{:>6}{:>6}{:>14}{:>14}{:>14}\n", "K", "CURVE", "PLACE", "X", "Y", "Z");
+  // Only rows that are there (the variables are checked at every START, but a listing never
+  // reads past them).
+  const std::size_t rows = ws.inppn.rank() == 2 && ws.inppn.shape[1] == 3 ? ws.inppn.shape[0] : 0;
   const double* p = ws.inppn.data();
   for (int c = 1; c <= ws.nocur; ++c) {
     if (c > 1) out += '\n';  // curve by curve
     for (int place = 1; place <= ws.nostr; ++place) {
       const int k = (c - 1) * ws.nostr + place;  // point-number order (spec igds.md section 4)
+      if (static_cast<std::size_t>(k) > rows) break;
       const double* xyz = p + 3 * (k - 1);
       out += fmt::format("{:>5}{:>6}{:>6}{}{}{}\n", k, c, place, column(xyz[0]), column(xyz[1]),
                          column(xyz[2]));
@@ -50,7 +54,8 @@ std::string point_listing(const Workspace& ws) {
 
 std::string tangent_listing(const Workspace& ws) {
   // INPTG's rows (workspace/state.h): 2 NOCUR along the curves, then 2 NOSTR along the stringers.
-  const std::size_t rows = ws.inptg.rank() == 2 ? ws.inptg.shape[0] : 0;
+  const std::size_t rows =
+      ws.inptg.rank() == 2 && ws.inptg.shape[1] == 4 && ws.nostr > 0 ? ws.inptg.shape[0] : 0;
   std::string out = fmt::format("BORDER TANGENTS: {} ALONG THE CURVES, {} ALONG THE STRINGERS\n",
                                 2 * ws.nocur, 2 * ws.nostr);
   out += fmt::format("{:>5}{:>6}{:>6}  {:<9}{:>14}{:>14}{:>14}\n", "K", "CURVE", "PLACE", "ALONG",

@@ -134,6 +134,8 @@ void run_zoom(Context& ctx, const Choice*) {
   auto zoomed = std::make_shared<Image>(shown);
   zoomed->window = window;
   ws.image = std::shared_ptr<const Image>(std::move(zoomed));
+  // Unlike DISPLAY, on a clean screen: the part larger over the whole image would be unreadable.
+  ctx.erase();
   ctx.show(ws.image);
 }
 
@@ -149,7 +151,8 @@ extern const Command zoom_command{
     .summary = "shows a part of the current image larger, or the whole image again",
     .long_help = R"(ZOOM shows a part of the current image larger: the part inside a
 window is scaled to the picture's square and everything outside it is
-cut away. The description beside the picture says ZOOMED. Coordinates
+cut away, on a clean screen (unlike DISPLAY, which draws over what is
+there). The description beside the picture says ZOOMED. Coordinates
 are those of the image (the projected x y, as LIST IMAGES and the
 none terminal's IMAGE line show them).
 

@@ -257,6 +257,7 @@ TEST_CASE("ZOOM: a window by its corners, by a factor and a centre, by picks; ZO
     REQUIRE(ctx.shown.size() == 2);
     CHECK(ctx.shown.back().window == std::array<double, 4>{0, 0, 10, 5});
     CHECK(ctx.shown.back().points == whole.points);
+    CHECK(ctx.erases == 1);  // on a clean screen
     CHECK(image_line(ctx.shown.back()) == "IMAGE: INPUT, ORTHOGONAL XY, ZOOMED TO 0 0 10 5");
     CHECK(image_caption(ctx.shown.back(), caption_width).back() == "ZOOMED");
     ctx.run(zoom_command, "");
