@@ -156,18 +156,13 @@ class Room {
   // True when `b` lies inside the area and meets nothing kept.
   bool free(const Box& b) const {
     if (b.x0 < area_.x0 || b.y0 < area_.y0 || b.x1 > area_.x1 || b.y1 > area_.y1) return false;
+    // The bucket at the middle first: in a dense picture it holds what is in the way.
+    const auto [ic, jc, ic1, jc1] = span({(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2, 0, 0});
+    if (meets(b, ic, jc)) return false;
     const auto [i0, j0, i1, j1] = span(b);
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i)
-        for (std::size_t k : buckets_[static_cast<std::size_t>(j) * nx_ + i]) {
-          const Obstacle& o = obstacles_[k];
-          if (o.box) {
-            if (o.a.x <= b.x1 && b.x0 <= o.b.x && o.a.y <= b.y1 && b.y0 <= o.b.y) return false;
-          } else {
-            Point2 a = o.a, e = o.b;
-            if (clip_segment(a, e, b)) return false;
-          }
-        }
+        if ((i != ic || j != jc) && meets(b, i, j)) return false;
     return true;
   }
 
@@ -176,6 +171,19 @@ class Room {
     Point2 a, b;  // a segment, or a box's corners
     bool box;
   };
+  // Something of bucket i j meets `b`.
+  bool meets(const Box& b, int i, int j) const {
+    for (std::size_t k : buckets_[static_cast<std::size_t>(j) * nx_ + i]) {
+      const Obstacle& o = obstacles_[k];
+      if (o.box) {
+        if (o.a.x <= b.x1 && b.x0 <= o.b.x && o.a.y <= b.y1 && b.y0 <= o.b.y) return true;
+      } else {
+        Point2 a = o.a, e = o.b;
+        if (clip_segment(a, e, b)) return true;
+      }
+    }
+    return false;
+  }
   std::array<int, 4> span(const Box& b) const {
     auto index = [&](double v, double from, int n) {
       const double f = std::floor((v - from) / bucket_);
@@ -215,7 +223,12 @@ void add_point_numbers(Drawing2& drawing, const Grid& g, const Box* window) {
       smallest.image.x1 - smallest.image.x0 - 2 * tek_screen::image_margin - 2 * tek_screen::mark;
   const double unit = std::max(shown.x1 - shown.x0, shown.y1 - shown.y0) / room;
   if (!(unit > 0) || !std::isfinite(unit)) return;
-  Room free_room(shown, 40 * unit);
+  std::size_t shown_points = 0;
+  for (std::size_t c = 0; c < g.planes; ++c)
+    for (std::size_t r = 0; r < g.rows; ++r)
+      shown_points += finite(g.at(c, r)) && inside(g.at(c, r), shown);
+  if (shown_points > max_numbered_points) return;
+  Room free_room(shown, 8 * unit);  // buckets of about half a character cell
   std::vector<Point2> points;
   for (const auto& item : drawing.items()) {
     const auto pts = drawing.points(item);

@@ -48,6 +48,10 @@ std::string plain_number(double value);
 // Arrow of a border tangent: the longest one is this fraction of the image's larger side.
 inline constexpr double arrow_fraction = 0.25;
 
+// More input points than this in a picture leave no room for their numbers (the square holds
+// about 800 character cells): DISPLAY INPUT writes none, ZOOM shows them.
+inline constexpr std::size_t max_numbered_points = 4096;
+
 // An input point's mark: a square of this half side, in 4013 points.
 inline constexpr double point_mark = 3;
 

@@ -13,6 +13,7 @@
 #include "commands/picture.h"
 #include "devices/layout.h"
 #include "devices/render.h"
+#include "tests/devices/support.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
 #include "workspace/error.h"
@@ -377,6 +378,24 @@ TEST_CASE("DISPLAY INPUT writes each point's number beside it, clear of the line
         CHECK_MESSAGE(!clip_segment(a, e, cell), "number " << t.text << " over a line");
       }
   }
+}
+
+TEST_CASE("a grid too dense for its numbers gets none; zoomed into, its points have them") {
+  auto numbers = [](const Image& im) {
+    const Picture pic = picture_of(im);
+    return std::count_if(pic.drawing.items().begin(), pic.drawing.items().end(),
+                         [](const auto& item) { return item.kind == Drawing2::Kind::text; });
+  };
+  Image dense = devices::input_image(70, 70);
+  REQUIRE(70 * 70 > max_numbered_points);
+  CHECK(numbers(dense) == 0);
+  // A window around a few of its points.
+  const double* p = dense.points.data();
+  const double x = p[2 * (35 * 70 + 35)], y = p[2 * (35 * 70 + 35) + 1];
+  const double dx = std::abs(p[2 * (36 * 70 + 35)] - x) * 2.5 + 1e-9;
+  const double dy = std::abs(p[2 * (35 * 70 + 36) + 1] - y) * 2.5 + 1e-9;
+  dense.window = std::array<double, 4>{x - dx, y - dy, x + dx, y + dy};
+  CHECK(numbers(dense) > 0);
 }
 
 }  // namespace igds::test
