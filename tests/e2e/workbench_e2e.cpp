@@ -108,6 +108,21 @@ READY
   CHECK(has(r.out, "      ⍴INTPN[;1;]\n7 3\n"));
 }
 
+TEST_CASE("ZOOM is not kept on the disk: the next session shows the whole image") {
+  TempDir disk;
+  const RunResult first = run_commands(disk, seen_from_above + "ZOOM 0 0 10 10\nSTORE FIRST\n");
+  REQUIRE(first.status == 0);
+  const RunResult next = run_commands(disk, "LIST IMAGES\n");
+  CHECK(next.out == R"(READY
+LIST IMAGES
+CURRENT IMAGE  INPUT, ORTHOGONAL XY
+               3 BY 3 POINTS, 2 ARROWS
+STORE FIRST    THE CURRENT IMAGE
+STORE SECOND   NONE
+READY
+)");
+}
+
 TEST_CASE("SAVE, WRITE, STORE FILE and EXPORT over an existing file say REPLACED") {
   TempDir disk;
   const RunResult first = run_commands(disk, seen_from_above + R"(SAVE HULL
