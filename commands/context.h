@@ -3,11 +3,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "devices/device.h"
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "workspace/disk/disk.h"
@@ -86,6 +88,10 @@ class Context {
 
   // Draws an image on the terminal as the terminal mode says.
   virtual void show(const ImageRef& image) = 0;
+  // A position picked on the screen after `prompt`, in 4013 addresses (0..1023, 0..779): the
+  // cross-hair of a Tek terminal (GIN mode), or a line `X Y` typed or read from a command file;
+  // nullopt when the reply is not a pick. Throws Abandon on Ctrl-C, EndOfInput at the end.
+  virtual std::optional<DevicePoint> pick(const Prompt& prompt) = 0;
   // ERASE: a clean screen (a page), where there is a screen to erase.
   virtual void erase() = 0;
   // The plotter on the terminal line (--plotter tty): bytes already wrapped in ESC.( ... ESC.).

@@ -138,11 +138,13 @@ void run_export(Context& ctx, const Choice* option) {
   } catch (const DataError& e) {
     throw worded(e, "NO FILE WRITTEN");
   }
+  const bool existed = ctx.disk().exists(name, type);
   write_user_file(ctx.disk(), name, type, bytes);
   if (holds.empty())
     ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
   else
     ctx.say(fmt::format("{}.{}: {}, {} BYTES", name, type, holds, bytes.size()));
+  if (existed) ctx.say(fmt::format("{}.{} REPLACED", name, type));
 }
 
 constexpr const Prompt* questions[] = {&file_prompt};
@@ -182,11 +184,12 @@ other programs:
                       curves and stringers B-spline curves (IGES 5.3)
   EXPORT STEP [name]  NAME.STP, the same geometry in STEP (AP214)
 
-A file of the same name and type is replaced. With no current image
-EXPORT SVG, TEK or HPGL says IMAGE NOT FOUND; with no surface EXPORT
-IGES or STEP (and DUCT with no image either) says SURFACE NOT FOUND; a
-name that is not 1 to 8 letters, digits or $ # @ + - _ gets INCORRECT
-PARAMETER. The exchange files are dated now, or by SOURCE_DATE_EPOCH.
+A file of the same name and type is replaced, and EXPORT says so
+(HULL.SVG REPLACED). With no current image EXPORT SVG, TEK or HPGL says
+IMAGE NOT FOUND; with no surface EXPORT IGES or STEP (and DUCT with no
+image either) says SURFACE NOT FOUND; a name that is not 1 to 8
+letters, digits or $ # @ + - _ gets INCORRECT PARAMETER. The exchange
+files are dated now, or by SOURCE_DATE_EPOCH.
 
 Example (EX S is EXPORT SVG, EX I is EXPORT IGES):
   DISPLAY SURFACE ASSONOMETRIC 110 130 120

@@ -1,14 +1,18 @@
 #include "commands/picture.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
+#include <string_view>
 
 #include <fmt/format.h>
 
 #include "commands/view.h"
 #include "devices/layout.h"
+#include "devices/render.h"
 #include "workspace/apl.h"
 
 namespace igds {
@@ -35,11 +39,39 @@ Grid grid_of(const Array& points) {
   return {points.shape[0], points.shape[1], points.data()};
 }
 
-// Adds `line` to the drawing (the devices break it wherever a point is not finite).
-void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id) {
+bool inside(Point2 p, const Box& b) {
+  return p.x >= b.x0 && p.x <= b.x1 && p.y >= b.y0 && p.y <= b.y1;
+}
+
+void add_polyline(Drawing2& drawing, const std::vector<Point2>& line, Identity id) {
   std::vector<double> xy(2 * line.size());
   for (std::size_t k = 0; k < line.size(); ++k) line[k].store(&xy[2 * k]);
   drawing.add_polyline(Point2View(xy.data(), line.size()), {}, id);
+}
+
+// Adds `line` to the drawing (the devices break it wherever a point is not finite); with a
+// ZOOM window, only its pieces inside the window, one polyline each.
+void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id,
+              const Box* window = nullptr) {
+  if (!window) return add_polyline(drawing, line, id);
+  std::vector<Point2> piece;
+  auto flush = [&] {
+    if (piece.size() >= 2) add_polyline(drawing, piece, id);
+    piece.clear();
+  };
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    Point2 a = line[i], b = line[i + 1];
+    if (!finite(a) || !finite(b) || !clip_segment(a, b, *window)) {
+      flush();
+      continue;
+    }
+    if (!piece.empty() && !(piece.back().x == a.x && piece.back().y == a.y)) flush();
+    if (piece.empty()) piece.push_back(a);
+    piece.push_back(b);
+    // A segment that left the window ends its piece.
+    if (!(b.x == line[i + 1].x && b.y == line[i + 1].y)) flush();
+  }
+  flush();
 }
 
 // The border of the grid, once around and closed: curve 1, the last stringer, the last curve
@@ -59,7 +91,7 @@ std::vector<Point2> border_of(const Grid& g) {
   return ring;
 }
 
-void add_arrows(Drawing2& drawing, const Array& arrows, const Grid& g) {
+void add_arrows(Drawing2& drawing, const Array& arrows, const Grid& g, const Box* window) {
   // Rows x y dx dy, and (since arrows carry it) the point number and 1 along the curve or 0
   // along the stringer.
   const std::size_t columns = arrows.rank() == 2 ? arrows.shape[1] : 0;
@@ -102,8 +134,143 @@ void add_arrows(Drawing2& drawing, const Array& arrows, const Grid& g) {
     Identity id{Role::tangent};
     if (columns == 6 && std::isfinite(r[4]) && std::isfinite(r[5]))
       id = {Role::tangent, static_cast<int>(r[4]), static_cast<int>(r[5])};
-    add_line(drawing, {base, tip, left, right, tip}, id);
+    add_line(drawing, {base, tip, left, right, tip}, id, window);
   }
+}
+
+// What a point number must keep clear of: the picture's lines and marks and the numbers placed
+// before it, and the picture's bounds. Kept in square buckets so that each number looks only at
+// what is near it.
+class Room {
+ public:
+  Room(const Box& area, double bucket) : area_(area), bucket_(bucket) {
+    nx_ = std::clamp(static_cast<int>((area.x1 - area.x0) / bucket) + 1, 1, 256);
+    ny_ = std::clamp(static_cast<int>((area.y1 - area.y0) / bucket) + 1, 1, 256);
+    buckets_.resize(static_cast<std::size_t>(nx_) * ny_);
+  }
+  void add_segment(Point2 a, Point2 b) {
+    add({std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)},
+        {a, b, false});
+  }
+  void add_box(const Box& b) { add(b, {{b.x0, b.y0}, {b.x1, b.y1}, true}); }
+  // True when `b` lies inside the area and meets nothing kept.
+  bool free(const Box& b) const {
+    if (b.x0 < area_.x0 || b.y0 < area_.y0 || b.x1 > area_.x1 || b.y1 > area_.y1) return false;
+    // The bucket at the middle first: in a dense picture it holds what is in the way.
+    const auto [ic, jc, ic1, jc1] = span({(b.x0 + b.x1) / 2, (b.y0 + b.y1) / 2, 0, 0});
+    if (meets(b, ic, jc)) return false;
+    const auto [i0, j0, i1, j1] = span(b);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        if ((i != ic || j != jc) && meets(b, i, j)) return false;
+    return true;
+  }
+
+ private:
+  struct Obstacle {
+    Point2 a, b;  // a segment, or a box's corners
+    bool box;
+  };
+  // Something of bucket i j meets `b`.
+  bool meets(const Box& b, int i, int j) const {
+    for (std::size_t k : buckets_[static_cast<std::size_t>(j) * nx_ + i]) {
+      const Obstacle& o = obstacles_[k];
+      if (o.box) {
+        if (o.a.x <= b.x1 && b.x0 <= o.b.x && o.a.y <= b.y1 && b.y0 <= o.b.y) return true;
+      } else {
+        Point2 a = o.a, e = o.b;
+        if (clip_segment(a, e, b)) return true;
+      }
+    }
+    return false;
+  }
+  std::array<int, 4> span(const Box& b) const {
+    auto index = [&](double v, double from, int n) {
+      const double f = std::floor((v - from) / bucket_);
+      return static_cast<int>(std::clamp(f, 0.0, double(n - 1)));
+    };
+    return {index(b.x0, area_.x0, nx_), index(b.y0, area_.y0, ny_), index(b.x1, area_.x0, nx_),
+            index(b.y1, area_.y0, ny_)};
+  }
+  void add(const Box& extent, Obstacle o) {
+    if (!std::isfinite(extent.x0) || !std::isfinite(extent.y0) || !std::isfinite(extent.x1) ||
+        !std::isfinite(extent.y1))
+      return;
+    obstacles_.push_back(o);
+    const auto [i0, j0, i1, j1] = span(extent);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        buckets_[static_cast<std::size_t>(j) * nx_ + i].push_back(obstacles_.size() - 1);
+  }
+  Box area_;
+  double bucket_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<Obstacle> obstacles_;
+  std::vector<std::vector<std::size_t>> buckets_;
+};
+
+// The point numbers of DISPLAY INPUT (docs/decisions.md): each beside its point, in the first
+// place around it (the corner towards the middle of the picture first) where it meets no line,
+// mark or other number and stays inside the picture's bounds (so the numbers never change the
+// picture's scale). A number with no such place is left out: ZOOM shows it.
+void add_point_numbers(Drawing2& drawing, const Grid& g, const Box* window) {
+  const Box shown = window ? *window : bounds(drawing);
+  if (!(shown.x0 <= shown.x1) || !(shown.y0 <= shown.y1)) return;
+  // One 4013 point in drawing units, in the smallest square a picture is drawn in (tek mode's,
+  // devices/layout.h); drawn larger, a number's cell only shrinks towards its corner.
+  const TekLayout smallest = dialogue_layout();
+  const double room =
+      smallest.image.x1 - smallest.image.x0 - 2 * tek_screen::image_margin - 2 * tek_screen::mark;
+  const double unit = std::max(shown.x1 - shown.x0, shown.y1 - shown.y0) / room;
+  if (!(unit > 0) || !std::isfinite(unit)) return;
+  std::size_t shown_points = 0;
+  for (std::size_t c = 0; c < g.planes; ++c)
+    for (std::size_t r = 0; r < g.rows; ++r)
+      shown_points += finite(g.at(c, r)) && inside(g.at(c, r), shown);
+  if (shown_points > max_numbered_points) return;
+  Room free_room(shown, 8 * unit);  // buckets of about half a character cell
+  std::vector<Point2> points;
+  for (const auto& item : drawing.items()) {
+    const auto pts = drawing.points(item);
+    if (item.kind == Drawing2::Kind::polyline) {
+      for (std::size_t k = 0; k + 1 < pts.size(); ++k) free_room.add_segment(pts[k], pts[k + 1]);
+      if (item.closed && pts.size() > 2) free_room.add_segment(pts[pts.size() - 1], pts[0]);
+    } else if (item.kind == Drawing2::Kind::mark) {
+      const double h = item.size * unit;
+      free_room.add_box({pts[0].x - h, pts[0].y - h, pts[0].x + h, pts[0].y + h});
+    }
+  }
+  // A 4013 character cell: 14 points wide, from 4 below the baseline to 16 above; one point more
+  // on every side for the rounding to device units.
+  const double gap = (point_mark + 2) * unit, pad = unit, below = 4 * unit, above = 16 * unit;
+  const double mid_x = (shown.x0 + shown.x1) / 2, mid_y = (shown.y0 + shown.y1) / 2;
+  for (std::size_t c = 0; c < g.planes; ++c)
+    for (std::size_t r = 0; r < g.rows; ++r) {
+      const Point2 p = g.at(c, r);
+      if (!finite(p) || (window && !inside(p, *window))) continue;
+      const int k = static_cast<int>(c * g.rows + r + 1);
+      const std::string number = std::to_string(k);
+      const double width = tek_screen::char_width * unit * static_cast<double>(number.size());
+      // Towards the middle first; then the other corners; then a little farther from the point
+      // (beside a slanting border line).
+      const double sx = p.x <= mid_x ? 1 : -1, sy = p.y <= mid_y ? 1 : -1;
+      constexpr double steps[][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 1}, {1, 3}};
+      constexpr double sides[][2] = {{1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+      auto place_at = [&](const double* step, const double* side) {
+        const double dx = sx * side[0], dy = sy * side[1];
+        const Point2 at{dx > 0 ? p.x + step[0] * gap : p.x - step[0] * gap - width,
+                        dy > 0 ? p.y + step[1] * gap + below : p.y - step[1] * gap - above};
+        const Box cell{at.x - pad, at.y - below - pad, at.x + width + pad, at.y + above + pad};
+        if (!free_room.free(cell)) return false;
+        drawing.add_text(at, number, 1, {}, {Role::label, k});
+        free_room.add_box(cell);
+        return true;
+      };
+      std::any_of(std::begin(steps), std::end(steps), [&](const double* step) {
+        return std::any_of(std::begin(sides), std::end(sides),
+                           [&](const double* side) { return place_at(step, side); });
+      });
+    }
 }
 
 std::string fitted(std::string_view text, std::size_t width) {
@@ -128,6 +295,25 @@ std::string plain_number(double value) {
     }
   }
   return out;
+}
+
+std::vector<std::string> image_caption(const Image& image, std::size_t width) {
+  std::vector<std::string> lines = describe(image.desim, width);
+  if (image.window) lines.push_back(fitted(zoomed_word, width));
+  return lines;
+}
+
+std::string zoom_words(const std::array<double, 4>& window) {
+  // Five significant digits: a window picked on the screen is not known closer than that.
+  auto number = [](double v) { return plain_number(std::stod(fmt::format("{:.5g}", v))); };
+  return fmt::format("{} TO {} {} {} {}", zoomed_word, number(window[0]), number(window[1]),
+                     number(window[2]), number(window[3]));
+}
+
+std::string image_line(const Image& image) {
+  std::string line = describe_line(image.desim);
+  if (const auto& w = image.window) line += ", " + zoom_words(*w);
+  return line;
 }
 
 std::vector<std::string> describe(const Description& desim, std::size_t width) {
@@ -212,18 +398,42 @@ Picture picture_of_duct(const Image& image) {
 Picture picture_of(std::shared_ptr<const Image> image) {
   if (image->desim.what == 2) return picture_of_duct(*image);
   Picture pic;
-  pic.caption = describe(image->desim, caption_width);
+  pic.caption = image_caption(*image, caption_width);
   Grid g = grid_of(image->points);
   if (g.planes == 0 || g.rows == 0) return pic;
   Drawing2& d = pic.drawing;
+  std::optional<Box> zoom;
+  if (const auto& w = image->window) zoom = Box{(*w)[0], (*w)[1], (*w)[2], (*w)[3]};
+  const Box* window = zoom ? &*zoom : nullptr;
+  if (zoom) {
+    // The window's corners, as polylines of one point: they draw nothing (devices/render.h drops
+    // paths of fewer than two points) but make the window what the picture is scaled to.
+    add_polyline(d, {{zoom->x0, zoom->y0}}, {});
+    add_polyline(d, {{zoom->x1, zoom->y1}}, {});
+  }
   if (image->desim.what == 0) {
-    add_line(d, border_of(g), {Role::border});
-    add_arrows(d, image->arrows, g);
+    add_line(d, border_of(g), {Role::border}, window);
+    add_arrows(d, image->arrows, g, window);
     for (std::size_t c = 0; c < g.planes; ++c)
       for (std::size_t r = 0; r < g.rows; ++r)
-        if (finite(g.at(c, r)))
+        if (finite(g.at(c, r)) && (!window || inside(g.at(c, r), *window)))
           d.add_mark(g.at(c, r), MarkShape::square, point_mark, {},
                      {Role::point, static_cast<int>(c * g.rows + r + 1)});
+    add_point_numbers(d, g, window);
+    return pic;
+  }
+  if (window) {
+    std::vector<Point2> line;
+    for (std::size_t c = 0; c < g.planes; ++c) {
+      line.clear();
+      for (std::size_t r = 0; r < g.rows; ++r) line.push_back(g.at(c, r));
+      add_line(d, line, {Role::curve, static_cast<int>(c + 1)}, window);
+    }
+    for (std::size_t r = 0; r < g.rows; ++r) {
+      line.clear();
+      for (std::size_t c = 0; c < g.planes; ++c) line.push_back(g.at(c, r));
+      add_line(d, line, {Role::stringer, static_cast<int>(r + 1)}, window);
+    }
     return pic;
   }
   // The curves and stringers read the image's own points: no copy of a large grid.

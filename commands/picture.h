@@ -3,8 +3,10 @@
 // and the description written beside them. The devices draw the result without knowing grids.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "workspace/drawing/drawing.h"
@@ -14,12 +16,15 @@ namespace igds {
 
 // DISPLAY INPUT (desim.what == 0): the border of the NOCUR x NOSTR grid as one closed polyline,
 // each non-zero border tangent as an arrow (shaft and head, one polyline), the input points as
-// square marks. DISPLAY SURFACE: one polyline per curve, then one per stringer, reading the
-// image's own points (not copied). An IMAGE of a shape other than planes x rows x 2 gives no
-// lines (never a crash); non-finite points break a line. DISPLAY PICTURE (desim.what == 2): the
-// picture's projected drawing with its colours and dashes; the description adds the picture's
-// name after PICTURE, and COLOURS and the colours used when there are several (the 4013 draws
-// them alike).
+// square marks, then their numbers as texts (Role::label, index k) beside them. DISPLAY SURFACE:
+// one polyline per curve, then one per stringer, reading the image's own points (not copied).
+// An IMAGE of a shape other than planes x rows x 2 gives no lines (never a crash); non-finite
+// points break a line. DISPLAY PICTURE (desim.what == 2): the picture's projected drawing with
+// its colours and dashes; the description adds the picture's name after PICTURE, and COLOURS and
+// the colours used when there are several (the 4013 draws them alike). A zoomed image
+// (Image::window): only what lies inside the window, lines cut at its edges, and the window's
+// corners as two one-point polylines (they draw nothing) so that the window is what gets scaled
+// to the screen.
 Picture picture_of(std::shared_ptr<const Image> image);
 Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);
@@ -32,11 +37,23 @@ std::vector<std::string> describe(const Description& desim, std::size_t width);
 // mode prints it: IMAGE: SURFACE, ASSONOMETRIC 110 130 120.
 std::string describe_line(const Description& desim);
 
+// The same for an image, saying when it is zoomed: the caption gets a line ZOOMED, the line
+// `, ZOOMED TO x0 y0 x1 y1` (the window's corners).
+std::vector<std::string> image_caption(const Image& image, std::size_t width);
+std::string image_line(const Image& image);
+inline constexpr std::string_view zoomed_word = "ZOOMED";
+// ZOOMED TO x0 y0 x1 y1, the window's corners to five significant digits.
+std::string zoom_words(const std::array<double, 4>& window);
+
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);
 
 // Arrow of a border tangent: the longest one is this fraction of the image's larger side.
 inline constexpr double arrow_fraction = 0.25;
+
+// More input points than this in a picture leave no room for their numbers (the square holds
+// about 800 character cells): DISPLAY INPUT writes none, ZOOM shows them.
+inline constexpr std::size_t max_numbered_points = 4096;
 
 // An input point's mark: a square of this half side, in 4013 points.
 inline constexpr double point_mark = 3;

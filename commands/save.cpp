@@ -1,4 +1,6 @@
 // SAVE [name] (manual 4.6): the current surface in the binary file NAME IGDSDATA.
+#include <fmt/format.h>
+
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "workspace/error.h"
@@ -14,7 +16,10 @@ const Prompt file_prompt{"FILE NAME?",
 void run_save(Context& ctx, const Choice*) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
-  save_surface(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
+  const std::string name = ask_file_name(ctx, file_prompt);
+  const bool existed = ctx.disk().exists(name, "IGDSDATA");
+  save_surface(ctx.disk(), name, ws);
+  if (existed) ctx.say(fmt::format("{}.IGDSDATA REPLACED", name));
 }
 
 constexpr const Prompt* questions[] = {&file_prompt};
@@ -30,9 +35,10 @@ extern const Command save_command{
     .long_help = R"(SAVE writes the current surface to the file NAME.IGDSDATA on the disk:
 the input points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches
 and the interpolated grid, exactly (RESTORE gives back the very same
-numbers). A file of the same name is replaced; the file is written
-whole or not at all. These files are an archive of surfaces; RESTORE
-makes one current again.
+numbers). A file of the same name is replaced, and SAVE says so
+(HULL.IGDSDATA REPLACED); the file is written whole or not at all.
+These files are an archive of surfaces; RESTORE makes one current
+again.
 
 The name may follow the command; otherwise IGDS asks for it. A name is
 1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same

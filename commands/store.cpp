@@ -1,4 +1,6 @@
 // STORE FIRST | SECOND | FILE (manual 4.8): a copy of the current image, in memory or on disk.
+#include <fmt/format.h>
+
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "workspace/error.h"
@@ -23,7 +25,10 @@ void run_store(Context& ctx, const Choice* option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   if (option->code == file) {
-    store_image(ctx.disk(), ask_file_name(ctx, file_prompt), *ws.image);
+    const std::string name = ask_file_name(ctx, file_prompt);
+    const bool existed = ctx.disk().exists(name, "IGDSIMAG");
+    store_image(ctx.disk(), name, *ws.image);
+    if (existed) ctx.say(fmt::format("{}.IGDSIMAG REPLACED", name));
     return;
   }
   expect_no_more_words(ctx);
@@ -50,7 +55,7 @@ that DISPLAY can show it again later without projecting anything.
   STORE SECOND       the second copy in memory (DISPLAY SECOND shows it)
   STORE FILE [name]  the file NAME.IGDSIMAG on the disk (DISPLAY FILE
                      name shows it); a file of the same name is
-                     replaced.
+                     replaced, and STORE says so.
 
 The copies in memory are part of the session: they are still there
 next time. With no current image STORE says IMAGE NOT FOUND; a name

@@ -16,7 +16,10 @@ const Prompt file_prompt{"FILE NAME?",
 void run_write(Context& ctx, const Choice*) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
-  std::size_t overflow = write_char(ctx.disk(), ask_file_name(ctx, file_prompt), ws);
+  const std::string name = ask_file_name(ctx, file_prompt);
+  const bool existed = ctx.disk().exists(name, "IGDSCHAR");
+  std::size_t overflow = write_char(ctx.disk(), name, ws);
+  if (existed) ctx.say(fmt::format("{}.IGDSCHAR REPLACED", name));
   if (overflow == 1) ctx.say("1 VALUE DOES NOT FIT F10.3: WRITTEN AS **********");
   if (overflow > 1)
     ctx.say(fmt::format("{} VALUES DO NOT FIT F10.3: WRITTEN AS **********", overflow));
@@ -46,7 +49,8 @@ read with these formats, one group after the other:
 Values are rounded to 3 decimals. A value that needs more than 10
 columns (1000000 or more, -100000 or less) is written as ten
 asterisks, as FORTRAN does, and WRITE says how many there are; SAVE
-keeps every value exactly. A file of the same name is replaced.
+keeps every value exactly. A file of the same name is replaced, and
+WRITE says so (HULL.IGDSCHAR REPLACED).
 
 The name may follow the command; otherwise IGDS asks for it. A name is
 1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same

@@ -203,7 +203,18 @@ void Interpreter::show(const ImageRef& image) {
   auto picture = terminal_.mode() == TermMode::none
                      ? nullptr
                      : std::make_shared<const Picture>(picture_of(image));
-  terminal_.show(std::move(picture), describe_line(image->desim));
+  terminal_.show(std::move(picture), image_line(*image));
+}
+
+std::optional<DevicePoint> Interpreter::pick(const Prompt& prompt) {
+  asking_ = &prompt;
+  for (;;) {
+    const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
+    if (e.kind == Event::Kind::interrupt) throw Abandon{};
+    if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
+    if (e.kind != Event::Kind::line) throw EndOfInput{};
+    if (!answer_help(split_words(e.text), prompt)) return std::nullopt;
+  }
 }
 
 void Interpreter::erase() {

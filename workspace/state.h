@@ -57,12 +57,17 @@ struct Image {
   std::uint64_t file_sum = 0;
   // DESIM[1] = 2 only: the picture (IMAGE is then empty: the picture is not a grid).
   std::shared_ptr<const ImagePicture> picture;
+  // ZOOM: the part shown, corners x0 y0 x1 y1 (x0 < x1, y0 < y1) in the units of `points`;
+  // nullopt: the whole image. A way of looking at the image, not kept on the disk
+  // (docs/decisions.md).
+  std::optional<std::array<double, 4>> window;
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
     const bool same_picture =
         a.picture == b.picture || (a.picture && b.picture && a.picture->name == b.picture->name &&
                                    a.picture->text == b.picture->text);
-    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows && same_picture;
+    return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows && same_picture &&
+           a.window == b.window;
   }
 };
 

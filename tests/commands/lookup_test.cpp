@@ -85,17 +85,17 @@ TEST_CASE("choose takes the first entry that starts with the letters typed") {
 TEST_CASE("the command table is the manual's, then the project's additions") {
   std::vector<std::string_view> got;
   for (const Command* c : command_table()) got.push_back(c->name);
-  const std::vector<std::string_view> expected{"BUILD", "CHANGE", "RESTORE", "DISPLAY",
-                                               "PLOT",  "STORE",  "SAVE",    "WRITE",
-                                               "END",   "HELP",   "ERASE",   "EXPORT"};
+  const std::vector<std::string_view> expected{"BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT",
+                                               "STORE", "SAVE",   "WRITE",   "END",     "HELP",
+                                               "ERASE", "EXPORT", "LIST",    "ZOOM"};
   CHECK(got == expected);
 }
 
 TEST_CASE("every one- and two-letter abbreviation of a command") {
   CHECK(resolved(names()) ==
-        table("B=BUILD C=CHANGE D=DISPLAY E=END H=HELP P=PLOT R=RESTORE S=STORE W=WRITE "
-              "BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT HE=HELP PL=PLOT "
-              "RE=RESTORE SA=SAVE ST=STORE WR=WRITE"));
+        table("B=BUILD C=CHANGE D=DISPLAY E=END H=HELP L=LIST P=PLOT R=RESTORE S=STORE W=WRITE "
+              "Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT HE=HELP LI=LIST "
+              "PL=PLOT RE=RESTORE SA=SAVE ST=STORE WR=WRITE ZO=ZOOM"));
 }
 
 TEST_CASE("every one- and two-letter abbreviation of an option, and of the words answered") {
@@ -104,6 +104,7 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(command("SAVE").options.empty());
   CHECK(command("WRITE").options.empty());
   CHECK(command("ERASE").options.empty());
+  CHECK(command("ZOOM").options.empty());
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS"));
   CHECK(resolved(command("DISPLAY").options) ==
@@ -115,6 +116,9 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(resolved(command("HELP").options) == table("L=LONG S=SHORT LO=LONG SH=SHORT"));
   CHECK(resolved(command("EXPORT").options) ==
         table("D=DUCT H=HPGL I=IGES S=SVG T=TEK DU=DUCT HP=HPGL IG=IGES ST=STEP SV=SVG TE=TEK"));
+  CHECK(resolved(command("LIST").options) ==
+        table("F=FILES I=IMAGES P=POINTS S=SURFACE T=TANGENTS FI=FILES IM=IMAGES PO=POINTS "
+              "SU=SURFACE TA=TANGENTS"));
   CHECK(resolved(projection_choices()) ==
         table("A=ASSONOMETRIC C=CONIC I=ISOMETRIC O=ORTHOGONAL AS=ASSONOMETRIC AX=AXONOMETRIC "
               "CO=CONIC IS=ISOMETRIC OR=ORTHOGONAL"));

@@ -106,10 +106,15 @@ TEST_CASE("picture_of INPUT: the border once around, arrows, a mark per point") 
   const auto& a0 = pic.paths[1];
   CHECK((a0[1].x - a0[0].x) / (a0[1].y - a0[0].y) == doctest::Approx(3.0));
   CHECK(picture.caption == std::vector<std::string>{"INPUT", "CONIC", "12.5 -40 1000"});
-  // Marks name their point, row by row.
+  // Marks name their point, row by row; the point numbers come after them.
   const auto& items = picture.drawing.items();
-  CHECK(items.back().kind == Drawing2::Kind::mark);
-  CHECK(items.back().id == Identity{Role::point, 12});
+  const auto last_mark = std::find_if(items.rbegin(), items.rend(), [](const auto& item) {
+    return item.kind == Drawing2::Kind::mark;
+  });
+  REQUIRE(last_mark != items.rend());
+  CHECK(last_mark->id == Identity{Role::point, 12});
+  CHECK(std::all_of(items.rbegin(), last_mark,
+                    [](const auto& item) { return item.kind == Drawing2::Kind::text; }));
   CHECK(items[0].id.role == Role::border);
 }
 

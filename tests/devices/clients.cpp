@@ -90,7 +90,7 @@ TEST_CASE("tek2plot reads every 4013 and 4014 stream, vertices where they were m
         REQUIRE(texts.size() == r.texts.size());
         for (std::size_t i = 0; i < texts.size(); ++i) {
           CHECK(texts[i].second == r.texts[i].line);
-          CHECK(texts[i].first.x == doctest::Approx(4 * tek_screen::text_x));
+          CHECK(texts[i].first.x == doctest::Approx(4.0 * r.texts[i].at.x / unit));
           CHECK(std::abs(texts[i].first.y - (4.0 * r.texts[i].at.y / unit + 488)) <
                 4 * tek_screen::line_height);
         }

@@ -221,6 +221,7 @@ TEST_CASE("plot_hpgl: ordering never costs more pen-up travel than the drawing o
       t.y -= static_cast<int>(std::lround(layout.line));
     }
     for (const auto& p : placed.paths) naive.polyline(p.points);
+    for (const auto& label : placed.texts) naive.text(label.at, label.text);  // point numbers
     naive.finish();
     CHECK(plot.stats.pen_up_mm <= naive.stats().pen_up_mm + 1e-9);
     CHECK(plot.stats.vectors == naive.stats().vectors);

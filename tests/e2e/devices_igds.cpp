@@ -145,8 +145,10 @@ TEST_CASE("igds --tek 4014: 12-bit addresses, still read by tek2plot") {
   for (const auto& p : image.paths)
     for (auto q : p) largest = std::max({largest, q.x, q.y});
   CHECK(largest > 1023);
-  // The session at 12 bits is the session at 10 bits, four times finer.
-  RunResult r10 = run_session(disk, {"--term", "tek", "--tek", "4013"});
+  // The session at 12 bits is the session at 10 bits, four times finer (on a disk of its own:
+  // on this one EXPORT would say REPLACED, and the dialogue would differ).
+  TempDir disk10;
+  RunResult r10 = run_session(disk10, {"--term", "tek", "--tek", "4013"});
   const auto fine = decode_tek(r.out, 12), coarse = decode_tek(r10.out, 10);
   REQUIRE(fine.paths.size() == coarse.paths.size());
   for (std::size_t i = 0; i < fine.paths.size(); ++i) {

@@ -2,8 +2,10 @@
 // interpreter's own word splitting), a recorded dialogue, what reaches the terminal, a disk.
 #pragma once
 
+#include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -77,6 +79,18 @@ class FakeContext final : public Context {
     ++reports;
   }
   void show(const ImageRef& image) override { shown.push_back(*image); }
+  // A typed line `X Y` is a pick, as from a command file (interp/terminal.h); any other line is
+  // not one.
+  std::optional<DevicePoint> pick(const Prompt& prompt) override {
+    prompts.emplace_back(prompt.text);
+    if (typed_.empty()) throw EndOfInput{};
+    std::string line = typed_.front();
+    typed_.pop_front();
+    if (line == "^C") throw Abandon{};
+    int x = 0, y = 0;
+    if (std::sscanf(line.c_str(), "%d %d", &x, &y) != 2) return std::nullopt;
+    return DevicePoint{x, y};
+  }
   void erase() override { ++erases; }
   void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
   void end_session(bool apl) override { ends = apl ? 1 : 0; }

@@ -1,8 +1,10 @@
 #include "workspace/disk/disk.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <system_error>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -136,6 +138,34 @@ std::filesystem::path Disk::path(std::string_view name, std::string_view type) c
 bool Disk::exists(std::string_view name, std::string_view type) const {
   std::error_code ec;
   return std::filesystem::exists(std::filesystem::symlink_status(path(name, type), ec));
+}
+
+std::vector<DiskFile> Disk::files() const {
+  std::vector<DiskFile> out;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir_, ec), end; !ec && it != end; it.increment(ec)) {
+    std::error_code e;
+    // symlink_status: a link is not followed out of the folder.
+    if (!std::filesystem::is_regular_file(it->symlink_status(e)) || e) continue;
+    const std::string file = it->path().filename().string();
+    const auto dot = file.find('.');
+    if (dot == std::string::npos || file.find('.', dot + 1) != std::string::npos) continue;
+    const std::string name = file.substr(0, dot), type = file.substr(dot + 1);
+    if (cms_name(name) != name || type.empty() ||
+        !std::all_of(type.begin(), type.end(),
+                     [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }))
+      continue;
+    const auto bytes = it->file_size(e);
+    if (e) continue;
+    const auto time = it->last_write_time(e);
+    if (e) continue;
+    const auto since = std::chrono::file_clock::to_sys(time).time_since_epoch();
+    out.push_back({name, type, bytes, std::chrono::floor<std::chrono::seconds>(since).count()});
+  }
+  std::sort(out.begin(), out.end(), [](const DiskFile& a, const DiskFile& b) {
+    return std::tie(a.type, a.name) < std::tie(b.type, b.name);
+  });
+  return out;
 }
 
 bool write_user_file(const Disk& disk, std::string_view name, std::string_view type,

@@ -3,10 +3,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "workspace/state.h"
 
@@ -16,6 +18,13 @@ namespace igds {
 // nullopt for anything else (INCORRECT PARAMETER).
 std::optional<std::string> cms_name(std::string_view typed);
 
+// A file of the disk as LIST FILES shows it.
+struct DiskFile {
+  std::string name, type;  // NAME and TYPE of NAME.TYPE
+  std::uintmax_t bytes = 0;
+  std::int64_t written = 0;  // last written, in seconds since 1970-01-01 UTC
+};
+
 class Disk {
  public:
   // Throws Report when `dir` is not a folder igds can use.
@@ -24,6 +33,10 @@ class Disk {
   // NAME.TYPE on the disk. `name` must already be a cms_name().
   std::filesystem::path path(std::string_view name, std::string_view type) const;
   bool exists(std::string_view name, std::string_view type) const;
+  // The regular files NAME.TYPE directly in the disk's folder (NAME a cms_name() in capitals,
+  // TYPE letters and digits), by type then name. Folders, links and anything else are left out;
+  // nothing outside the folder is looked at.
+  std::vector<DiskFile> files() const;
 
  private:
   std::filesystem::path dir_;

@@ -1,0 +1,307 @@
+// LIST, ZOOM, the point numbers, the REPLACED lines and END APL's indexing on the real igds:
+// transcripts of command files, and ZOOM decoded from the 4013 streams igds writes.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "tests/e2e/e2e_support.h"
+#include "tests/support/process.h"
+#include "tests/support/tek_decoder.h"
+
+namespace igds::test {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The 3 x 3 saddle of e2e_support.h (x and y 0 to 20), seen from above: image x y = x y.
+const std::string seen_from_above = std::string(saddle_build) + "DISPLAY INPUT ORTHOGONAL XY\n";
+
+bool has(const std::string& out, const std::string& part) {
+  return out.find(part) != std::string::npos;
+}
+
+// Runs igds --term MODE on `commands` as a command file.
+RunResult run_in(const TempDir& disk, const std::string& mode, const std::string& commands) {
+  write_file(disk.path() / "commands.igds", commands);
+  return run_igds(
+      {"--term", mode, "--disk", disk.path().string(), (disk.path() / "commands.igds").string()},
+      with_input(""));
+}
+
+}  // namespace
+
+TEST_CASE("LIST, ZOOM and END APL's indexing: the transcript") {
+  TempDir disk;
+  const RunResult r = run_commands(disk, seen_from_above + R"(LIST POINTS
+L T
+LIST SURFACE
+ZOOM 0 0 10 10
+LIST IMAGES
+Z 4 20 20
+ZOOM
+ZOOM 1 2
+END APL
+INPPN[3;]
+INTPN[1;2;]
+⍴INPPN
+⍴INTPN[;1;]
+)OFF
+)");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK(has(r.out, R"(READY
+LIST POINTS
+INPUT POINTS: 3 CURVES OF 3 POINTS
+    K CURVE PLACE             X             Y             Z
+    1     1     1             0             0             0
+    2     1     2             0            10             2
+    3     1     3             0            20             0
+
+    4     2     1            10             0             2
+)"));
+  CHECK(has(r.out, "    9     3     3            20            20             0\nREADY\n"));
+  CHECK(has(r.out, R"(L T
+BORDER TANGENTS: 6 ALONG THE CURVES, 6 ALONG THE STRINGERS
+    K CURVE PLACE  ALONG                 X             Y             Z
+    1     1     1  CURVE                 0             1             0
+)"));
+  CHECK(has(r.out, "    1     1     1  STRINGER              1             0             0\n"));
+  CHECK(has(r.out, R"(LIST SURFACE
+NOCUR 3  NOSTR 3  INTCU 2  INTST 2
+INPUT POINTS 9, BORDER TANGENTS 12
+PATCHES 2 BY 2
+INTERPOLATED GRID 7 BY 7 POINTS
+TANGENTS: TYPED
+TWISTS: ZERO TWISTS
+READY
+)"));
+  CHECK(has(r.out, R"(ZOOM 0 0 10 10
+IMAGE: INPUT, ORTHOGONAL XY, ZOOMED TO 0 0 10 10
+READY
+LIST IMAGES
+CURRENT IMAGE  INPUT, ORTHOGONAL XY
+               3 BY 3 POINTS, 2 ARROWS
+               ZOOMED TO 0 0 10 10
+STORE FIRST    NONE
+STORE SECOND   NONE
+READY
+Z 4 20 20
+IMAGE: INPUT, ORTHOGONAL XY, ZOOMED TO 17.5 17.5 22.5 22.5
+READY
+ZOOM
+IMAGE: INPUT, ORTHOGONAL XY
+READY
+ZOOM 1 2
+INCORRECT PARAMETER: GIVE X0 Y0 X1 Y1, A FACTOR [X Y], OR PICK
+READY
+)"));
+  // APL indexing of the workspace variables, index origin 1.
+  CHECK(has(r.out, "      INPPN[3;]\n0 20 0\n"));
+  CHECK(has(r.out, "      INTPN[1;2;]\n0 3.181154653 0.5185185185\n"));
+  CHECK(has(r.out, "      ⍴INPPN\n9 3\n"));
+  CHECK(has(r.out, "      ⍴INTPN[;1;]\n7 3\n"));
+}
+
+TEST_CASE("ZOOM is not kept on the disk: the next session shows the whole image") {
+  TempDir disk;
+  const RunResult first = run_commands(disk, seen_from_above + "ZOOM 0 0 10 10\nSTORE FIRST\n");
+  REQUIRE(first.status == 0);
+  const RunResult next = run_commands(disk, "LIST IMAGES\n");
+  CHECK(next.out == R"(READY
+LIST IMAGES
+CURRENT IMAGE  INPUT, ORTHOGONAL XY
+               3 BY 3 POINTS, 2 ARROWS
+STORE FIRST    THE CURRENT IMAGE
+STORE SECOND   NONE
+READY
+)");
+}
+
+TEST_CASE("SAVE, WRITE, STORE FILE and EXPORT over an existing file say REPLACED") {
+  TempDir disk;
+  const RunResult first = run_commands(disk, seen_from_above + R"(SAVE HULL
+WRITE HULL
+STORE FILE HULL
+EXPORT HPGL HULL
+)");
+  CHECK(first.status == 0);
+  CHECK(!has(first.out, "REPLACED"));
+  const std::string data = read_file(disk.path() / "HULL.IGDSDATA");
+  const auto hpgl_bytes = fs::file_size(disk.path() / "HULL.HPGL");
+  const RunResult again = run_commands(disk, R"(SA HULL
+WRITE hull
+S FIL HULL
+EX H HULL
+EX S HULL
+)");
+  CHECK(again.out == fmt::format(R"(READY
+SA HULL
+HULL.IGDSDATA REPLACED
+READY
+WRITE hull
+HULL.IGDSCHAR REPLACED
+READY
+S FIL HULL
+HULL.IGDSIMAG REPLACED
+READY
+EX H HULL
+HULL.HPGL: {} BYTES
+HULL.HPGL REPLACED
+READY
+EX S HULL
+HULL.SVG: {} BYTES
+READY
+)",
+                                 hpgl_bytes, fs::file_size(disk.path() / "HULL.SVG")));
+  // The file is replaced by the same surface: nothing else changed.
+  CHECK(read_file(disk.path() / "HULL.IGDSDATA") == data);
+}
+
+TEST_CASE("LIST FILES on a disk with every type of file") {
+  TempDir disk;
+  // Files igds reads but did not write in this session.
+  write_file(disk.path() / "OLD.IGDSBAD", "kept aside");
+  write_file(disk.path() / "PLOT0001.HPGL", "IN;");
+  write_file(disk.path() / "HISTORY.IGDSHIST", "LIST FILES\n");
+  write_file(disk.path() / "README.TXT", "a file of the designer's");
+  fs::create_directory(disk.path() / "FOLDER.IGDSDATA");
+  const RunResult r = run_commands(disk, seen_from_above + R"(SAVE HULL
+WRITE HULL
+STORE FILE HULL
+DISPLAY FILE HULL
+EXPORT SVG HULL
+EXPORT TEK HULL
+EXPORT HPGL HULL
+LIST FILES
+)");
+  INFO(r.out);
+  CHECK(r.status == 0);
+  const auto at = r.out.find("LIST FILES\n");
+  REQUIRE(at != std::string::npos);
+  const std::string listing = r.out.substr(at);
+  CHECK(has(listing, fmt::format("DISK {}: ", fs::absolute(disk.path()).string())));
+  std::vector<std::string> types;
+  for (std::size_t p = 0; (p = listing.find("\n\n", p)) != std::string::npos; p += 2)
+    types.push_back(listing.substr(p + 2, listing.find('\n', p + 2) - p - 2));
+  CHECK(types == std::vector<std::string>{
+                     "HPGL: EXPORT HPGL", "IGDSBAD: DAMAGED SESSIONS, KEPT ASIDE",
+                     "IGDSCHAR: CARD IMAGES (WRITE)", "IGDSCONT: THE SESSION",
+                     "IGDSDATA: SURFACES (SAVE, RESTORE)", "IGDSHIST: THE HISTORY OF TYPED LINES",
+                     "IGDSIMAG: IMAGES (STORE FILE, DISPLAY FILE)",
+                     "IGDSLOCK: THE LOCK OF THE SESSION", "IGDSVIMG: IMAGES OF THE SESSION",
+                     "SVG: EXPORT SVG", "TEK: EXPORT TEK", "TXT"});
+  CHECK(has(listing, fmt::format("  HULL     {:>12} BYTES  ",
+                                 fs::file_size(disk.path() / "HULL.IGDSDATA"))));
+  CHECK(has(listing, "  PLOT0001            3 BYTES  "));
+  CHECK(!has(listing, "FOLDER"));
+  CHECK(!has(listing, "COMMANDS"));  // commands.igds: not a NAME.TYPE of the disk
+}
+
+TEST_CASE("ZOOM decoded from the 4013 stream: the window's content scaled, the rest cut away") {
+  TempDir disk;
+  const RunResult r = run_commands(disk, seen_from_above + R"(EXPORT TEK WHOLE
+ZOOM 0 0 10 10
+EXPORT TEK ZOOMED
+)");
+  REQUIRE(r.status == 0);
+  const TekDrawing whole = decode_tek(read_file(disk.path() / "WHOLE.TEK"));
+  const TekDrawing zoomed = decode_tek(read_file(disk.path() / "ZOOMED.TEK"));
+  CHECK(zoomed.errors.empty());
+  // A clean screen first (ESC FF), then the picture.
+  REQUIRE(!whole.pages.empty());
+  REQUIRE(!zoomed.pages.empty());
+  const TekPage& w = whole.pages.back();
+  const TekPage& z = zoomed.pages.back();
+  for (const auto& fault : screen_faults(z)) FAIL_CHECK(fault);
+  // The full square of an exported picture: 16 to 751 inside its margins, 3 more for the marks.
+  // The window 0..10 fills it: point 1 (0 0) at 19 19, point 5 (10 10) at 748 748.
+  for (const auto& s : z.segments)
+    for (const TekPoint& p : {s.a, s.b}) {
+      CHECK(p.x >= 16);
+      CHECK(p.x <= 751);
+      CHECK(p.y >= 16);
+      CHECK(p.y <= 751);
+    }
+  // The border is drawn first, from point 1 up curve 1 to point 2 (0 10): the whole image puts
+  // it where its arrow heads leave room; zoomed, it spans the square.
+  REQUIRE(!w.segments.empty());
+  REQUIRE(!z.segments.empty());
+  const TekSegment& up_whole = w.segments[0];
+  const TekSegment& up_zoomed = z.segments[0];
+  CHECK(up_zoomed.a.x == 19);
+  CHECK(up_zoomed.a.y == 19);
+  CHECK(up_zoomed.b.x == 19);
+  CHECK(up_zoomed.b.y == 748);
+  CHECK(up_whole.a.x == up_whole.b.x);
+  const double whole_length = up_whole.b.y - up_whole.a.y;
+  CHECK(whole_length > 300);
+  CHECK(729 / whole_length > 2);  // 2 times the image's side, and the arrow heads left out
+  // The bottom border, cut at the window's right edge: 19 19 to 748 19.
+  CHECK(std::any_of(z.segments.begin(), z.segments.end(), [](const TekSegment& s) {
+    return s.a.y == 19 && s.b.y == 19 && std::min(s.a.x, s.b.x) == 19 &&
+           std::max(s.a.x, s.b.x) == 748;
+  }));
+  // The points inside the window keep their numbers; the others are cut away with them.
+  auto numbers = [](const TekPage& page) {
+    std::vector<std::string> out;
+    for (const auto& t : page.texts)
+      if (t.at.x < 768 && std::all_of(t.text.begin(), t.text.end(), ::isdigit))
+        out.push_back(t.text);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  CHECK(numbers(w) == std::vector<std::string>{"1", "2", "3", "4", "5", "6", "7", "8", "9"});
+  CHECK(numbers(z) == std::vector<std::string>{"1", "2", "4", "5"});
+  CHECK(std::any_of(z.texts.begin(), z.texts.end(),
+                    [](const TekText& t) { return t.text == "ZOOMED" && t.at.x == 780; }));
+}
+
+TEST_CASE("ZOOM PICK on the Tek screen: two cross-hair picks, from a command file as X Y") {
+  TempDir disk;
+  // Where tek mode draws the image (in the square above the dialogue): the border starts at
+  // point 1 (0 0) and goes to point 2 (0 10), point 3 (0 20), point 6 (10 20).
+  const RunResult shown = run_in(disk, "tek", seen_from_above);
+  REQUIRE(shown.status == 0);
+  const TekDrawing before = decode_tek(shown.out);
+  REQUIRE(!before.pages.empty());
+  const auto& border = before.pages.back().segments;
+  REQUIRE(border.size() > 3);
+  const TekPoint origin = border[0].a, ten_ten{border[2].b.x, border[0].b.y};
+  const double unit = (border[0].b.y - border[0].a.y) / 10;  // screen points per image unit
+  REQUIRE(unit > 20);
+  const std::string first = fmt::format("{} {}", std::lround(origin.x), std::lround(origin.y));
+  const std::string second = fmt::format("{} {}", std::lround(ten_ten.x), std::lround(ten_ten.y));
+
+  const RunResult r =
+      run_in(disk, "tek", "ZOOM PICK\n" + first + "\n" + second + "\nLIST IMAGES\nERASE\n");
+  REQUIRE(r.status == 0);
+  const TekDrawing d = decode_tek(r.out);
+  CHECK(d.errors.empty());
+  for (const auto& page : d.pages)
+    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
+  auto said = [&](std::string_view start) {
+    for (const auto& page : d.pages)
+      for (const auto& t : page.texts)
+        if (t.text.starts_with(start)) return t.text;
+    return std::string();
+  };
+  CHECK(said("FIRST CORNER?") == "FIRST CORNER? " + first);
+  CHECK(said("SECOND CORNER?") == "SECOND CORNER? " + second);
+  // The corners come back in image units, within a screen point of 0 0 and 10 10.
+  const std::string zoomed = said("               ZOOMED TO ");
+  REQUIRE(!zoomed.empty());
+  double x0 = 1, y0 = 1, x1 = 0, y1 = 0;
+  REQUIRE(std::sscanf(zoomed.c_str(), " ZOOMED TO %lf %lf %lf %lf", &x0, &y0, &x1, &y1) == 4);
+  CHECK(std::abs(x0) <= 1 / unit);
+  CHECK(std::abs(y0) <= 1 / unit);
+  CHECK(std::abs(x1 - 10) <= 1 / unit);
+  CHECK(std::abs(y1 - 10) <= 1 / unit);
+}
+
+}  // namespace igds::test
