@@ -5,6 +5,7 @@
 
 #include "workspace/disk/frame.h"
 #include "workspace/images.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
 
@@ -158,23 +159,29 @@ std::string encode_journal(const Journal& journal, const Workspace& ws) {
           k.number = static_cast<std::uint32_t>(s);
         }
       }
-      if (k.kind == no_image) {
-        if (auto recipe = journal.recipe_of(image)) {
-          if (auto state = state_of.find(recipe->first); state != state_of.end()) {
-            k.kind = recipe_image;
-            k.number = static_cast<std::uint32_t>(state->second);
-            k.desim = recipe->second;
+      // An image made only now (one the session brought back by recipe) that the kernels
+      // refuse to draw cannot be kept: the steps that need it are left out.
+      try {
+        if (k.kind == no_image) {
+          if (auto recipe = journal.recipe_of(image)) {
+            if (auto state = state_of.find(recipe->first); state != state_of.end()) {
+              k.kind = recipe_image;
+              k.number = static_cast<std::uint32_t>(state->second);
+              k.desim = recipe->second;
+            }
           }
         }
-      }
-      if (k.kind == no_image) {
-        Writer w;
-        w.image(*image);
-        if (w.size() <= journal_image_limit && stored + w.size() <= journal_images_limit) {
-          k.kind = stored_image;
-          k.bytes = w.str();
-          stored += w.size();
+        if (k.kind == no_image) {
+          Writer w;
+          w.image(*image);
+          if (w.size() <= journal_image_limit && stored + w.size() <= journal_images_limit) {
+            k.kind = stored_image;
+            k.bytes = w.str();
+            stored += w.size();
+          }
         }
+      } catch (const DataError&) {
+        k = Kept{};
       }
       const bool ok = k.kind != no_image;
       kept.emplace(id, std::move(k));
@@ -250,8 +257,10 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
     Description desim;
     ImageRef image;
   };
-  std::vector<Entry> entries(r.u32());
-  if (entries.size() > r.left()) throw Damage("FORMAT");
+  // Each count is checked against what is left before anything is made of that size.
+  const std::uint32_t image_count = r.u32();
+  if (image_count > r.left()) throw Damage("FORMAT");
+  std::vector<Entry> entries(image_count);
   const ImageSlots slots = images_of(ws);
   std::vector<std::size_t> wanted;
   for (Entry& e : entries) {
@@ -262,7 +271,7 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
       const std::uint64_t n = r.u64();
       if (n > journal_image_limit) throw Damage("FORMAT");
       Reader image_reader(r.bytes(static_cast<std::size_t>(n)));
-      auto image = std::make_shared<Image>(image_reader.image());
+      auto image = std::make_shared<Image>(image_reader.image(journal_image_limit / 8));
       image_reader.finish();
       if (auto p = image_problem(*image)) throw Damage("IMAGE: " + p->reason);
       e.image = std::shared_ptr<const Image>(std::move(image));
