@@ -1,6 +1,7 @@
 #include "workspace/journal.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
@@ -292,10 +293,17 @@ std::optional<std::string> Journal::rebuild(const Workspace& ws, std::vector<Jou
         if (probe.nostr != 0 || probe.intcu != 0 || probe.intst != 0 || !probe.inppn.empty() ||
             !probe.inptg.empty())
           return "STATE WITHOUT A SURFACE";
-      } else {
+      } else if (step.inppn.whole || step.inptg.whole || !step.inptg.unchanged() ||
+                 step.before.nocur != step.after.nocur || step.before.nostr != step.after.nostr ||
+                 step.before.intcu != step.after.intcu || step.before.intst != step.after.intst) {
         if (auto p = size_problem(probe.nocur, probe.nostr, probe.intcu, probe.intst))
           return p->reason;
         if (auto p = surface_problem(probe)) return p->reason;
+      } else {
+        // Only ranges of INPPN changed, in a state that was checked whole: their values alone
+        // (a start costs what the steps changed, not their number times INPPN).
+        for (double v : back ? step.inppn.before : step.inppn.after)
+          if (!std::isfinite(v)) return "INPPN HOLDS A NUMBER THAT IS NOT FINITE";
       }
       for (std::size_t w = 0; w < wanted.size(); ++w)
         if (wanted[w] == state)
