@@ -40,7 +40,7 @@ REDO makes again what UNDO undid; a command that changes the workspace
 after UNDO ends what REDO could make again. The last 200 commands are
 kept (fewer when they changed very large surfaces whole), and they
 stay on the disk with the session: UNDO works after END and a new start.
-NOTHING TO UNDO: the workspace is as the first command kept found it.
+NOTHING TO UNDO: no earlier state is kept (a new disk, or all undone).
 
 Example:
   CHANGE POINTS

@@ -338,3 +338,37 @@ TEST_CASE("a journal damaged at random is refused or gives states the workspace 
   }
   MESSAGE(accepted, " of 3000 damaged journals accepted, every state checked");
 }
+
+TEST_CASE("a surface replaced whole (RESTORE) keeps the parts that differ, or both whole") {
+  Workspace ws = test::make_interpolated(30, 30, 0, 0);
+  saved(ws);
+  Journal j(ws);
+  const Workspace before = ws;
+  // The same shapes, three values apart: three short ranges, not 2 x 21.6 KB.
+  CHECK(command(j, ws, "RESTORE", [&] {
+    ws.inppn.ravel[10] = 1;
+    ws.inppn.ravel[14] = 2;  // within 8 of the first: one range
+    ws.inppn.ravel[2000] = 3;
+    ws.changes.replaced();
+  }));
+  const JournalStep& step = j.steps().back();
+  CHECK(!step.inppn.whole);
+  CHECK(step.inppn.ranges ==
+        std::vector<std::pair<std::size_t, std::size_t>>{{10, 15}, {2000, 2001}});
+  CHECK(step.inptg.unchanged());
+  const Workspace restored = ws;
+  // Most values changed: both arrays whole.
+  CHECK(command(j, ws, "RESTORE", [&] {
+    for (double& v : ws.inppn.ravel) v += 1;
+    ws.changes.replaced();
+  }));
+  CHECK(j.steps().back().inppn.whole);
+  // The same surface again: no step.
+  CHECK_FALSE(command(j, ws, "RESTORE", [&] { ws.changes.replaced(); }));
+  // (The test changed the inputs alone; UNDO interpolates them again.)
+  j.undo(ws);
+  CHECK(test::same_bits(ws.inppn, restored.inppn));
+  CHECK(test::same_bits(ws.inptg, restored.inptg));
+  j.undo(ws);
+  test::check_same_surface(ws, before);
+}
