@@ -39,7 +39,9 @@ the disk (SAVE, STORE FILE, WRITE, PLOT) are not taken back.
 REDO makes again what UNDO undid; a command that changes the workspace
 after UNDO ends what REDO could make again. The last 200 commands are
 kept (fewer when they changed very large surfaces whole), and they
-stay on the disk with the session: UNDO works after END and a new start.
+stay on the disk with the session: UNDO works after END and a new start
+(back to a BUILD or RESTORE of more than about 45 x 45 points: those
+only the run that made them can undo).
 NOTHING TO UNDO: no earlier state is kept (a new disk, or all undone).
 
 Example:

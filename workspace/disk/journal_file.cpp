@@ -188,7 +188,13 @@ std::string encode_journal(const Journal& journal, const Workspace& ws) {
       if (ok) order.push_back(image);
       return ok;
     };
+    std::size_t values = 0;
     auto step_kept = [&](const JournalStep& s) {
+      // The session file is written again after every change: a step that replaced large
+      // arrays whole stays in memory only.
+      const std::size_t bytes = s.inppn.bytes() + s.inptg.bytes();
+      if (bytes > journal_step_limit || values + bytes > journal_values_limit) return false;
+      values += bytes;
       bool ok = true;
       for (const auto* images : {&s.images_before, &s.images_after})
         for (const ImageRef& image : *images) ok = keep(image) && ok;

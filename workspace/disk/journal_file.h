@@ -17,6 +17,11 @@ namespace igds::disk {
 inline constexpr std::size_t journal_image_limit = 256u << 10;
 // And all the images it keeps by their points together.
 inline constexpr std::size_t journal_images_limit = 2u << 20;
+// The values of one step's INPPN and INPTG on the disk, and of all steps: the session file (and
+// the journal in it) is written again after every change, so that a step that replaced a large
+// surface whole (BUILD, RESTORE of more than about 45 x 45 points) is undone in this run only.
+inline constexpr std::size_t journal_step_limit = 64u << 10;
+inline constexpr std::size_t journal_values_limit = 512u << 10;
 
 // The journal saved with `ws` (its images are named by slot, not written again).
 std::string encode_journal(const Journal& journal, const Workspace& ws);
