@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <stdexcept>
 
 #include "workspace/kernels/surface.h"
@@ -201,8 +202,25 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
   return true;
 }
 
+std::size_t Journal::held_image_bytes() const {
+  std::set<const void*> seen;
+  for (const ImageRef& image : images_) seen.insert(image.watch().lock().get());
+  std::size_t bytes = 0;
+  for (const JournalStep& s : steps_) {
+    for (const auto* images : {&s.images_before, &s.images_after}) {
+      for (const ImageRef& image : *images) {
+        // An image not made yet (a recipe read from the disk) holds nothing.
+        if (!image || !image.made() || !seen.insert(image.watch().lock().get()).second) continue;
+        bytes += (image->points.size() + image->arrows.size()) * sizeof(double);
+      }
+    }
+  }
+  return bytes;
+}
+
 void Journal::bound() {
-  while (!steps_.empty() && (steps_.size() > max_steps || bytes_ > max_bytes)) {
+  while (!steps_.empty() && (steps_.size() > max_steps || bytes_ > max_bytes ||
+                             held_image_bytes() > max_image_bytes)) {
     if (position_ > 0) {
       bytes_ -= steps_.front().bytes();
       steps_.erase(steps_.begin());

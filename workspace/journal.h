@@ -78,6 +78,9 @@ class Journal {
   // larger than max_bytes alone cannot be undone: the journal starts again after it.
   static constexpr std::size_t max_steps = 200;
   static constexpr std::size_t max_bytes = 4u << 20;
+  // The images only the journal still holds (drawn earlier, replaced since): a surface image of
+  // 4 M points is 64 MB.
+  static constexpr std::size_t max_image_bytes = 256u << 20;
 
   Journal() = default;
   // `ws` is the current state; nothing to undo or redo.
@@ -125,6 +128,8 @@ class Journal {
  private:
   void apply(Workspace& ws, const JournalStep& step, bool back);
   void bound();
+  // The bytes of the images the steps hold that are not in the workspace's slots now.
+  std::size_t held_image_bytes() const;
 
   std::vector<JournalStep> steps_;
   std::size_t position_ = 0;
