@@ -15,7 +15,7 @@ namespace {
 
 // Bit for bit: -0.0 and NaNs are values of their own, as the session keeps them.
 bool same_bits(const double* a, const double* b, std::size_t n) {
-  return std::memcmp(a, b, n * sizeof(double)) == 0;
+  return n == 0 || std::memcmp(a, b, n * sizeof(double)) == 0;
 }
 
 // Runs of differing elements closer than this are kept as one range (fewer ranges to store).
