@@ -13,6 +13,7 @@
 #include "devices/plot.h"
 #include "devices/terminal.h"
 #include "workspace/disk/disk.h"
+#include "workspace/journal.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -62,6 +63,8 @@ class Context {
   virtual Workspace& workspace() = 0;
   virtual const Options& options() const = 0;
   virtual const Disk& disk() const = 0;
+  // The states of the workspace after each command that changed it (UNDO, REDO).
+  virtual Journal& journal() = 0;
 
   // The words of the next reply: the words still unread on the command line, if any (all of
   // them), else the words of a line read after showing `prompt`. HELP, HELP SHORT and HELP LONG

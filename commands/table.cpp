@@ -17,14 +17,17 @@ extern const Command help_command;
 extern const Command erase_command;
 extern const Command export_command;
 extern const Command list_command;
+extern const Command undo_command;
+extern const Command redo_command;
 extern const Command zoom_command;
 
 std::span<const Command* const> command_table() {
   // The order is part of the language: `S` is STORE because STORE comes before SAVE.
-  static const std::array<const Command*, 14> table{
-      &build_command, &change_command, &restore_command, &display_command, &plot_command,
-      &store_command, &save_command,   &write_command,   &end_command,     &help_command,
-      &erase_command, &export_command, &list_command,    &zoom_command,
+  static const std::array<const Command*, 16> table{
+      &build_command, &change_command, &restore_command, &display_command,
+      &plot_command,  &store_command,  &save_command,    &write_command,
+      &end_command,   &help_command,   &erase_command,   &export_command,
+      &list_command,  &undo_command,   &redo_command,    &zoom_command,
   };
   return table;
 }

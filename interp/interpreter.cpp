@@ -54,7 +54,8 @@ Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace
       disk_(std::move(disk)),
       session_(session),
       ws_(std::move(ws)),
-      terminal_(terminal) {}
+      terminal_(terminal),
+      journal_(session.take_journal(ws_)) {}
 
 Interpreter::Outcome Interpreter::converse() {
   input_ended_ = false;
@@ -132,6 +133,8 @@ void Interpreter::run_command(const std::vector<std::string>& words) {
   const Command* command = find_command(words[0]);
   if (!command) throw Report(reports::incorrect_command);
   current_ = command;
+  // A command run from END APL (COMDIS ...) is part of the END APL step.
+  if (!in_apl_) step_name_ = std::string(command->name);
   pending_.assign(words.begin() + 1, words.end());
   on_line_ = true;
   const Choice* option = nullptr;
@@ -149,6 +152,7 @@ void Interpreter::run_command(const std::vector<std::string>& words) {
       unread(std::move(reply));
     }
   }
+  if (option && !in_apl_) step_name_ = fmt::format("{} {}", command->name, option->word);
   command->run(*this, option);
 }
 
@@ -231,7 +235,10 @@ void Interpreter::end_session(bool apl) {
 
 void Interpreter::save() {
   try {
-    session_.save(ws_);
+    // Here a command that changed the workspace becomes a step of the journal, before the
+    // session forgets which parts of the inputs it changed (Workspace::changes).
+    journal_.record(ws_, step_name_);
+    session_.save(ws_, &journal_);
     if (!save_failure_.empty()) say("THE SESSION IS SAVED AGAIN");
     save_failure_.clear();
   } catch (const Error& r) {
@@ -270,6 +277,7 @@ Interpreter::Outcome Interpreter::apl_environment() {
     apl_ = std::make_unique<AplEnvironment>(ws_, std::move(hooks));
   }
   apl_->forget();
+  step_name_ = "END APL";
   // Leaving APL, by START or by )OFF: the workspace made whole again, or why it cannot be.
   auto leave_apl = [this]() {
     auto problem = apl_->start();

@@ -36,7 +36,8 @@ class Interpreter final : public Context {
   // commands, their options and what the options take; at a question its answers and HELP.
   std::vector<std::string> completions(const std::vector<std::string>& before) const;
 
-  // Saves the session: done after every command and at the end. A failure is reported once
+  // Saves the session, with the undo journal (the command just run is a step of it when it
+  // changed the workspace): done after every command and at the end. A failure is reported once
   // for as long as saves keep failing for the same reason, and once more when they work again.
   void save();
   // True when the last save worked: the disk holds the session as it is now.
@@ -48,6 +49,7 @@ class Interpreter final : public Context {
   Workspace& workspace() override { return ws_; }
   const Options& options() const override { return options_; }
   const Disk& disk() const override { return disk_; }
+  Journal& journal() override { return journal_; }
   std::vector<std::string> ask(const Prompt& prompt) override;
   void unread(std::vector<std::string> words) override;
   bool has_pending() const override { return !pending_.empty(); }
@@ -75,6 +77,8 @@ class Interpreter final : public Context {
   Session& session_;
   Workspace ws_;
   Terminal& terminal_;
+  Journal journal_;        // UNDO and REDO: a step recorded before each save that has changes
+  std::string step_name_;  // the last command run and its option, e.g. "CHANGE POINTS"
   const Command* current_ = nullptr;  // the command being run (nullptr at READY)
   const Prompt* asking_ = nullptr;    // the question being asked (for completion)
   bool in_apl_ = false;

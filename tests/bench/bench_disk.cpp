@@ -13,7 +13,10 @@
 #include "tests/bench/bench.h"
 #include "workspace/disk/cards.h"
 #include "workspace/disk/disk.h"
+#include "workspace/disk/frame.h"
 #include "workspace/disk/session.h"
+#include "workspace/disk/session_file.h"
+#include "workspace/journal.h"
 #include "workspace/kernels/surface.h"
 
 namespace {
@@ -130,6 +133,70 @@ IGDS_BENCH("disk") {
   fmt::print("restore_100x100_int10_ms {:.3f}\n", restore * 1e3);
   double save = bench::best_seconds(10, [&] { save_surface(disk, "HULL", fine); });
   fmt::print("save_100x100_int10_ms {:.3f}\n", save * 1e3);
+}
+
+// The undo journal (workspace/journal.h): 200 CHANGE POINTS of one point each on the 100 x 100
+// surface with INTCU = INTST = 10, each recorded and autosaved as the interpreter does; the bytes
+// the journal keeps, in memory and in the session file, the cost of a step, UNDO, and the start.
+IGDS_BENCH("journal") {
+  Folder folder;
+  Disk disk(folder.path);
+  Workspace ws = surface(10, 10);
+  double record = 1e300, save = 1e300, save_without = 1e300;
+  {
+    Session session(disk);
+    session.load();
+    Journal journal(ws);
+    session.save(ws, &journal);
+    for (int c = 0; c < 200; ++c) {
+      const std::size_t k = std::size_t(c * 37) % std::size_t(n * n);
+      ws.inppn.ravel[3 * k + 2] = c;
+      Edits points = Edits::none();
+      points.part(3 * k, 3 * k + 3);
+      ws.changes.edited(points, Edits::none());
+      Surface s = interpolate({n, n, ws.intcu, ws.intst, &ws.inppn, &ws.inptg});
+      ws.patches = std::move(s.patches);
+      ws.intpn = std::move(s.intpn);
+      record =
+          std::min(record, bench::best_seconds(1, [&] { journal.record(ws, "CHANGE POINTS"); }));
+      save = std::min(save, bench::best_seconds(1, [&] { session.save(ws, &journal); }));
+    }
+    fmt::print("journal_200_change_points_100x100_steps {}\n", journal.undo_count());
+    fmt::print("journal_200_change_points_100x100_memory_bytes {}\n", journal.bytes());
+    fmt::print("journal_record_change_point_us {:.1f}\n", record * 1e6);
+    fmt::print("autosave_change_point_with_journal_ms {:.3f}\n", save * 1e3);
+    double undo = 1e300;
+    for (int r = 0; r < 5; ++r) {
+      undo = std::min(undo, bench::best_seconds(1, [&] { journal.undo(ws); }));
+      session.save(ws, &journal);
+    }
+    fmt::print("undo_change_point_100x100_int10_ms {:.3f}\n", undo * 1e3);
+  }
+  std::ifstream in(folder.path / "BINSAVE.IGDSCONT", std::ios::binary);
+  const std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto table = disk::decode_session(disk::unframe("IGDSCONT", file).payload);
+  fmt::print("journal_200_change_points_100x100_disk_bytes {}\n", table.journal.size());
+  fmt::print("session_file_with_journal_bytes {}\n", file.size());
+  double load = bench::best_seconds(5, [&] {
+    Session session(disk);
+    Workspace loaded = session.load();
+    if (session.take_journal(loaded).undo_count() != 195) fmt::print("journal: wrong steps\n");
+  });
+  fmt::print("session_load_with_journal_100x100_int10_ms {:.3f}\n", load * 1e3);
+  // The same autosave without a journal, for comparison.
+  {
+    Session session(disk);
+    Workspace loaded = session.load();
+    session.save(loaded);
+    for (int c = 0; c < 20; ++c) {
+      loaded.inppn.ravel[2] = c;
+      Edits points = Edits::none();
+      points.part(0, 3);
+      loaded.changes.edited(points, Edits::none());
+      save_without = std::min(save_without, bench::best_seconds(1, [&] { session.save(loaded); }));
+    }
+  }
+  fmt::print("autosave_change_point_without_journal_ms {:.3f}\n", save_without * 1e3);
 }
 
 IGDS_BENCH("cards") {

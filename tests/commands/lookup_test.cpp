@@ -85,17 +85,20 @@ TEST_CASE("choose takes the first entry that starts with the letters typed") {
 TEST_CASE("the command table is the manual's, then the project's additions") {
   std::vector<std::string_view> got;
   for (const Command* c : command_table()) got.push_back(c->name);
-  const std::vector<std::string_view> expected{"BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT",
-                                               "STORE", "SAVE",   "WRITE",   "END",     "HELP",
-                                               "ERASE", "EXPORT", "LIST",    "ZOOM"};
+  const std::vector<std::string_view> expected{
+      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE",
+      "END",   "HELP",   "ERASE",   "EXPORT",  "LIST", "UNDO",  "REDO", "ZOOM"};
   CHECK(got == expected);
 }
 
 TEST_CASE("every one- and two-letter abbreviation of a command") {
   CHECK(resolved(names()) ==
-        table("B=BUILD C=CHANGE D=DISPLAY E=END H=HELP L=LIST P=PLOT R=RESTORE S=STORE W=WRITE "
-              "Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT HE=HELP LI=LIST "
-              "PL=PLOT RE=RESTORE SA=SAVE ST=STORE WR=WRITE ZO=ZOOM"));
+        table("B=BUILD C=CHANGE D=DISPLAY E=END H=HELP L=LIST P=PLOT R=RESTORE S=STORE U=UNDO "
+              "W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT HE=HELP "
+              "LI=LIST PL=PLOT RE=RESTORE SA=SAVE ST=STORE UN=UNDO WR=WRITE ZO=ZOOM"));
+  // REDO comes after RESTORE: R and RE stay RESTORE, RED is REDO.
+  CHECK(find_command("RED")->name == "REDO");
+  CHECK(find_command("RES")->name == "RESTORE");
 }
 
 TEST_CASE("every one- and two-letter abbreviation of an option, and of the words answered") {
@@ -105,6 +108,8 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(command("WRITE").options.empty());
   CHECK(command("ERASE").options.empty());
   CHECK(command("ZOOM").options.empty());
+  CHECK(command("UNDO").options.empty());
+  CHECK(command("REDO").options.empty());
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS"));
   CHECK(resolved(command("DISPLAY").options) ==

@@ -44,7 +44,8 @@ class FakeContext final : public Context {
   int reports = 0;
   int ends = -1;  // end_session: 1 APL, 0 CMS
   int erases = 0;
-  std::string terminal;  // bytes sent to the terminal as they are
+  std::string terminal;      // bytes sent to the terminal as they are
+  Journal undo_journal{ws};  // UNDO and REDO's; a test records steps in it as the interpreter does
 
   Workspace& workspace() override { return ws; }
   const Options& options() const override { return opts; }
@@ -94,6 +95,7 @@ class FakeContext final : public Context {
   void erase() override { ++erases; }
   void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
   void end_session(bool apl) override { ends = apl ? 1 : 0; }
+  Journal& journal() override { return undo_journal; }
 
   std::size_t unread_lines() const { return typed_.size(); }
 

@@ -15,6 +15,7 @@
 
 #include "workspace/disk/files.h"
 #include "workspace/disk/frame.h"
+#include "workspace/disk/journal_file.h"
 #include "workspace/disk/lock.h"
 #include "workspace/disk/session_file.h"
 #include "workspace/error.h"
@@ -86,7 +87,8 @@ struct Session::State {
   std::set<std::string> obsolete;  // files of a version 1 session, removed after the next save
   std::uint32_t next_number = 1;
   bool in_background = false;
-  std::future<Surface> deriving;  // PATCHES and INTPN being made (load in the background)
+  std::future<Surface> deriving;   // PATCHES and INTPN being made (load in the background)
+  std::optional<Journal> journal;  // the undo journal read by the last load
   // During a load: the variable files read and checked so far, and their payloads.
   mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
 
@@ -431,6 +433,19 @@ Workspace Session::State::read_session() {
   ws.changes.inppn.saved();
   ws.changes.inptg.saved();
   checked_.clear();
+  // The undo journal: refused alone (with a notice) when it does not fit the workspace.
+  journal.reset();
+  if (!t.journal.empty()) {
+    try {
+      journal = disk::decode_journal(t.journal, ws);
+    } catch (const disk::Damage& d) {
+      notices.push_back(fmt::format("UNDO JOURNAL IN {} DAMAGED ({}): NOTHING TO UNDO",
+                                    session_file(), d.reason()));
+    } catch (const DataError&) {
+      notices.push_back(
+          fmt::format("UNDO JOURNAL IN {} DAMAGED (DATA): NOTHING TO UNDO", session_file()));
+    }
+  }
   // PATCHES and INTPN, last: the inputs were checked, so nothing the kernels refuse. The task
   // has a copy of its own.
   if (t.current != 0 && t.derived)
@@ -601,7 +616,12 @@ Workspace Session::load(bool in_background) {
   return Workspace{};
 }
 
-void Session::save(Workspace& ws) {
+Journal Session::take_journal(const Workspace& ws) {
+  std::optional<Journal> j = std::exchange(state_->journal, std::nullopt);
+  return j ? std::move(*j) : Journal(ws);
+}
+
+void Session::save(Workspace& ws, const Journal* journal) {
   State& s = *state_;
   const SessionTable& old = s.saved;
   const Record* current = old.record(old.current);
@@ -629,6 +649,7 @@ void Session::save(Workspace& ws) {
   SessionTable next = old;
   next.status = ws.status;
   next.functions = ws.functions;
+  next.journal = journal ? disk::encode_journal(*journal, ws) : std::string();
   State::Writing w{s, next, {}};
   try {
     // The surface: a new record when it changed, sharing the pieces its edits left alone. A

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "workspace/disk/disk.h"
+#include "workspace/journal.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -31,13 +32,17 @@ class Session {
   // checked, and they are made while the designer reads READY: complete() must be called before
   // anything reads them (the interpreter calls it before each command).
   Workspace load(bool in_background = false);
+  // The undo journal load() read with the session (checked; one that is not is refused with a
+  // notice and the journal starts again), once: later calls give an empty one.
+  Journal take_journal(const Workspace& ws);
   void complete(Workspace& ws);
 
   // AUTONSAVE: makes `ws` the session on disk, crash-safely (old or new, never torn), writing
   // only what changed since the last save or load (ws.changes says what; it is reset here once
   // the new session is on disk). Throws Report when the disk refuses; the previous session
-  // stays on disk and the next save writes everything since it.
-  void save(Workspace& ws);
+  // stays on disk and the next save writes everything since it. The undo `journal` is saved with
+  // it (none: the session has none).
+  void save(Workspace& ws, const Journal* journal = nullptr);
 
   // What load() and the lock had to tell the user, in IGDS style, to print before READY.
   const std::vector<std::string>& notices() const;

@@ -11,6 +11,8 @@ namespace {
 // Far more than any legal session needs; a count beyond is a damaged file.
 constexpr std::uint32_t max_records = 16;
 constexpr std::uint32_t max_pieces = 1u << 16;
+// The tag of the journal's section ("JRNL").
+constexpr std::uint32_t journal_tag = 0x4c4e524a;
 
 void write_ref(Writer& w, const FileRef& f) {
   w.u32(f.number);
@@ -182,6 +184,11 @@ std::string encode_session(const SessionTable& t) {
       w.bytes(line);
     }
   }
+  if (!t.journal.empty()) {
+    w.u32(journal_tag);
+    w.u64(t.journal.size());
+    w.bytes(t.journal);
+  }
   return w.str();
 }
 
@@ -244,6 +251,12 @@ SessionTable decode_session(std::string_view payload) {
       f.resize(lines);
       for (auto& line : f) line = std::string(r.bytes(r.u32()));
     }
+  }
+  if (!r.at_end()) {
+    if (r.u32() != journal_tag) throw Damage("FORMAT");
+    const std::uint64_t n = r.u64();
+    if (n == 0 || n > r.left()) throw Damage("FORMAT");
+    t.journal = std::string(r.bytes(static_cast<std::size_t>(n)));
   }
   r.finish();
   return t;

@@ -74,6 +74,9 @@ struct SessionTable {
   // END APL's defined functions, each its lines (written after the images; a file without them,
   // from an igds that did not keep them, has none).
   std::vector<std::vector<std::string>> functions;
+  // The undo journal (workspace/disk/journal_file.h), as its own encoding: the last section,
+  // tagged; a file without it has an empty journal.
+  std::string journal;
 
   const Record* record(std::uint32_t id) const;
   Record* record(std::uint32_t id);
