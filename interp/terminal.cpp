@@ -210,7 +210,14 @@ Event Terminal::pick(std::string_view prompt) {
     out_.flush();
     std::string report;
     while (report.size() < 5) {
-      Event e = input_->key(std::nullopt);
+      // A key already read after the last report (looking for its EOT) begins this one.
+      Event e{Event::Kind::key, {}};
+      if (!typed_ahead_.empty()) {
+        e.text = std::move(typed_ahead_.front());
+        typed_ahead_.erase(typed_ahead_.begin());
+      } else {
+        e = input_->key(std::nullopt);
+      }
       if (e.kind != Event::Kind::key) return e;
       report += e.text;
     }
