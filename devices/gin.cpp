@@ -21,7 +21,7 @@ std::optional<GinReport> decode_gin(std::string_view bytes, int bits) {
     report.y = report.y * 4 + 2;
   }
   report.used = 5;
-  if (bytes.size() > 5 && bytes[5] == '\r') {
+  if (bytes.size() > 5 && (bytes[5] == '\r' || bytes[5] == '\n')) {
     report.used = 6;
     if (bytes.size() > 6 && bytes[6] == '\x04') report.used = 7;
   }

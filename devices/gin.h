@@ -22,7 +22,8 @@ struct GinReport {
 // five bytes, or an address byte outside 0x20..0x3F). `bits` is the width of the addresses the
 // host draws with: 10 (the 4013) gives the position as sent, 12 (--tek 4014) the same place in
 // 12-bit addresses (four times, the middle of the 4 x 4 cell). A CR, or a CR and an EOT, after
-// the address is the terminator and counted in `used`; anything else is left for what follows.
+// the address is the terminator and counted in `used` (a LF for the CR too: a tty with ICRNL
+// makes one of it); anything else is left for what follows.
 std::optional<GinReport> decode_gin(std::string_view bytes, int bits = 10);
 
 }  // namespace igds

@@ -221,11 +221,12 @@ Event Terminal::pick(std::string_view prompt) {
       if (e.kind != Event::Kind::key) return e;
       report += e.text;
     }
-    // The terminator, when the terminal sends one (CR, or CR and EOT).
+    // The terminator, when the terminal sends one (CR, or CR and EOT; the tty may have made
+    // the CR a LF).
     for (int k = 0; k < 2; ++k) {
       Event e = input_->key(std::chrono::milliseconds(50));
       if (e.kind != Event::Kind::key) break;
-      if (e.text != "\r" && e.text != "\x04") {
+      if (e.text != "\r" && e.text != "\n" && e.text != "\x04") {
         typed_ahead_.push_back(std::move(e.text));
         break;
       }

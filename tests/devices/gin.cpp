@@ -24,7 +24,7 @@ std::string report(char key, int x, int y, std::string terminator = "") {
 }  // namespace
 
 TEST_CASE("GIN: every terminator is taken with the report, and nothing after it") {
-  for (const std::string terminator : {"", "\r", "\r\x04"}) {
+  for (const std::string terminator : {"", "\r", "\r\x04", "\n", "\n\x04"}) {
     CAPTURE(terminator.size());
     const auto r = decode_gin(report('A', 500, 300, terminator) + "XY");
     REQUIRE(r);

@@ -117,6 +117,10 @@ TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, k
   // An item explains its command, with its HELP LONG text; a pick beside the menu is ignored.
   igds.send(menu.click("BUILD", true));
   REQUIRE(igds.expect("BUILD defines a new current surface"));
+  // Longer than the page: RETURN at MORE, then the cross-hair again.
+  REQUIRE(igds.expect("MORE: PRESS RETURN"));
+  igds.send("\r");
+  REQUIRE(igds.expect("Tangents are per unit of chord length"));
   REQUIRE(igds.expect(gin_on));
   const std::size_t before_miss = igds.output().size();
   igds.send(report('l', 300, 500));
