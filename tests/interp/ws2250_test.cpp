@@ -12,6 +12,7 @@
 
 #include "tests/support/process.h"
 #include "tests/support/scripted.h"
+#include "tests/support/tek_decoder.h"
 
 namespace igds {
 extern const Command build_command, display_command, store_command, end_command;
@@ -169,6 +170,35 @@ TEST_CASE("the function keys' pictures of a surface: all, stringers, curves, poi
   for (std::size_t j = 0; j < stringers.drawing.size(); ++j)
     CHECK(stringers.drawing.items()[j].id == Identity{Role::stringer, int(j) + 1});
   CHECK(stringers.caption == all.caption);
+}
+
+}  // namespace igds::test
+
+namespace igds::test {
+
+TEST_CASE("an animated display: the same bytes as at once, a key pressed ends the pace") {
+  auto image = std::make_shared<const Image>([] {
+    Image im;
+    im.desim = {1, Projection::orthogonal, {1, 0, 0}};
+    im.points = Array({3, 4, 2});
+    for (std::size_t i = 0; i < im.points.ravel.size(); ++i)
+      im.points.ravel[i] = static_cast<double>(i % 7) + static_cast<double>(i / 8);
+    return im;
+  }());
+  auto picture = std::make_shared<const Picture>(surface_view(image, SurfaceKey::stringers));
+  std::string at_once, paced;
+  for (const int frames : {1, 6}) {
+    Igds t(TermMode::tek, true);
+    t.input.type("x");  // pressed during the first pause
+    t.terminal.replace_picture(picture, frames, std::chrono::milliseconds(1));
+    CHECK(t.input.left() == (frames == 1 ? 1u : 0u));  // the key is taken (and dropped) by the pace
+    (frames == 1 ? at_once : paced) = t.out.text;
+  }
+  CHECK(paced == at_once);
+  const TekDrawing d = decode_tek(paced);
+  CHECK(d.errors.empty());
+  REQUIRE_FALSE(d.pages.empty());
+  CHECK(d.pages.back().segments.size() == segment_count(*picture));
 }
 
 }  // namespace igds::test
