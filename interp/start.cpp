@@ -147,8 +147,6 @@ int igds_main(int argc, char** argv) {
       terminal.use_input(&keys);
       outcome = Workspace2250(interpreter, terminal).run();
       terminal.use_input(nullptr);
-      // Alpha mode, and back to the VT window the session started in.
-      if (switch_window) out.write("\x1f\x1b\x03");
     } else if (outcome == Interpreter::Outcome::input_ended &&
                (files.empty() || line.then_interactive)) {
       const bool keyboard = isatty(STDIN_FILENO) == 1;
@@ -174,6 +172,8 @@ int igds_main(int argc, char** argv) {
       terminal.use_input(nullptr);
     }
     interpreter.save();
+    // Alpha mode, and back to the VT window the 2250 session started in.
+    if (switch_window) out.write("\x1f\x1b\x03");
     out.flush();
     if (outcome == Interpreter::Outcome::strict_stop) return 3;
     // The designer must learn from the status what the screen may not have shown.
