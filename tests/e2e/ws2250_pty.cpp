@@ -206,6 +206,17 @@ TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, k
     for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
   }
 
+  // HELP from the execution environment: the explanation on a page of its own, then RETURN
+  // gives back the picture that was on the screen.
+  igds.send(menu.click("HELP"));
+  REQUIRE(igds.expect("IGDS WITH A 2250"));
+  REQUIRE(igds.expect(gin_on));
+  CHECK(in_picture(decoded(igds.output()).pages.back(), square).empty());
+  igds.send(menu.click("RETURN", true));
+  REQUIRE(igds.expect("READY"));
+  REQUIRE(igds.expect(gin_on));
+  CHECK(in_picture(decoded(igds.output()).pages.back(), square).size() == 22);
+
   // ST FIRST, D FIRST, SAVE with a name typed, END CMS.
   igds.send(menu.click("ST FIRST"));
   REQUIRE(igds.expect("READY"));
