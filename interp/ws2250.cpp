@@ -13,8 +13,8 @@ constexpr std::string_view general_help = R"(IGDS WITH A 2250: THE LIGHT PEN IS 
 
 The menu on the right is always on the screen: move the
 cross-hair onto an item with the mouse and click (or press
-any key). An item is a command and its option at once (D
-SURFACE is DISPLAY SURFACE).
+any key). An item is a command and its option at once
+(D SURFACE is DISPLAY SURFACE).
 
 Two environments. In this one, the help environment, picking
 an item explains its command; RETURN goes to the execution
