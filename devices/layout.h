@@ -29,6 +29,7 @@ struct TekLayout {
   int caption_rows = 0;  // lines that fit in it
   int dialogue_top = 0;  // the baseline of the first line of dialogue below the picture
   int dialogue_rows = 0;
+  int dialogue_columns = 0;  // characters of a dialogue row; 0: the whole width (text_columns)
 };
 
 // The picture alone on the screen (EXPORT TEK, EXPORT SVG, the Tek window of --term xterm): the

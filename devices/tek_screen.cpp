@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "devices/render.h"
 #include "devices/tek_glyphs.h"
 
 namespace igds {
@@ -76,9 +77,9 @@ TekScreen::TekScreen(TekOptions tek, bool dialogue)
       layout_(dialogue ? dialogue_layout() : full_layout()) {}
 
 TekScreen::Flow TekScreen::flow() const {
-  if (picture_ && !in_document_)
-    return {0, layout_.dialogue_top, text_columns, layout_.dialogue_rows};
-  return {0, tek_screen::text_top, text_columns, text_rows};
+  const int columns = layout_.dialogue_columns > 0 ? layout_.dialogue_columns : text_columns;
+  if (picture_ && !in_document_) return {0, layout_.dialogue_top, columns, layout_.dialogue_rows};
+  return {0, tek_screen::text_top, columns, text_rows};
 }
 
 int TekScreen::rows_per_page() const {
@@ -186,11 +187,49 @@ void TekScreen::draw_picture_and_captions() {
   }
 }
 
+void TekScreen::draw_frame() {
+  if (!frame_) return;
+  const double u = unit_;
+  render(*frame_, Placement{u, 0, 0},
+         {0, 0, u * (tek_screen::width - 1), u * (tek_screen::height - 1)}, Rendering{.point = u},
+         tek_);
+  tek_.style({});
+  cursor_.reset();
+}
+
+void TekScreen::set_frame(std::shared_ptr<const Drawing2> frame, const TekLayout& layout) {
+  frame_ = std::move(frame);
+  layout_ = layout;
+}
+
+TekScreen::Parts TekScreen::replace_picture(std::shared_ptr<const Picture> picture) {
+  Parts parts;
+  overlaid_.clear();
+  picture_ = std::move(picture);
+  captions_ = picture_->caption;
+  in_document_ = false;
+  cursor_.reset();
+  tek_.page();
+  ++pages_;
+  draw_frame();
+  parts.before = take();
+  draw_picture_and_captions();
+  parts.picture = take();
+  draw_dialogue();
+  parts.after = take();
+  return parts;
+}
+
 void TekScreen::new_page() {
   cursor_.reset();
   tek_.page();
   ++pages_;
+  draw_frame();
   if (!in_document_) draw_picture_and_captions();
+  draw_dialogue();
+}
+
+void TekScreen::draw_dialogue() {
   int row = 0;
   for (const auto& line : lines_) {
     for (const auto& r : wrap(line, flow().columns)) emit(row++, 0, r);
@@ -352,8 +391,8 @@ std::string TekScreen::erase() {
   return take();
 }
 
-std::string TekScreen::document_page() {
-  if (!picture_ || in_document_) return {};
+std::string TekScreen::document_page(bool always) {
+  if ((!picture_ && !always) || in_document_) return {};
   saved_lines_ = lines_;
   saved_open_ = open_;
   in_document_ = true;

@@ -49,9 +49,23 @@ class TekScreen {
   std::string erase();
   // A page of its own for a long text (HELP LONG, a listing) over the full screen, and back to
   // the page as it was afterwards.
-  std::string document_page();
+  // `always`: a page of its own even without a picture (the 2250's help environment, which
+  // gives back the page as it was when it ends).
+  std::string document_page(bool always = false);
   std::string end_document();
   bool in_document() const { return in_document_; }
+
+  // A drawing on every page before anything else (the 2250's menu) and the layout that keeps the
+  // picture, the captions and the dialogue clear of it. Takes effect at the next page.
+  void set_frame(std::shared_ptr<const Drawing2> frame, const TekLayout& layout);
+
+  // The current picture replaced by `picture` on a page of its own, the dialogue kept (the
+  // 2250's function keys): the page's bytes in three parts, so that the picture's may be sent
+  // at a pace of its own.
+  struct Parts {
+    std::string before, picture, after;
+  };
+  Parts replace_picture(std::shared_ptr<const Picture> picture);
 
   // The same page once more (after a terminal was cleared by something else).
   std::string repaint();
@@ -93,6 +107,8 @@ class TekScreen {
   // Appends to the open line and shows the change, redrawing when rows already shown change.
   void append(std::u32string_view text);
   void draw_picture_and_captions();
+  void draw_frame();
+  void draw_dialogue();
   // The alpha cursor to (x, y) in 4013 points, unless it is there already.
   void move_cursor(int x, int y);
   std::string take() { return tek_.take(); }
@@ -115,7 +131,8 @@ class TekScreen {
   std::vector<std::u32string> saved_lines_;  // the dialogue before a document
   bool saved_open_ = false;
   int pages_ = 0;
-  std::optional<DevicePoint> cursor_;  // where the alpha cursor is, in 4013 points, when known
+  std::shared_ptr<const Drawing2> frame_;  // drawn first on every page (the 2250's menu)
+  std::optional<DevicePoint> cursor_;      // where the alpha cursor is, in 4013 points, when known
 };
 
 // UTF-8 to code points and back (a malformed byte is U+FFFD).

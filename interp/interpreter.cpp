@@ -59,10 +59,8 @@ Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace
 
 Interpreter::Outcome Interpreter::converse() {
   input_ended_ = false;
+  // --strict stops at the first error of this input.
   const int errors_before = errors_;
-  auto strict_stop = [&] {
-    return options_.strict && terminal_.command_file() && errors_ > errors_before;
-  };
   for (;;) {
     const Event e = terminal_.read_line("", ready_due_ ? "READY" : "");
     ready_due_ = false;
@@ -74,23 +72,47 @@ Interpreter::Outcome Interpreter::converse() {
     auto words = split_words(e.text);
     if (words.empty()) continue;
     execute(words);
-    save();
-    ready_due_ = true;
-    if (terminal_.output_failed()) return Outcome::ended;
-    if (strict_stop()) return Outcome::strict_stop;
-    if (ending_ == Ending::cms) return Outcome::ended;
-    if (ending_ == Ending::apl) {
-      ending_ = Ending::none;
-      Outcome outcome = apl_environment();
-      save();
-      if (strict_stop()) return Outcome::strict_stop;
-      if (outcome != Outcome::input_ended) return outcome;
-    }
-    if (input_ended_) return Outcome::input_ended;
+    if (auto outcome = after_command(errors_before)) return *outcome;
   }
 }
 
+std::optional<Interpreter::Outcome> Interpreter::run_chosen(const Command& command,
+                                                            const Choice* option) {
+  input_ended_ = false;
+  const int errors_before = errors_;
+  perform([&] {
+    current_ = &command;
+    on_line_ = true;
+    run_with(command, option);
+  });
+  return after_command(errors_before);
+}
+
+std::optional<Interpreter::Outcome> Interpreter::after_command(int errors_before) {
+  auto strict_stop = [&] {
+    return options_.strict && terminal_.command_file() && errors_ > errors_before;
+  };
+  save();
+  ready_due_ = true;
+  if (terminal_.output_failed()) return Outcome::ended;
+  if (strict_stop()) return Outcome::strict_stop;
+  if (ending_ == Ending::cms) return Outcome::ended;
+  if (ending_ == Ending::apl) {
+    ending_ = Ending::none;
+    Outcome outcome = apl_environment();
+    save();
+    if (strict_stop()) return Outcome::strict_stop;
+    if (outcome != Outcome::input_ended) return outcome;
+  }
+  if (input_ended_) return Outcome::input_ended;
+  return std::nullopt;
+}
+
 void Interpreter::execute(const std::vector<std::string>& words) {
+  perform([&] { run_command(words); });
+}
+
+void Interpreter::perform(const std::function<void()>& run) {
   current_ = nullptr;
   asking_ = nullptr;
   pending_.clear();
@@ -102,7 +124,7 @@ void Interpreter::execute(const std::vector<std::string>& words) {
   try {
     // PATCHES and INTPN of a session just loaded are made while the first line is typed.
     session_.complete(ws_);
-    run_command(words);
+    run();
   } catch (const StrictStop&) {
     // The report is printed; converse() stops.
   } catch (const Error& r) {
@@ -133,27 +155,31 @@ void Interpreter::run_command(const std::vector<std::string>& words) {
   const Command* command = find_command(words[0]);
   if (!command) throw Report(reports::incorrect_command);
   current_ = command;
-  // A command run from END APL (COMDIS ...) is part of the END APL step.
-  if (!in_apl_) step_name_ = std::string(command->name);
   pending_.assign(words.begin() + 1, words.end());
   on_line_ = true;
   const Choice* option = nullptr;
-  if (!command->options.empty()) {
-    if (!pending_.empty()) {
-      option = choose(command->options, pending_.front());
-      pending_.erase(pending_.begin());
-      if (!option) throw Report(command->bad_option);
-    } else if (!command->option_prompt.text.empty()) {
-      std::vector<std::string> reply;
-      while (reply.empty()) reply = ask(command->option_prompt);
-      option = choose(command->options, reply.front());
-      if (!option) throw Report(command->bad_option);
-      reply.erase(reply.begin());
-      unread(std::move(reply));
-    }
+  if (!command->options.empty() && !pending_.empty()) {
+    option = choose(command->options, pending_.front());
+    pending_.erase(pending_.begin());
+    if (!option) throw Report(command->bad_option);
   }
-  if (option && !in_apl_) step_name_ = fmt::format("{} {}", command->name, option->word);
-  command->run(*this, option);
+  run_with(*command, option);
+}
+
+void Interpreter::run_with(const Command& command, const Choice* option) {
+  if (!option && !command.options.empty() && !command.option_prompt.text.empty()) {
+    std::vector<std::string> reply;
+    while (reply.empty()) reply = ask(command.option_prompt);
+    option = choose(command.options, reply.front());
+    if (!option) throw Report(command.bad_option);
+    reply.erase(reply.begin());
+    unread(std::move(reply));
+  }
+  // A command run from END APL (COMDIS ...) is part of the END APL step.
+  if (!in_apl_)
+    step_name_ =
+        option ? fmt::format("{} {}", command.name, option->word) : std::string(command.name);
+  command.run(*this, option);
 }
 
 std::vector<std::string> Interpreter::ask(const Prompt& prompt) {

@@ -4,6 +4,7 @@
 // particular command: everything comes from the commands' declarations (commands/command.h).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -31,6 +32,12 @@ class Interpreter final : public Context {
   // Runs READY / command on the terminal's input until it ends, END, or a --strict stop. The
   // session is saved after every command.
   Outcome converse();
+
+  // The other way of choosing a command (the 2250's light pen): `command` with `option` already
+  // chosen (nullptr: asked as when it is not typed), run exactly as the typed line would be:
+  // the same questions, HELP, reports, the session saved after it, END APL's environment.
+  // Returns how the conversation ends when it does (END CMS, an output that failed).
+  std::optional<Outcome> run_chosen(const Command& command, const Choice* option);
 
   // The words that may complete the next word of a line that has `before` so far: at READY the
   // commands, their options and what the options take; at a question its answers and HELP.
@@ -67,7 +74,14 @@ class Interpreter final : public Context {
   enum class Ending { none, cms, apl };
   // Runs one command line (words not empty); reports what goes wrong.
   void execute(const std::vector<std::string>& words);
+  // Runs `run` as a command: what goes wrong is reported, READY follows.
+  void perform(const std::function<void()>& run);
   void run_command(const std::vector<std::string>& words);
+  // The command with its option; the option is asked when it is null and the command has some.
+  void run_with(const Command& command, const Choice* option);
+  // After a command: the session saved, END and END APL, --strict; an outcome when the
+  // conversation ends there.
+  std::optional<Outcome> after_command(int errors_before);
   // HELP, HELP SHORT or HELP LONG typed at a question: answered, true.
   bool answer_help(const std::vector<std::string>& words, const Prompt& prompt);
   Outcome apl_environment();

@@ -19,6 +19,7 @@
 #include "interp/input.h"
 #include "interp/interpreter.h"
 #include "interp/version.h"
+#include "interp/ws2250.h"
 #include "workspace/disk/session.h"
 #include "workspace/error.h"
 #include "workspace/kernels/fit.h"
@@ -72,11 +73,24 @@ int igds_main(int argc, char** argv) {
                IGDS_BUILD_TYPE, fit_code_in_use());
     return 0;
   }
+  // The 2250 workspace needs the cross-hair of a Tek terminal in GIN mode (xterm's Tek window).
+  const char* term_env = std::getenv("TERM");
+  const std::string term_name = term_env ? term_env : "";
+  const bool in_tek_window = term_name.starts_with("tek");
   if (line.device_2250) {
-    fmt::print(stderr,
-               "igds: the 2250 light-pen workspace is not available yet; igds 4013 (the "
-               "default) works on any terminal\n");
-    return 1;
+    const bool tty = isatty(STDIN_FILENO) == 1 && isatty(STDOUT_FILENO) == 1;
+    const bool xterm = std::getenv("XTERM_VERSION") || term_name.starts_with("xterm");
+    if (!tty || !(xterm || in_tek_window)) {
+      fmt::print(stderr,
+                 "igds 2250: the light-pen workspace needs xterm's Tektronix window, whose "
+                 "cross-hair (GIN mode) is the light pen, and {}.\n"
+                 "Run it in an xterm: xterm -t -e igds 2250 (or type igds 2250 in an xterm "
+                 "window).\nigds 4013 (the default) works on any terminal.\n",
+                 !tty ? "its input or output is not a terminal"
+                      : fmt::format("this terminal is TERM={}",
+                                    term_name.empty() ? "(unset)" : term_name));
+      return 1;
+    }
   }
 
   Options options = line.options;
@@ -85,6 +99,9 @@ int igds_main(int argc, char** argv) {
   options.term = line.term ? *line.term
                            : choose_term(isatty(STDOUT_FILENO) == 1, std::getenv("TERM"),
                                          std::getenv("XTERM_VERSION"));
+  // The 2250's screen is the Tek window, dialogue included (from the VT window igds switches).
+  if (line.device_2250) options.term = TermMode::tek;
+  const bool switch_window = line.device_2250 && !in_tek_window;
 
   // Every command file is opened before anything starts: a missing one stops igds at once.
   std::vector<int> files;
@@ -111,6 +128,7 @@ int igds_main(int argc, char** argv) {
     Workspace ws = session.load(true);
     Terminal terminal(options.term, options.tek, out);
     Interpreter interpreter(options, disk, session, std::move(ws), terminal);
+    if (switch_window) out.write("\x1b[?38h");
     terminal.begin();
     for (const auto& notice : session.notices()) interpreter.say(notice);
 
@@ -123,7 +141,14 @@ int igds_main(int argc, char** argv) {
       if (outcome != Interpreter::Outcome::input_ended) break;
     }
     close_all(files);
-    if (outcome == Interpreter::Outcome::input_ended && (files.empty() || line.then_interactive)) {
+    if (outcome == Interpreter::Outcome::input_ended && line.device_2250) {
+      Interrupts interrupts;
+      KeySource keys(STDIN_FILENO, interrupts);
+      terminal.use_input(&keys);
+      outcome = Workspace2250(interpreter, terminal).run();
+      terminal.use_input(nullptr);
+    } else if (outcome == Interpreter::Outcome::input_ended &&
+               (files.empty() || line.then_interactive)) {
       const bool keyboard = isatty(STDIN_FILENO) == 1;
       std::optional<Interrupts> interrupts;
       if (keyboard) interrupts.emplace();
@@ -147,6 +172,8 @@ int igds_main(int argc, char** argv) {
       terminal.use_input(nullptr);
     }
     interpreter.save();
+    // Alpha mode, and back to the VT window the 2250 session started in.
+    if (switch_window) out.write("\x1f\x1b\x03");
     out.flush();
     if (outcome == Interpreter::Outcome::strict_stop) return 3;
     // The designer must learn from the status what the screen may not have shown.

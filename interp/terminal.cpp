@@ -1,7 +1,9 @@
 #include "interp/terminal.h"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "devices/gin.h"
 #include "devices/tek4013.h"
 #include "interp/apl/keyboard.h"
 
@@ -69,6 +71,18 @@ void Terminal::document(std::string_view text) {
   }
   const bool picture = screen_->shows_picture();
   out_.write(screen_->document_page());
+  const bool go_on = write_pages(text);
+  if (picture) {
+    // A person reads the text before the picture comes back; a command file goes on.
+    if (go_on && input_ && !input_->command_file()) {
+      say(back_prompt);
+      wait_for_return();
+    }
+    out_.write(screen_->end_document());
+  }
+}
+
+bool Terminal::write_pages(std::string_view text) {
   bool go_on = true;
   while (!text.empty() && go_on) {
     const auto end = text.find('\n');
@@ -83,14 +97,47 @@ void Terminal::document(std::string_view text) {
     }
     say(line);
   }
-  if (picture) {
-    // A person reads the text before the picture comes back; a command file goes on.
-    if (go_on && input_ && !input_->command_file()) {
-      say(back_prompt);
-      wait_for_return();
-    }
-    out_.write(screen_->end_document());
+  return go_on;
+}
+
+void Terminal::frame(std::shared_ptr<const Drawing2> menu, const TekLayout& layout) {
+  if (mode_ != TermMode::tek) return;
+  screen_->set_frame(std::move(menu), layout);
+}
+
+void Terminal::help(std::string_view text) {
+  if (mode_ != TermMode::tek) {
+    document(text);
+    return;
   }
+  out_.write(screen_->in_document() ? screen_->clear() : screen_->document_page(true));
+  write_pages(text);
+}
+
+void Terminal::help_done() {
+  if (mode_ == TermMode::tek) out_.write(screen_->end_document());
+}
+
+void Terminal::replace_picture(std::shared_ptr<const Picture> picture, int frames,
+                               std::chrono::milliseconds pause) {
+  if (mode_ != TermMode::tek) return;
+  TekScreen::Parts parts = screen_->replace_picture(std::move(picture));
+  out_.write(parts.before);
+  const std::string_view bytes = parts.picture;
+  const std::size_t n = static_cast<std::size_t>(std::max(1, frames));
+  std::size_t sent = 0;
+  for (std::size_t k = 1; k < n && input_; ++k) {
+    const std::size_t upto = bytes.size() * k / n;
+    out_.write(bytes.substr(sent, upto - sent));
+    sent = upto;
+    out_.flush();
+    // The pause is a wait for a key: one pressed ends the pace.
+    const Event e = input_->gives_keys() ? input_->key(pause) : Event{Event::Kind::timeout, {}};
+    if (e.kind != Event::Kind::timeout) break;
+  }
+  out_.write(bytes.substr(sent));
+  out_.write(parts.after);
+  out_.flush();
 }
 
 void Terminal::show(std::shared_ptr<const Picture> picture, std::string_view line) {
@@ -163,24 +210,34 @@ Event Terminal::pick(std::string_view prompt) {
     out_.flush();
     std::string report;
     while (report.size() < 5) {
-      Event e = input_->key(std::nullopt);
+      // A key already read after the last report (looking for its EOT) begins this one.
+      Event e{Event::Kind::key, {}};
+      if (!typed_ahead_.empty()) {
+        e.text = std::move(typed_ahead_.front());
+        typed_ahead_.erase(typed_ahead_.begin());
+      } else {
+        e = input_->key(std::nullopt);
+      }
       if (e.kind != Event::Kind::key) return e;
       report += e.text;
     }
-    // The terminator, when the terminal sends one (CR, or CR and EOT).
+    // The terminator, when the terminal sends one (CR, or CR and EOT; the tty may have made
+    // the CR a LF).
     for (int k = 0; k < 2; ++k) {
       Event e = input_->key(std::chrono::milliseconds(50));
       if (e.kind != Event::Kind::key) break;
-      if (e.text != "\r" && e.text != "\x04") {
+      if (e.text != "\r" && e.text != "\n" && e.text != "\x04") {
         typed_ahead_.push_back(std::move(e.text));
         break;
       }
     }
-    auto five = [&](std::size_t i) { return static_cast<unsigned char>(report[i]) & 0x1F; };
-    Event picked{Event::Kind::pick, report.substr(0, 1)};
-    picked.x = (five(1) << 5) | five(2);
-    picked.y = (five(3) << 5) | five(4);
-    write_dialogue("\n");
+    if (!prompt.empty()) write_dialogue("\n");  // the prompt's line ends
+    const auto gin = decode_gin(report);
+    // Bytes that are no report (keys typed fast before GIN mode was on) come back as a key.
+    if (!gin) return {Event::Kind::key, std::move(report)};
+    Event picked{Event::Kind::pick, std::string(1, gin->key)};
+    picked.x = gin->x;
+    picked.y = gin->y;
     return picked;
   }
   Event e = read_line(prompt);

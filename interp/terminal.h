@@ -96,11 +96,27 @@ class Terminal {
   // interrupt or the end of the input as themselves.
   Event pick(std::string_view prompt);
 
+  // The 2250 workspace (tek mode): `menu` drawn on every page and `layout` keeping the picture,
+  // its caption and the dialogue clear of it, from the next page on.
+  void frame(std::shared_ptr<const Drawing2> menu, const TekLayout& layout);
+  // The help environment's page: `text` on a page of its own (paged as document() pages), which
+  // stays until help_done() gives back the page as it was before help().
+  void help(std::string_view text);
+  void help_done();
+  // The current picture replaced by `picture`, the dialogue kept (the 2250's function keys).
+  // `frames` > 1: the picture's bytes go in that many parts, `pause` apart, and all that is
+  // left at once as soon as a key is pressed (the key is dropped).
+  void replace_picture(std::shared_ptr<const Picture> picture, int frames,
+                       std::chrono::milliseconds pause);
+
   // The screen of the tek and xterm modes (nullptr in none mode).
   const TekScreen* screen() const { return screen_.get(); }
 
  private:
   void write_dialogue(std::string_view text);
+  // The lines of `text`, stopping at each full page for a person (MORE); false when the input
+  // ended at a stop.
+  bool write_pages(std::string_view text);
   Event edit_line(std::string_view prompt);
   bool wait_for_return();
 

@@ -18,6 +18,8 @@
 #include <optional>
 #include <thread>
 
+#include "commands/menu.h"
+#include "devices/menu_layout.h"
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
@@ -447,6 +449,71 @@ TEST_CASE("from an xterm's VT window, DISPLAY draws in its Tek window and the di
   type_lines(env, {"SAVE WAVE", "END CMS"});
   CHECK(wait_for([&] { return !xterm.running(); }, 20s));
   CHECK(std::filesystem::exists(disk.path() / "WAVE.IGDSDATA"));
+}
+
+TEST_CASE("igds 2250 in an xterm Tek window: menu items clicked with the mouse, entries typed") {
+  if (!x_tools_present()) return;
+  Xserver x;
+  REQUIRE_MESSAGE(!x.display.empty(), "no free display for Xvfb");
+  std::map<std::string, std::string> env{{"DISPLAY", x.display}};
+  TempDir disk, scratch;
+  Background xterm({"xterm", "-t", "-xrm", "XTerm*tekGeometry: 1030x800+0+0", "-e",
+                    igds_binary().string(), "2250", "--disk", disk.path().string()},
+                   env, scratch.path() / "xterm.log");
+  auto window = window_of(xterm, env, "tektronix");
+  REQUIRE_MESSAGE(!window.empty(), "no Tek window: " << read_file(scratch.path() / "xterm.log"));
+  REQUIRE(ready_shown(x.display, window, scratch.path() / "start.png"));
+  REQUIRE(run({"xdotool", "windowfocus", "--sync", window}, in_env(env)).status == 0);
+
+  const auto items = menu_items(false, menu_screen::label_columns);
+  const MenuLayout layout = menu_layout(items.size());
+  const auto shot = screenshot(x.display, window, scratch.path() / "menu.png");
+  REQUIRE(shot);
+  const TekWindowMap map(shot->width, shot->height);
+  // Every box of the menu is on the screen: its top and bottom edges are dark.
+  for (const Box& b : layout.items) {
+    const double mx = (b.x0 + b.x1) / 2;
+    CHECK(shot->dark_near(map.px(mx), map.py(b.y1), 1));
+    CHECK(shot->dark_near(map.px(mx), map.py(b.y0), 1));
+  }
+  // A click on an item: the mouse to its middle, button 1, once igds has the cross-hair up.
+  auto click = [&](std::size_t k) {
+    std::this_thread::sleep_for(1500ms);
+    const Box& b = layout.items[k];
+    const auto moved =
+        run({"xdotool", "mousemove", "--window", window, std::to_string(map.px((b.x0 + b.x1) / 2)),
+             std::to_string(map.py((b.y0 + b.y1) / 2)), "click", "1"},
+            in_env(env));
+    REQUIRE(moved.status == 0);
+    std::this_thread::sleep_for(500ms);
+  };
+  auto index = [&](const std::string& label) {
+    for (std::size_t k = 0; k < items.size(); ++k)
+      if (items[k].label == label) return k;
+    FAIL("no item " << label);
+    return std::size_t{0};
+  };
+  click(index("HELP"));  // RETURN, in the help environment
+  click(index("BUILD"));
+  type_lines(env, {"2 2", "1 0 0 0  0 10 0  10 0 0  10 10 5", "", "", "3 3"});
+  click(index("D SURFACE"));
+  type_lines(env, {"O XY"});
+  // The picture in its square: dark pixels where the grid is drawn.
+  const Box& square = layout.picture;
+  REQUIRE(wait_for(
+      [&] {
+        auto s = screenshot(x.display, window, scratch.path() / "surface.png");
+        if (!s) return false;
+        int dark = 0;
+        for (double y = square.y0 + 20; y < square.y1 - 20; y += 4)
+          for (double x = square.x0 + 20; x < square.x1 - 20; x += 4)
+            dark += s->dark(map.px(x), map.py(y)) ? 1 : 0;
+        return dark > 50;
+      },
+      20s));
+  click(index("END CMS"));
+  CHECK(wait_for([&] { return !xterm.running(); }, 20s));
+  CHECK(std::filesystem::exists(disk.path() / "BINSAVE.IGDSCONT"));
 }
 
 }  // namespace igds::test
