@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "workspace/exchange/iges.h"
 #include "workspace/exchange/step.h"
 #include "workspace/exchange/surface_curves.h"
+#include "workspace/journal.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds {
@@ -67,6 +69,8 @@ class QuietContext final : public igds::Context {
   void document(std::string_view) override {}
   void report(std::string_view) override {}
   void show(const igds::ImageRef&) override {}
+  std::optional<igds::DevicePoint> pick(const igds::Prompt&) override { return std::nullopt; }
+  igds::Journal& journal() override { return journal_; }
   void erase() override {}
   void send_to_terminal(std::string_view) override {}
   void end_session(bool) override {}
@@ -75,6 +79,7 @@ class QuietContext final : public igds::Context {
   igds::Workspace ws_;
   igds::Options options_;
   igds::Disk disk_;
+  igds::Journal journal_{ws_};
   std::vector<std::string> pending_;
 };
 
