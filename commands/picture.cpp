@@ -187,6 +187,7 @@ std::string describe_line(const Description& d) {
 Picture picture_of(std::shared_ptr<const Image> image) {
   Picture pic;
   pic.caption = describe(image->desim, caption_width);
+  if (image->desim.what == 0 && image->auto_tangents) pic.caption.push_back("TANGENTS AUTO");
   Grid g = grid_of(image->points);
   if (g.planes == 0 || g.rows == 0) return pic;
   Drawing2& d = pic.drawing;

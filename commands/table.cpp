@@ -16,13 +16,15 @@ extern const Command end_command;
 extern const Command help_command;
 extern const Command erase_command;
 extern const Command export_command;
+extern const Command fit_command;
+extern const Command punch_command;
 
 std::span<const Command* const> command_table() {
   // The order is part of the language: `S` is STORE because STORE comes before SAVE.
-  static const std::array<const Command*, 12> table{
-      &build_command, &change_command, &restore_command, &display_command,
-      &plot_command,  &store_command,  &save_command,    &write_command,
-      &end_command,   &help_command,   &erase_command,   &export_command,
+  static const std::array<const Command*, 14> table{
+      &build_command, &change_command, &restore_command, &display_command, &plot_command,
+      &store_command, &save_command,   &write_command,   &end_command,     &help_command,
+      &erase_command, &export_command, &fit_command,     &punch_command,
   };
   return table;
 }

@@ -37,6 +37,12 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
                      std::string_view bytes, bool replace = true,
                      std::string_view kept = "NO FILE CHANGED");
 
+// FIT: the bytes of NAME.TYPE, a file another program wrote, read whole once its size was
+// checked (at most `max_bytes`, else nothing is read). Throws Report FILE NOT FOUND, or "CANNOT
+// READ NAME.TYPE (REASON); `kept`" (a folder, a file too large, a system error).
+std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                           std::size_t max_bytes, std::string_view kept);
+
 // SAVE: NAME.IGDSDATA, replacing a file of that name (written whole or not at all).
 void save_surface(const Disk& disk, std::string_view name, const Workspace& ws);
 
