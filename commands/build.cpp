@@ -14,13 +14,14 @@ void run_build(Context& ctx, const Choice*) {
   Array inppn({static_cast<std::size_t>(size.nocur) * static_cast<std::size_t>(size.nostr), 3});
   ask_point_entries(ctx, inppn);
   Array inptg = zero_tangents(size.nocur, size.nostr);
-  ask_tangent_entries(ctx, size.nocur, size.nostr, inptg);
+  const bool automatic = ask_tangent_entries(ctx, size.nocur, size.nostr, inppn, inptg);
   Density density = ask_density(ctx, size.nocur, size.nostr);
   Surface surface = interpolate_surface(size.nocur, size.nostr, density, inppn, inptg);
 
-  // Only now, with everything asked and interpolated, does the workspace change.
+  // Only now, with everything asked and interpolated, does the workspace change. A new surface
+  // has the manual's zero twists (CHANGE TWISTS MARKS gives Marks's).
   make_current(ctx.workspace(), size.nocur, size.nostr, density, std::move(inppn), std::move(inptg),
-               std::move(surface));
+               std::move(surface), {.marks_twists = false, .auto_tangents = automatic});
 }
 
 constexpr const Prompt* questions[] = {&size_prompt, &points_prompt, &tangents_prompt,
@@ -49,7 +50,11 @@ may follow the word BUILD on its line. IGDS then asks four things:
     curve at the two ends of a curve, along the stringer at the two
     ends of a stringer. A corner needs both: "k tx ty tz 1" along the
     curve, "k tx ty tz 0" along the stringer. An empty line ends them;
-    tangents never given are zero.
+    tangents never given are zero. AUTO (alone on its line) sets every
+    border tangent from the points by Marks's rule (Marks 1970: the
+    F-mesh tangent of the neighbour, the end arc made a parabola);
+    entries typed after AUTO replace single tangents. HELP and DISPLAY
+    INPUT then say TANGENTS AUTO.
  4. INTERPOLATED CURVES AND STRINGERS? INTCU and INTST, whole numbers
     >= 0: the curves to insert between two input curves, and the
     stringers between two stringers.

@@ -1,4 +1,5 @@
-// CHANGE GRID | TANGENTS | POINTS (manual 4.2): a new version of the current surface.
+// CHANGE GRID | TANGENTS | POINTS (manual 4.2) | TWISTS (Marks 1970): a new version of the
+// current surface.
 #include <fmt/format.h>
 
 #include "commands/answers.h"
@@ -12,13 +13,35 @@ namespace igds {
 
 namespace {
 
-enum Option { grid, tangents, points };
+enum Option { grid, tangents, points, twists };
 
+// TWISTS comes after POINTS, so that no abbreviation of the manual changes meaning (C T is
+// CHANGE TANGENTS, C TW CHANGE TWISTS).
 constexpr Choice options[] = {
     {"GRID", grid, {}, "new numbers of interpolated curves and stringers"},
     {"TANGENTS", tangents, {}, "new border tangents, then CHANGE GRID TOO?"},
     {"POINTS", points, {}, "new input points, then CHANGE TANGENTS TOO? and CHANGE GRID TOO?"},
+    {"TWISTS", twists, "[ZERO|MARKS]", "the twists of the patches: ZERO or MARKS"},
 };
+
+enum TwistChoice { zero_twists, marks_twists };
+constexpr Choice twist_choices[] = {
+    {"ZERO", zero_twists, {}, "zero twists, as IGDS 1975"},
+    {"MARKS", marks_twists, {}, "Marks 1970: Birkhoff and de Boor's twists from the points"},
+};
+const Prompt twists_prompt{
+    "TWISTS? (ZERO OR MARKS)",
+    "ZERO: the twists of the manual (flat patch corners); MARKS: the twists\n"
+    "of Marks 1970, estimated from the neighbouring points.",
+    twist_choices};
+
+bool ask_twists(Context& ctx) {
+  return ask_for(ctx, twists_prompt, [](const std::vector<std::string>& words) {
+    const Choice* c = words.size() == 1 ? choose(twist_choices, words[0]) : nullptr;
+    if (!c) throw EntryError("ANSWER ZERO OR MARKS");
+    return c->code == marks_twists;
+  });
+}
 
 const Prompt change_grid_prompt{
     "CHANGE GRID TOO? (Y OR N)",
@@ -59,24 +82,30 @@ Density ask_grid_too(Context& ctx, const Workspace& ws) {
   }
 }
 
-// The follow-up of CHANGE POINTS: Y/N, or the first tangent entry directly.
-void ask_tangents_too(Context& ctx, const Workspace& ws, Array& inptg, Edits& edits) {
+// The follow-up of CHANGE POINTS: Y/N, or the first tangent entry (or AUTO) directly. True when
+// AUTO was typed (from the new points `inppn`).
+bool ask_tangents_too(Context& ctx, const Workspace& ws, const Array& inppn, Array& inptg,
+                      Edits& edits) {
   for (;;) {
     auto words = ctx.ask(change_tangents_prompt);
     if (words.empty()) continue;
     if (auto yes = parse_yes_no(words)) {
-      if (*yes) ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &edits);
-      return;
+      return *yes && ask_tangent_entries(ctx, ws.nocur, ws.nostr, inppn, inptg, &edits);
     }
-    try {
-      refuse_command_word(words);
-      apply_tangent_entry(words, ws.nocur, ws.nostr, inptg, &edits);
-    } catch (const EntryError& e) {
-      ctx.report(e.what());
-      continue;
+    bool automatic = false;
+    if (is_auto_entry(words)) {
+      apply_auto_tangents(ws.nocur, ws.nostr, inppn, inptg, &edits);
+      automatic = true;
+    } else {
+      try {
+        refuse_command_word(words);
+        apply_tangent_entry(words, ws.nocur, ws.nostr, inptg, &edits);
+      } catch (const EntryError& e) {
+        ctx.report(e.what());
+        continue;
+      }
     }
-    ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &edits);
-    return;
+    return ask_tangent_entries(ctx, ws.nocur, ws.nostr, inppn, inptg, &edits) || automatic;
   }
 }
 
@@ -86,30 +115,39 @@ void run_change(Context& ctx, const Choice* option) {
   Array inppn = ws.inppn;
   Array inptg = ws.inptg;
   Edits point_edits = Edits::none(), tangent_edits = Edits::none();
-  Density density;
+  Density density{ws.intcu, ws.intst};
+  SurfaceModes modes{ws.marks_twists(), ws.auto_tangents()};
   const auto what = static_cast<Option>(option->code);
   if (what == grid) {
     density = ask_density(ctx, ws.nocur, ws.nostr);
+  } else if (what == twists) {
+    modes.marks_twists = ask_twists(ctx);
   } else {
     if (what == points) {
       ask_point_entries(ctx, inppn, &point_edits);
-      ask_tangents_too(ctx, ws, inptg, tangent_edits);
+      // Tangents set by AUTO were the old points': only AUTO again keeps the surface's flag.
+      modes.auto_tangents = ask_tangents_too(ctx, ws, inppn, inptg, tangent_edits);
     } else {
-      ask_tangent_entries(ctx, ws.nocur, ws.nostr, inptg, &tangent_edits);
+      // Entries after an AUTO override single tangents; the surface keeps the flag.
+      modes.auto_tangents =
+          ask_tangent_entries(ctx, ws.nocur, ws.nostr, inppn, inptg, &tangent_edits) ||
+          modes.auto_tangents;
     }
     density = ask_grid_too(ctx, ws);
   }
   const Changes changes = ws.changes;
   // The new surface is computed into the arrays of the old one (no fresh pages on a large grid);
   // the kernels check everything first and leave them as they were when they refuse.
-  SurfaceInput input{ws.nocur, ws.nostr, density.intcu, density.intst, &inppn, &inptg};
+  SurfaceInput input{ws.nocur, ws.nostr, density.intcu,     density.intst,
+                     &inppn,   &inptg,   modes.marks_twists};
   Surface surface{std::move(ws.patches), std::move(ws.intpn)};
   auto give_back = [&] {
     ws.patches = std::move(surface.patches);
     ws.intpn = std::move(surface.intpn);
   };
+  const bool refitted = what == grid && !surface.patches.empty();
   try {
-    if (what == grid && !surface.patches.empty())
+    if (refitted)
       refit_into(input, surface.patches, surface.intpn);  // the patches do not depend on the grid
     else
       interpolate_into(input, surface);
@@ -121,14 +159,17 @@ void run_change(Context& ctx, const Choice* option) {
     throw;
   }
   make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
-               std::move(surface));
+               std::move(surface), modes);
   // The grid of input points is the same: only the parts the entries changed are new.
   ws.changes = changes;
   ws.changes.edited(point_edits, tangent_edits);
+  // Patches kept as they were (FIT's, or assigned in APL) are still not the interpolation's.
+  if (refitted) ws.changes.derived = changes.derived;
 }
 
-constexpr const Prompt* questions[] = {&density_prompt, &points_prompt, &change_tangents_prompt,
-                                       &tangents_prompt, &change_grid_prompt};
+constexpr const Prompt* questions[] = {&density_prompt,         &points_prompt,
+                                       &change_tangents_prompt, &tangents_prompt,
+                                       &change_grid_prompt,     &twists_prompt};
 
 }  // namespace
 
@@ -136,9 +177,9 @@ extern const Command change_command{
     .name = "CHANGE",
     .options = options,
     .follows = {},
-    .option_prompt = {"GRID, TANGENTS OR POINTS?",
+    .option_prompt = {"GRID, TANGENTS, POINTS OR TWISTS?",
                       "GRID: new numbers of interpolated curves and stringers; TANGENTS: new\n"
-                      "border tangents; POINTS: new input points.",
+                      "border tangents; POINTS: new input points; TWISTS: ZERO or MARKS.",
                       options},
     .summary = "changes the current surface and interpolates it again",
     .long_help = R"(CHANGE modifies the current surface (there must be one: BUILD or
@@ -155,10 +196,22 @@ interpolated again at the end.
                    the two numbers.
   CHANGE POINTS    takes point entries "k x y z [x y z ...]" up to an
                    empty line, then asks CHANGE TANGENTS TOO? (Y OR N)
-                   (Y, N or a tangent entry) and CHANGE GRID TOO?
+                   (Y, N, AUTO or a tangent entry) and CHANGE GRID
+                   TOO?
+  CHANGE TWISTS    asks TWISTS? (ZERO OR MARKS), or takes the word on
+                   the line (C TW M): ZERO, the default, gives every
+                   patch corner the zero twist of IGDS 1975; MARKS the
+                   twist of Marks 1970 (Birkhoff and de Boor, from the
+                   four diagonal neighbours; zero at the border). The
+                   choice belongs to the surface: SAVE, the session,
+                   STATUS[3] and WRITE keep it, and PATCHES, the grid
+                   and every export follow it.
 
 Tangents are per unit of chord length: 1 along the chord is the
-natural pace, lengths much above 3 make loops.
+natural pace, lengths much above 3 make loops. AUTO at TANGENTS? sets
+every border tangent from the points by Marks's rule; the entries typed
+after it replace single tangents. CHANGE POINTS keeps the surface's
+AUTO mark only when AUTO is typed again for the new points.
 
 Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up
 and keeps the surface as it was.

@@ -8,6 +8,7 @@
 #include "commands/answers.h"
 #include "workspace/apl.h"
 #include "workspace/error.h"
+#include "workspace/kernels/marks.h"
 
 namespace igds {
 
@@ -16,6 +17,10 @@ namespace {
 constexpr std::string_view point_form = "A POINT ENTRY IS K X Y Z [X Y Z ...]";
 constexpr std::string_view tangent_form = "A TANGENT ENTRY IS K TX TY TZ (AND 1 OR 0 AT A CORNER)";
 constexpr std::string_view finish_entries = "END THE ENTRIES WITH AN EMPTY LINE FIRST";
+
+// The word of the AUTO entry at TANGENTS? (offered by completion there).
+constexpr Choice auto_entry[] = {
+    {"AUTO", 0, {}, "every border tangent by Marks's rule (ends made parabolas)"}};
 
 // The reason for an entry whose first word is not a number: a command typed too early, or the
 // form the entry must have.
@@ -123,6 +128,15 @@ void apply_tangent_entry(std::span<const std::string> words, int nocur, int nost
   if (edits) edits->part(static_cast<std::size_t>(row) * 4, static_cast<std::size_t>(row) * 4 + 4);
 }
 
+void apply_auto_tangents(int nocur, int nostr, const Array& inppn, Array& inptg, Edits* edits) {
+  inptg = marks_border_tangents(nocur, nostr, as_vec3(inppn));
+  if (edits) edits->all();
+}
+
+bool is_auto_entry(std::span<const std::string> words) {
+  return words.size() == 1 && choose(auto_entry, words[0]) != nullptr;
+}
+
 GridSize parse_grid_size(std::span<const std::string> words) {
   constexpr std::string_view form = "GIVE TWO WHOLE NUMBERS, NOCUR AND NOSTR";
   if (words.size() != 2) refuse_form(words, form);
@@ -159,7 +173,8 @@ const Prompt points_prompt{"POINTS?",
 const Prompt tangents_prompt{
     "TANGENTS?",
     "A border point k and tx ty tz, and at a corner 1 (along the curve) or 0\n"
-    "(along the stringer); length 1 is the natural pace; an empty line ends."};
+    "(along the stringer); AUTO: all from the points; an empty line ends.",
+    auto_entry};
 const Prompt density_prompt{
     "INTERPOLATED CURVES AND STRINGERS?",
     "Two whole numbers >= 0: the curves to insert between two input curves,\n"
@@ -182,10 +197,17 @@ void ask_point_entries(Context& ctx, Array& inppn, Edits* edits) {
   }
 }
 
-void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg, Edits* edits) {
+bool ask_tangent_entries(Context& ctx, int nocur, int nostr, const Array& inppn, Array& inptg,
+                         Edits* edits) {
+  bool automatic = false;
   for (;;) {
     auto words = ctx.ask(tangents_prompt);
-    if (words.empty()) return;
+    if (words.empty()) return automatic;
+    if (is_auto_entry(words)) {
+      apply_auto_tangents(nocur, nostr, inppn, inptg, edits);
+      automatic = true;
+      continue;
+    }
     try {
       apply_tangent_entry(words, nocur, nostr, inptg, edits);
     } catch (const EntryError& e) {

@@ -26,6 +26,14 @@ void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* 
 void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
                          Edits* edits = nullptr);
 
+// AUTO at TANGENTS? (spec marks.md): every border tangent of `inptg` set by Marks's rule from
+// the points of `inppn`, per unit of chord so that PATCHES holds Marks's vectors. Entries typed
+// after it override single tangents.
+void apply_auto_tangents(int nocur, int nostr, const Array& inppn, Array& inptg,
+                         Edits* edits = nullptr);
+// True when `words` is the AUTO entry (the word AUTO or a prefix of it, case ignored).
+bool is_auto_entry(std::span<const std::string> words);
+
 // NOCUR NOSTR: two whole numbers >= 1, at least two points, at most max_input_points.
 struct GridSize {
   int nocur = 0, nostr = 0;
@@ -56,7 +64,9 @@ extern const Prompt density_prompt;
 // line; a wrong entry gets its report and the next one is awaited).
 GridSize ask_grid_size(Context& ctx);
 void ask_point_entries(Context& ctx, Array& inppn, Edits* edits = nullptr);
-void ask_tangent_entries(Context& ctx, int nocur, int nostr, Array& inptg, Edits* edits = nullptr);
+// The tangent entries: true when AUTO was among them (`inppn` gives its points).
+bool ask_tangent_entries(Context& ctx, int nocur, int nostr, const Array& inppn, Array& inptg,
+                         Edits* edits = nullptr);
 Density ask_density(Context& ctx, int nocur, int nostr);
 
 }  // namespace igds

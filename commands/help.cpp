@@ -98,12 +98,22 @@ A small session:
   return text;
 }
 
+// What HELP says of the current surface's Marks modes (AUTO tangents, MARKS twists), if any.
+void say_surface_modes(Context& ctx, const Workspace& ws) {
+  if (!ws.has_input() || (!ws.auto_tangents() && !ws.marks_twists())) return;
+  ctx.say(fmt::format("THE CURRENT SURFACE HAS {}{}{}.",
+                      ws.auto_tangents() ? "TANGENTS AUTO (MARKS'S RULE)" : "",
+                      ws.auto_tangents() && ws.marks_twists() ? " AND " : "",
+                      ws.marks_twists() ? "TWISTS MARKS" : ""));
+}
+
 void run_help(Context& ctx, const Choice* option) {
   expect_no_more_words(ctx);
   Workspace& ws = ctx.workspace();
   if (option) ws.status[0] = option->code == long_help ? 1 : 0;
   if (ws.status[0] == 1) {
     ctx.document(help_overview());
+    say_surface_modes(ctx, ws);
     return;
   }
   std::string names;
@@ -113,6 +123,7 @@ void run_help(Context& ctx, const Choice* option) {
   }
   ctx.say(wrapped("Type a command: " + names + ".", 0, 0));
   ctx.say("A first letter is enough (S is STORE); HELP LONG explains them all.");
+  say_surface_modes(ctx, ws);
 }
 
 }  // namespace

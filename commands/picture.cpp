@@ -399,6 +399,7 @@ Picture picture_of(std::shared_ptr<const Image> image) {
   if (image->desim.what == 2) return picture_of_duct(*image);
   Picture pic;
   pic.caption = image_caption(*image, caption_width);
+  if (image->desim.what == 0 && image->auto_tangents) pic.caption.push_back("TANGENTS AUTO");
   Grid g = grid_of(image->points);
   if (g.planes == 0 || g.rows == 0) return pic;
   Drawing2& d = pic.drawing;

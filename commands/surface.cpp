@@ -5,8 +5,8 @@
 namespace igds {
 
 Surface interpolate_surface(int nocur, int nostr, Density density, const Array& inppn,
-                            const Array& inptg) {
-  SurfaceInput input{nocur, nostr, density.intcu, density.intst, &inppn, &inptg};
+                            const Array& inptg, bool marks_twists) {
+  SurfaceInput input{nocur, nostr, density.intcu, density.intst, &inppn, &inptg, marks_twists};
   try {
     return interpolate(input);
   } catch (const DataError& e) {
@@ -15,7 +15,7 @@ Surface interpolate_surface(int nocur, int nostr, Density density, const Array& 
 }
 
 void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
-                  Surface surface) {
+                  Surface surface, SurfaceModes modes, bool derived) {
   ws.nocur = nocur;
   ws.nostr = nostr;
   ws.intcu = density.intcu;
@@ -24,7 +24,8 @@ void make_current(Workspace& ws, int nocur, int nostr, Density density, Array in
   ws.inptg = std::move(inptg);
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);
-  ws.changes.replaced();
+  ws.set_surface_modes(modes.marks_twists, modes.auto_tangents);
+  ws.changes.replaced(derived);
 }
 
 }  // namespace igds

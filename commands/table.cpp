@@ -16,6 +16,8 @@ extern const Command end_command;
 extern const Command help_command;
 extern const Command erase_command;
 extern const Command export_command;
+extern const Command fit_command;
+extern const Command punch_command;
 extern const Command list_command;
 extern const Command undo_command;
 extern const Command redo_command;
@@ -23,11 +25,11 @@ extern const Command zoom_command;
 
 std::span<const Command* const> command_table() {
   // The order is part of the language: `S` is STORE because STORE comes before SAVE.
-  static const std::array<const Command*, 16> table{
-      &build_command, &change_command, &restore_command, &display_command,
-      &plot_command,  &store_command,  &save_command,    &write_command,
-      &end_command,   &help_command,   &erase_command,   &export_command,
-      &list_command,  &undo_command,   &redo_command,    &zoom_command,
+  static const std::array<const Command*, 18> table{
+      &build_command, &change_command, &restore_command, &display_command, &plot_command,
+      &store_command, &save_command,   &write_command,   &end_command,     &help_command,
+      &erase_command, &export_command, &fit_command,     &punch_command,   &list_command,
+      &undo_command,  &redo_command,   &zoom_command,
   };
   return table;
 }

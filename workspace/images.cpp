@@ -73,6 +73,7 @@ Image input_image(const Workspace& ws, const View& view) {
     image.arrows.shape = {arrows.size() / 6, 6};
     image.arrows.ravel = std::move(arrows);
   }
+  image.auto_tangents = ws.auto_tangents();
   image.drawn_from = recipe_of(ws, false);
   return image;
 }

@@ -15,6 +15,7 @@
 #include "workspace/drawing/drawing.h"
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/project.h"
+#include "workspace/kernels/surface.h"
 
 namespace igds {
 
@@ -61,6 +62,8 @@ struct Image {
   // nullopt: the whole image. A way of looking at the image, not kept on the disk
   // (docs/decisions.md).
   std::optional<std::array<double, 4>> window;
+  // An input image of a surface whose border tangents were set by AUTO: its description says so.
+  bool auto_tangents = false;
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
     const bool same_picture =
@@ -198,13 +201,24 @@ struct Workspace {
   ImageRef temp1;  // TEMP1 / DEST1: STORE FIRST
   ImageRef temp2;  // TEMP2 / DEST2: STORE SECOND
   // STATUS[1] = 1 for HELP LONG, 0 for SHORT; STATUS[2] = keyboard of the last PLOT
-  // (0 none yet, 1 SELECTRIC, 2 EBCDIC); the others are reserved.
+  // (0 none yet, 1 SELECTRIC, 2 EBCDIC); STATUS[3] and STATUS[4] belong to the surface
+  // (status_twists, status_auto below); the others are reserved.
   std::array<int, 10> status{1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   // The functions defined in END APL, each as its source (header, then lines): part of the
   // APL workspace, kept with the session.
   std::vector<std::vector<std::string>> functions;
 
   Changes changes;  // not a variable of the manual: how the variables above changed
+
+  // STATUS[3]: the twists of the surface's patches, 0 ZERO (the manual's), 1 MARKS (CHANGE
+  // TWISTS; spec marks.md). STATUS[4]: 1 when its border tangents were set by AUTO.
+  static constexpr std::size_t status_twists = 2, status_auto = 3;
+  bool marks_twists() const { return status[status_twists] == 1; }
+  bool auto_tangents() const { return status[status_auto] == 1; }
+  void set_surface_modes(bool marks, bool automatic) {
+    status[status_twists] = marks ? 1 : 0;
+    status[status_auto] = automatic ? 1 : 0;
+  }
 
   bool has_input() const { return nocur > 0; }
   bool has_surface() const { return !intpn.empty(); }
@@ -215,5 +229,10 @@ struct Workspace {
            same_image(a.temp2, b.temp2) && a.status == b.status && a.functions == b.functions;
   }
 };
+
+// What the kernels interpolate for the surface of `ws`: its inputs, density and twists.
+inline SurfaceInput surface_input(const Workspace& ws) {
+  return {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()};
+}
 
 }  // namespace igds

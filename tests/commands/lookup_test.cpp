@@ -86,16 +86,17 @@ TEST_CASE("the command table is the manual's, then the project's additions") {
   std::vector<std::string_view> got;
   for (const Command* c : command_table()) got.push_back(c->name);
   const std::vector<std::string_view> expected{
-      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE",
-      "END",   "HELP",   "ERASE",   "EXPORT",  "LIST", "UNDO",  "REDO", "ZOOM"};
+      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT",  "STORE", "SAVE", "WRITE", "END",
+      "HELP",  "ERASE",  "EXPORT",  "FIT",     "PUNCH", "LIST",  "UNDO", "REDO",  "ZOOM"};
   CHECK(got == expected);
 }
 
 TEST_CASE("every one- and two-letter abbreviation of a command") {
   CHECK(resolved(names()) ==
-        table("B=BUILD C=CHANGE D=DISPLAY E=END H=HELP L=LIST P=PLOT R=RESTORE S=STORE U=UNDO "
-              "W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT HE=HELP "
-              "LI=LIST PL=PLOT RE=RESTORE SA=SAVE ST=STORE UN=UNDO WR=WRITE ZO=ZOOM"));
+        table("B=BUILD C=CHANGE D=DISPLAY E=END F=FIT H=HELP L=LIST P=PLOT R=RESTORE S=STORE "
+              "U=UNDO W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT "
+              "FI=FIT HE=HELP LI=LIST PL=PLOT PU=PUNCH RE=RESTORE SA=SAVE ST=STORE UN=UNDO "
+              "WR=WRITE ZO=ZOOM"));
   // REDO comes after RESTORE: R and RE stay RESTORE, RED is REDO.
   CHECK(find_command("RED")->name == "REDO");
   CHECK(find_command("RES")->name == "RESTORE");
@@ -107,11 +108,13 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(command("SAVE").options.empty());
   CHECK(command("WRITE").options.empty());
   CHECK(command("ERASE").options.empty());
+  CHECK(command("FIT").options.empty());
+  CHECK(command("PUNCH").options.empty());
   CHECK(command("ZOOM").options.empty());
   CHECK(command("UNDO").options.empty());
   CHECK(command("REDO").options.empty());
   CHECK(resolved(command("CHANGE").options) ==
-        table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS"));
+        table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS TW=TWISTS"));
   CHECK(resolved(command("DISPLAY").options) ==
         table("F=FIRST I=INPUT P=PICTURE S=SECOND FI=FIRST IN=INPUT PI=PICTURE SE=SECOND "
               "SU=SURFACE"));
@@ -202,6 +205,8 @@ TEST_CASE("every word of the language is spelled in one source file: its declara
   declared["HPGL"].insert("commands/plot.cpp");
   // CONIC is also the name of the manual's APL function (section 7.1) that END APL gives.
   declared["CONIC"].insert("interp/apl_env.cpp");
+  // FIT too (section 7.2): the APL function is the grid's interpolation, the command Marks's fit.
+  declared["FIT"].insert("interp/apl_env.cpp");
   std::set<std::string> words;
   for (const auto& [word, files] : declared) words.insert(word);
   // Every string literal of the sources (raw strings, the help texts, are prose and left out).

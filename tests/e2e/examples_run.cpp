@@ -88,6 +88,7 @@ struct Ran {
 };
 Ran run_example(const Example& e, const TempDir& disk, const std::string& then = "") {
   Ran ran;
+  put_inputs(e, disk.path());
   ran.result = run_igds({"--disk", disk.path().string(), "--term", "none", e.file.string()});
   if (!then.empty()) {
     write_file(disk.path() / "then.igds", then);
@@ -138,12 +139,13 @@ TEST_CASE("the 4013 decoder reads shortened 10-bit and 12-bit addresses, text an
   CHECK(decode_tek("\x1d#d#D\x01").errors.size() == 1);
 }
 
-TEST_CASE("the six examples are there, each with a picture page in its header") {
+TEST_CASE("the seven examples are there, each with a picture page in its header") {
   auto list = examples();
   std::vector<std::string> names;
   for (const auto& e : list) names.push_back(e.name);
   CHECK(names == std::vector<std::string>{"abbreviations", "fig3-tangents", "fig6-multipatch",
-                                          "fig7-9-projections", "hull", "quasi-sphere"});
+                                          "fig7-9-projections", "hull", "marks-sphere",
+                                          "quasi-sphere"});
   for (const auto& e : list) {
     CAPTURE(e.name);
     CHECK(e.picture_page >= 0);
@@ -155,6 +157,7 @@ TEST_CASE("every example's 4013 stream is rendered by tek2plot without complaint
   for (const auto& e : examples()) {
     CAPTURE(e.name);
     TempDir disk;
+    put_inputs(e, disk.path());
     auto r = run_igds({"--disk", disk.path().string(), "--term", "tek", e.file.string()});
     CHECK(r.status == 0);
     CHECK(r.err == "");
@@ -204,6 +207,7 @@ TEST_CASE("every example's transcript is the expected one") {
   for (const auto& e : examples()) {
     CAPTURE(e.name);
     TempDir disk;
+    put_inputs(e, disk.path());
     auto r = run_igds({"--disk", disk.path().string(), "--term", "none", e.file.string()});
     CHECK(r.status == 0);
     CHECK(r.err == "");

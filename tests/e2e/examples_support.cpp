@@ -50,11 +50,20 @@ std::vector<Example> examples() {
     e.name = entry.path().stem().string();
     e.file = entry.path();
     e.picture_page = picture_page_of(read_file(entry.path()));
+    auto inputs = entry.path();
+    inputs.replace_extension(".disk");
+    if (std::filesystem::is_directory(inputs)) e.inputs = inputs;
     list.push_back(std::move(e));
   }
   std::sort(list.begin(), list.end(),
             [](const Example& a, const Example& b) { return a.name < b.name; });
   return list;
+}
+
+void put_inputs(const Example& example, const std::filesystem::path& disk) {
+  if (example.inputs.empty()) return;
+  for (const auto& entry : std::filesystem::directory_iterator(example.inputs))
+    std::filesystem::copy_file(entry.path(), disk / entry.path().filename());
 }
 
 std::vector<std::string> command_lines(std::string_view file_text) {

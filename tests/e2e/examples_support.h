@@ -16,7 +16,13 @@ struct Example {
   std::string name;            // "fig3-tangents"
   std::filesystem::path file;  // .../scripts/examples/fig3-tangents.igds
   int picture_page = -1;       // its header's "picture: page N" (tek2plot --page-number N)
+  // scripts/examples/NAME.disk/: the files the example reads (a FIT deck), put on its fresh disk
+  // before it runs; empty when it reads none.
+  std::filesystem::path inputs;
 };
+
+// Copies the example's input files (Example::inputs) onto `disk`.
+void put_inputs(const Example& example, const std::filesystem::path& disk);
 
 // Every scripts/examples/*.igds, sorted by name.
 std::vector<Example> examples();

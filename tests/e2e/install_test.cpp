@@ -45,8 +45,10 @@ TEST_CASE("cmake --install: the program, its launcher, its pages, its completion
   for (const auto& e : fs::directory_iterator(source_dir() / "docs"))
     if (e.path().extension() == ".md")
       expected.insert("share/doc/igds/docs/" + e.path().filename().string());
-  for (const auto& e : fs::directory_iterator(source_dir() / "scripts" / "examples"))
-    expected.insert("share/doc/igds/examples/" + e.path().filename().string());
+  const fs::path examples = source_dir() / "scripts" / "examples";
+  for (const auto& e : fs::recursive_directory_iterator(examples))
+    if (!e.is_directory())
+      expected.insert("share/doc/igds/examples/" + e.path().lexically_relative(examples).string());
   CHECK(files_under(prefix.path()) == expected);
   // The installed igds runs, and its launcher finds it beside itself.
   auto version = run({(prefix.path() / "bin" / "igds").string(), "--version"});

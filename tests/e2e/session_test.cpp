@@ -143,7 +143,7 @@ BUILD
   const std::string expected[] = {
       "FROBNICATE\nINCORRECT COMMAND OR PARAMETERS\nREADY\n",
       "BUILD 3 3\nINCORRECT COMMAND OR PARAMETERS\nREADY\n",
-      "GRID, TANGENTS OR POINTS? SIDEWAYS\nINCORRECT CHOICE OF PARAMETERS\nREADY\n",
+      "GRID, TANGENTS, POINTS OR TWISTS? SIDEWAYS\nINCORRECT CHOICE OF PARAMETERS\nREADY\n",
       "CHANGE GRID\nINPUT NOT FOUND\nREADY\n",
       "DISPLAY INPUT\nINPUT NOT FOUND\nREADY\n",
       "DISPLAY SURFACE\nSURFACE NOT FOUND\nREADY\n",
@@ -206,9 +206,10 @@ CMS
 )");
   CHECK(r.status == 0);
   // HELP alone at the very first session is LONG: the command's explanation.
-  CHECK(r.out.find("GRID, TANGENTS OR POINTS? H\nCHANGE modifies the current surface") !=
+  CHECK(r.out.find("GRID, TANGENTS, POINTS OR TWISTS? H\nCHANGE modifies the current surface") !=
         std::string::npos);
-  CHECK(r.out.find("GRID, TANGENTS OR POINTS? HELP SHORT\nGRID: new numbers") != std::string::npos);
+  CHECK(r.out.find("GRID, TANGENTS, POINTS OR TWISTS? HELP SHORT\nGRID: new numbers") !=
+        std::string::npos);
   CHECK(r.out.find("NUMBER OF CURVES AND STRINGERS? H\nTwo whole numbers: NOCUR") !=
         std::string::npos);
   CHECK(r.out.find("NUMBER OF CURVES AND STRINGERS? HELP LONG\nBUILD defines a new current "
@@ -312,7 +313,7 @@ TEST_CASE("standard input that is not a terminal is a command file; - continues 
   CHECK(r.status == 0);
   CHECK(r.out ==
         "READY\nHELP SHORT\nType a command: BUILD CHANGE RESTORE DISPLAY PLOT STORE "
-        "SAVE WRITE END\nHELP ERASE EXPORT LIST UNDO REDO ZOOM.\nA first letter is enough (S is STORE); HELP "
+        "SAVE WRITE END\nHELP ERASE EXPORT FIT PUNCH LIST UNDO REDO ZOOM.\nA first letter is enough (S is STORE); HELP "
         "LONG explains them all.\nREADY\nEND CMS\n");
 
   write_file(files.path() / "one.igds", "* first file\nHELP SHORT\n");

@@ -178,13 +178,20 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
   }
 }
 
+std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                           std::size_t max_bytes, std::string_view kept) {
+  const std::string n = checked(name);
+  disk::MappedFile file = open_or_report(disk, n, type, max_bytes, kept);
+  return std::string(file.bytes());
+}
+
 std::size_t max_surface_file_bytes() {
   // The largest arrays of a legal surface: INPPN of max_input_points, INPTG of a single curve
   // of them, PATCHES of a square grid of them, INTPN of max_grid_points.
   const double p = double(max_input_points);
   return disk::frame_header_bytes + disk::frame_trailer_bytes + 16 + array_bytes(2, 3 * p) +
          array_bytes(2, 8 * (p + 1)) + array_bytes(5, 48 * p) +
-         array_bytes(3, 3 * double(max_grid_points));
+         array_bytes(3, 3 * double(max_grid_points)) + 8;
 }
 
 std::size_t max_image_file_bytes() {
@@ -210,6 +217,10 @@ void save_surface(const Disk& disk, std::string_view name, const Workspace& ws) 
   w.array(ws.inptg);
   w.array(ws.patches);
   w.array(ws.intpn);
+  // The surface's twists and AUTO tangents (STATUS[3], STATUS[4]): added after INTPN, a file
+  // without them has the zero twists and typed tangents.
+  w.i32(ws.marks_twists() ? 1 : 0);
+  w.i32(ws.auto_tangents() ? 1 : 0);
   write_or_report(disk, n, "IGDSDATA", disk::frame(data_magic, w));
 }
 
@@ -229,6 +240,11 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
     in.inptg = r.array(8 * (max_input_points + 1));
     patches = raw_array(r);
     intpn = raw_array(r);
+    if (!r.at_end()) {
+      const std::int32_t twists = r.i32(), automatic = r.i32();
+      if (twists < 0 || twists > 1 || automatic < 0 || automatic > 1) throw disk::Damage("FORMAT");
+      in.set_surface_modes(twists == 1, automatic == 1);
+    }
     r.finish();
   } catch (const disk::Damage& d) {
     throw damaged(n, "IGDSDATA", d.reason(), kept);
@@ -247,7 +263,7 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   }
   // PATCHES and INTPN as igds interpolates them are not saved with the session: they are made
   // again from the inputs. Those of the file are kept as they are when they differ.
-  Surface surface = interpolate({in.nocur, in.nostr, in.intcu, in.intst, &in.inppn, &in.inptg});
+  Surface surface = interpolate(surface_input(in));
   const bool derived =
       !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);
   if (derived) {
@@ -266,14 +282,8 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   ws.inptg = std::move(in.inptg);
   ws.patches = std::move(in.patches);
   ws.intpn = std::move(in.intpn);
+  ws.set_surface_modes(in.marks_twists(), in.auto_tangents());
   ws.changes.replaced(derived);
-}
-
-std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
-                           std::size_t max_bytes, std::string_view kept) {
-  const std::string n = checked(name);
-  const disk::MappedFile file = open_or_report(disk, n, type, max_bytes, kept);
-  return std::string(file.bytes());
 }
 
 void store_image(const Disk& disk, std::string_view name, const Image& image) {

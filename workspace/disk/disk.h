@@ -50,9 +50,9 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
                      std::string_view bytes, bool replace = true,
                      std::string_view kept = "NO FILE CHANGED");
 
-// A file another program wrote (DISPLAY PICTURE's NAME.DUCTPIC): its bytes, mapped after its
-// size was checked against `max_bytes`, then copied. Throws Report FILE NOT FOUND, or CANNOT
-// READ NAME.TYPE (REASON); `kept` (REASON FILE TOO LARGE above `max_bytes`).
+// A file another program wrote (FIT's NAME.CADADATA, DISPLAY PICTURE's NAME.DUCTPIC): its
+// bytes, read once its size was checked against `max_bytes`. Throws Report FILE NOT FOUND, or
+// "CANNOT READ NAME.TYPE (REASON); `kept`" (a folder, a file too large, a system error).
 std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
                            std::size_t max_bytes, std::string_view kept);
 

@@ -299,6 +299,7 @@ struct Session::State {
     ws.inppn = read_array(r.inppn);
     ws.inptg = read_array(r.inptg);
     if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+    ws.set_surface_modes(r.twists == 1, r.auto_tangents == 1);
     return ws;
   }
 
@@ -320,8 +321,7 @@ struct Session::State {
       return ImageRef::deferred([source, desim = e.desim] {
         if (desim.what == 0) return image_of(*source, desim);
         Workspace from = *source;
-        Surface s =
-            interpolate({from.nocur, from.nostr, from.intcu, from.intst, &from.inppn, &from.inptg});
+        Surface s = interpolate(surface_input(from));
         from.patches = std::move(s.patches);
         from.intpn = std::move(s.intpn);
         return image_of(from, desim);
@@ -451,9 +451,7 @@ Workspace Session::State::read_session() {
   if (t.current != 0 && t.derived)
     deriving = std::async(
         in_background ? std::launch::async : std::launch::deferred,
-        [in = std::make_shared<const Workspace>(ws)] {
-          return interpolate({in->nocur, in->nostr, in->intcu, in->intst, &in->inppn, &in->inptg});
-        });
+        [in = std::make_shared<const Workspace>(ws)] { return interpolate(surface_input(*in)); });
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
   saved_known = true;
@@ -524,7 +522,7 @@ Workspace Session::State::read_legacy(std::string_view payload) {
   bool derived = false;
   if (ws.has_input() && ws.has_surface()) {
     try {
-      Surface s = interpolate({ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg});
+      Surface s = interpolate(surface_input(ws));
       derived = s.patches == ws.patches && s.intpn == ws.intpn;
     } catch (const DataError&) {
     }
@@ -667,6 +665,8 @@ void Session::save(Workspace& ws, const Journal* journal) {
         r.intcu = ws.intcu;
         r.intst = ws.intst;
         r.generation = ws.changes.surface;
+        r.twists = ws.marks_twists() ? 1 : 0;
+        r.auto_tangents = ws.auto_tangents() ? 1 : 0;
         // Pieces are kept only from a record whose files are all there.
         const Record* base = current && current_present ? current : nullptr;
         r.inppn = w.input(ws.inppn, base ? &base->inppn : nullptr, ws.changes.inppn);

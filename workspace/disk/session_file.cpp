@@ -184,6 +184,16 @@ std::string encode_session(const SessionTable& t) {
       w.bytes(line);
     }
   }
+  // The surfaces' twists and AUTO tangents, after the functions (a section added later).
+  std::uint32_t marked = 0;
+  for (const Record& rec : t.records) marked += (rec.twists | rec.auto_tangents) != 0;
+  w.u32(marked);
+  for (const Record& rec : t.records) {
+    if ((rec.twists | rec.auto_tangents) == 0) continue;
+    w.u32(rec.id);
+    w.u8(rec.twists);
+    w.u8(rec.auto_tangents);
+  }
   if (!t.journal.empty()) {
     w.u32(journal_tag);
     w.u64(t.journal.size());
@@ -250,6 +260,17 @@ SessionTable decode_session(std::string_view payload) {
       if (lines == 0 || lines > r.left() / 4) throw Damage("FORMAT");
       f.resize(lines);
       for (auto& line : f) line = std::string(r.bytes(r.u32()));
+    }
+  }
+  if (!r.at_end()) {
+    const std::uint32_t marked = r.u32();
+    if (marked > t.records.size()) throw Damage("FORMAT");
+    for (std::uint32_t k = 0; k < marked; ++k) {
+      Record* rec = t.record(r.u32());
+      if (!rec) throw Damage("FORMAT");
+      rec->twists = r.u8();
+      rec->auto_tangents = r.u8();
+      if (rec->twists > 1 || rec->auto_tangents > 1) throw Damage("FORMAT");
     }
   }
   if (!r.at_end()) {

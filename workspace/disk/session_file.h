@@ -50,6 +50,10 @@ struct Record {
   std::uint32_t id = 0;
   int nocur = 0, nostr = 0, intcu = 0, intst = 0;
   StoredArray inppn, inptg;
+  // STATUS[3] and STATUS[4] of that surface (Workspace::status_twists, status_auto): its twists
+  // and AUTO tangents. Written after the functions, for the records where one is not 0 (a file
+  // without that section has none).
+  std::uint8_t twists = 0, auto_tangents = 0;
   std::uint64_t generation = 0;  // in memory only: the Changes::surface it stands for
 };
 

@@ -7,6 +7,7 @@
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
 #include "workspace/kernels/limits.h"
+#include "workspace/kernels/marks.h"
 #include "workspace/kernels/spline.h"
 
 namespace igds {
@@ -123,8 +124,12 @@ void interpolate_into(const SurfaceInput& input, Surface& out) {
     return;
   }
   const auto points = as_vec3(*input.inppn);
+  // Marks's twists (marks.md, Birkhoff and de Boor) or the manual's zero block.
+  const Array twists =
+      input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
   coons_patches(input.nocur, input.nostr, points,
-                grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches);
+                grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches,
+                as_vec3(twists));
   fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
 }
 

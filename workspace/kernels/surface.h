@@ -9,6 +9,9 @@ struct SurfaceInput {
   int nocur = 0, nostr = 0, intcu = 0, intst = 0;
   const Array* inppn = nullptr;  // (NOCUR*NOSTR) x 3
   const Array* inptg = nullptr;  // 2(NOCUR+NOSTR) x 4, row order as in workspace/state.h
+  // CHANGE TWISTS: false for the zero twists of the manual, true for Marks's (marks.h) in the
+  // lower right block of every patch matrix.
+  bool marks_twists = false;
 };
 
 struct Surface {

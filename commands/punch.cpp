@@ -1,0 +1,88 @@
+// PUNCH [name] (Marks 1970, CADA/REM/BINARY; spec marks.md "The tape"): PATCHES on the 8-track
+// paper tape of the PDP-7 Multi-Patch Design Program, NAME.MPDPTAPE.
+#include <fmt/format.h>
+
+#include "commands/answers.h"
+#include "commands/command.h"
+#include "workspace/disk/disk.h"
+#include "workspace/error.h"
+#include "workspace/exchange/mpdp_tape.h"
+
+namespace igds {
+
+namespace {
+
+using exchange::TapeError;
+
+// The PDP-7 held about ten patches at a time (marks.md).
+constexpr std::size_t mpdp_patches = 10;
+
+const Prompt file_prompt{"FILE NAME?",
+                         "A name for the tape: 1 to 8 letters, digits or $ # @ + - _ (type\n"
+                         "MPDPTAPE; a file of that name is replaced)."};
+
+void run_punch(Context& ctx, const Choice*) {
+  const Workspace& ws = ctx.workspace();
+  if (!ws.has_input()) throw Report(reports::input_not_found);
+  if (ws.patches.rank() != 5 || ws.patches.empty())
+    throw Report("A SINGLE CURVE OR STRINGER HAS NO PATCHES TO PUNCH");
+  const std::string name = ask_file_name(ctx, file_prompt);
+  std::string tape;
+  try {
+    tape = exchange::write_tape(ws.patches);
+  } catch (const TapeError& e) {
+    if (e.problem == TapeError::Problem::out_of_range)
+      throw Report(fmt::format(
+          "PATCH {} HOLDS {}, OUTSIDE THE TAPE'S 18 BITS (-131072 TO 131071); NO FILE WRITTEN",
+          e.patch, fmt::format("{:.6g}", e.value)));
+    throw Report("PATCHES IS NOT NOCUR-1 BY NOSTR-1 BY 3 BY 4 BY 4; NO FILE WRITTEN");
+  }
+  write_user_file(ctx.disk(), name, "MPDPTAPE", tape);
+  const std::size_t patches = ws.patches.shape[0] * ws.patches.shape[1];
+  ctx.say(fmt::format("{}.MPDPTAPE: {} {}, {} FRAMES", name, patches,
+                      patches == 1 ? "PATCH" : "PATCHES", tape.size()));
+  if (patches > mpdp_patches)
+    ctx.say(fmt::format("MPDP HOLDS ABOUT {} PATCHES AT A TIME", mpdp_patches));
+}
+
+constexpr const Prompt* questions[] = {&file_prompt};
+
+}  // namespace
+
+extern const Command punch_command{
+    .name = "PUNCH",
+    .options = {},
+    .follows = "[name]",
+    .option_prompt = {},
+    .summary = "punches PATCHES on the MPDP paper tape NAME.MPDPTAPE",
+    .long_help = R"(PUNCH writes the patches of the current surface to NAME.MPDPTAPE, the
+8-track paper tape that Marks's CADA/REM/BINARY punched for the PDP-7
+Multi-Patch Design Program (MPDP), one frame a byte:
+
+  - every number is 18 bits in three frames, most significant six bits
+    first, each frame with its two leftmost holes: 300 octal + 6 bits;
+    negative numbers in two's complement; values rounded to integers
+  - per patch, row by row, 54 numbers: the patch number, the internal
+    lines (0), four zeros, then B (Marks's layout of the patch matrix)
+    for x, y and z, 16 numbers each, row by row, with MPDP's signs:
+    S_V, SE_V, E_H and SE_H change sign
+  - the tape ends with 777777 octal
+
+A number outside -131072 to 131071 cannot be punched: PUNCH names the
+patch and writes nothing (scale the surface down first). The PDP-7
+held about ten patches at a time: PUNCH says so when there are more.
+A single curve or stringer has no patches. A file of the same name is
+replaced.
+
+  INPUT NOT FOUND       there is no current surface
+  INCORRECT PARAMETER   the name is not such a name
+
+Example (PU is PUNCH; P stays PLOT):
+  PU SPHERE
+  SPHERE.MPDPTAPE: 16 PATCHES, 2595 FRAMES
+  MPDP HOLDS ABOUT 10 PATCHES AT A TIME)",
+    .questions = questions,
+    .run = run_punch,
+};
+
+}  // namespace igds
