@@ -75,8 +75,10 @@ std::string tangent_listing(const Workspace& ws) {
 
 // How the surface's tangents and twists were chosen. The workspace knows one way today: the
 // border tangents as typed (zero ones included) and zero twists (math.md, the manual's choice).
-std::vector<std::string> interpolation_modes(const Workspace&) {
-  return {"TANGENTS: TYPED", "TWISTS: ZERO TWISTS"};
+std::vector<std::string> interpolation_modes(const Workspace& ws) {
+  return {
+      ws.auto_tangents() ? "TANGENTS: AUTO (MARKS'S RULE)" : "TANGENTS: TYPED",
+      ws.marks_twists() ? "TWISTS: MARKS TWISTS (BIRKHOFF AND DE BOOR)" : "TWISTS: ZERO TWISTS"};
 }
 
 std::string surface_listing(const Workspace& ws) {

@@ -320,8 +320,7 @@ std::optional<std::string> AplEnvironment::start() {
     auto problem = surface_problem(ws_, true);
     if (!problem && ws_.nocur > 0) {
       try {
-        Surface s =
-            interpolate({ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst, &ws_.inppn, &ws_.inptg});
+        Surface s = interpolate(igds::surface_input(ws_));
         ws_.patches = std::move(s.patches);
         ws_.intpn = std::move(s.intpn);
       } catch (const DataError& e) {
@@ -375,7 +374,7 @@ void AplEnvironment::define_manual_functions() {
   using Args = const Value*;
   auto surface_input = [this] {
     if (ws_.nocur == 0) throw apl::Error(ErrorKind::value);
-    return SurfaceInput{ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst, &ws_.inppn, &ws_.inptg};
+    return igds::surface_input(ws_);
   };
   session_.define_native(
       "FIT", 0,

@@ -218,6 +218,11 @@ std::optional<VariableProblem> status_problem(const std::array<int, 10>& status)
     return VariableProblem{Variable::status, "STATUS[1] IS NOT 0 OR 1"};
   if (status[1] < 0 || status[1] > 2)
     return VariableProblem{Variable::status, "STATUS[2] IS NOT 0, 1 OR 2"};
+  // CHANGE TWISTS (1: MARKS) and AUTO at TANGENTS? (1: set by Marks's rule).
+  if (status[Workspace::status_twists] != 0 && status[Workspace::status_twists] != 1)
+    return VariableProblem{Variable::status, "STATUS[3] IS NOT 0 OR 1"};
+  if (status[Workspace::status_auto] != 0 && status[Workspace::status_auto] != 1)
+    return VariableProblem{Variable::status, "STATUS[4] IS NOT 0 OR 1"};
   return std::nullopt;
 }
 

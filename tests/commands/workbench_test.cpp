@@ -20,6 +20,7 @@
 
 namespace igds {
 extern const Command build_command;
+extern const Command change_command;
 extern const Command display_command;
 extern const Command store_command;
 extern const Command save_command;
@@ -126,6 +127,14 @@ TEST_CASE("LIST SURFACE: sizes, tangent mode and twist mode") {
                                                        "PATCHES 2 BY 2",
                                                        "INTERPOLATED GRID 7 BY 7 POINTS",
                                                        "TANGENTS: TYPED", "TWISTS: ZERO TWISTS"});
+  // CHANGE TWISTS MARKS, then AUTO at CHANGE TANGENTS: both said.
+  ctx.run(change_command, "TW", {"M"});
+  ctx.type({"AUTO", "", "N"});
+  ctx.run(change_command, "T");
+  const auto modes = listing(ctx, "SU");
+  REQUIRE(modes.size() == 6);
+  CHECK(modes[4] == "TANGENTS: AUTO (MARKS'S RULE)");
+  CHECK(modes[5] == "TWISTS: MARKS TWISTS (BIRKHOFF AND DE BOOR)");
 }
 
 TEST_CASE("LIST IMAGES: the current image, FIRST and SECOND") {

@@ -574,6 +574,8 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
       },
       "SHAPES: INPTG DOES NOT MATCH NOCUR AND NOSTR");
   crafted([](disk::SessionTable& t) { t.status[1] = 7; }, "STATUS: STATUS[2] IS NOT 0, 1 OR 2");
+  crafted([](disk::SessionTable& t) { t.status[2] = 2; }, "STATUS: STATUS[3] IS NOT 0 OR 1");
+  crafted([](disk::SessionTable& t) { t.status[3] = -1; }, "STATUS: STATUS[4] IS NOT 0 OR 1");
   crafted(
       [](disk::SessionTable& t) {
         t.derived = false;
