@@ -78,13 +78,21 @@ std::vector<MenuItem> menu_items(bool help_environment, std::size_t columns) {
   for (const ManualItem& m : manual_menu)
     add(m.command,
         m.option < 0 ? nullptr : &m.command->options[static_cast<std::size_t>(m.option)]);
+  // Then what igds added, so that the menu stays one column beside the picture: the options of
+  // the manual's commands that its menu lacks (CHANGE TWISTS, DISPLAY PICTURE), then each later
+  // command once, its option asked on the keyboard as PLOT's is.
+  auto in_manual = [](const Command* command, int option) {
+    return std::any_of(manual_menu.begin(), manual_menu.end(), [&](const ManualItem& m) {
+      return m.command == command && (option < 0 || m.option < 0 || m.option == option);
+    });
+  };
   for (const Command* command : command_table()) {
-    const bool in_manual = std::any_of(manual_menu.begin(), manual_menu.end(),
-                                       [&](const ManualItem& m) { return m.command == command; });
-    if (in_manual) continue;
-    if (command->options.empty()) add(command, nullptr);
-    for (const Choice& option : command->options) add(command, &option);
+    if (!in_manual(command, -1)) continue;
+    for (std::size_t k = 0; k < command->options.size(); ++k)
+      if (!in_manual(command, static_cast<int>(k))) add(command, &command->options[k]);
   }
+  for (const Command* command : command_table())
+    if (!in_manual(command, -1)) add(command, nullptr);
   return items;
 }
 

@@ -2,6 +2,7 @@
 // command of the table that the manual's menu lacks, made from the records; each label an
 // abbreviation that means its item when typed.
 #include "commands/menu.h"
+#include "devices/menu_layout.h"
 
 #include <doctest/doctest.h>
 
@@ -42,21 +43,36 @@ TEST_CASE("2250 menu: the manual's items in the manual's order, then the command
     for (std::size_t i = 0; i + 1 < manual.size(); ++i) CHECK(words(items[i]) == manual[i]);
     CHECK(words(items[manual.size() - 1]) == (help ? "RETURN" : "HELP"));
     CHECK(items[manual.size() - 1].help() == !help);
-    // After them, every other command of the table, each option an item, in table order.
+    // After them, the options of the manual's commands that its menu lacks, then every other
+    // command of the table once (its option asked on the keyboard), in table order.
     std::vector<std::string> expected;
     for (const Command* c : command_table()) {
       const std::string name(c->name);
-      if (std::any_of(manual.begin(), manual.end(),
-                      [&](const std::string& m) { return m.starts_with(name); }))
-        continue;
-      if (c->options.empty()) expected.push_back(name);
-      for (const Choice& o : c->options) expected.push_back(joined(name, &o));
+      for (const Choice& o : c->options) {
+        const std::string both = joined(name, &o);
+        const bool manual_command = std::any_of(
+            manual.begin(), manual.end(), [&](const auto& m) { return m.starts_with(name + " "); });
+        if (manual_command && std::find(manual.begin(), manual.end(), both) == manual.end() &&
+            !(name == "HELP"))
+          expected.push_back(both);
+      }
+    }
+    for (const Command* c : command_table()) {
+      const std::string name(c->name);
+      if (std::none_of(manual.begin(), manual.end(), [&](const std::string& m) {
+            return m == name || m.starts_with(name + " ");
+          }))
+        expected.push_back(name);
     }
     std::vector<std::string> added;
     for (std::size_t i = manual.size(); i < items.size(); ++i) added.push_back(words(items[i]));
     CHECK(added == expected);
     CHECK(std::find(added.begin(), added.end(), "ERASE") != added.end());
-    CHECK(std::find(added.begin(), added.end(), "EXPORT SVG") != added.end());
+    CHECK(std::find(added.begin(), added.end(), "EXPORT") != added.end());
+    CHECK(std::find(added.begin(), added.end(), "CHANGE TWISTS") != added.end());
+    CHECK(std::find(added.begin(), added.end(), "DISPLAY PICTURE") != added.end());
+    // One column beside the picture, as on the 2250.
+    CHECK(items.size() <= static_cast<std::size_t>(menu_screen::rows));
   }
 }
 

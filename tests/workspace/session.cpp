@@ -408,7 +408,7 @@ TEST_CASE("a disk that refuses the session: report, and the last saved session s
   Scratch s;
   Workspace first = test::make_workspace(3, 3, 4, 4);
   Workspace second = test::make_workspace(6, 6, 6, 6);
-  second.status[3] = 3;
+  second.status[5] = 3;
   std::size_t total = 0;  // what saving `second` writes over `first`
   {
     Scratch dry;
@@ -436,7 +436,7 @@ TEST_CASE("a disk that refuses the session: report, and the last saved session s
       CHECK(files_in(s.dir.path()) == files);
     }
     // A STATUS-only change after the failures is still saved completely.
-    second.status[4] = 4;
+    second.status[6] = 4;
     session.save(second);
   }
   test::check_same_workspace(load_fresh(s.disk), second);
