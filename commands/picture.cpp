@@ -310,8 +310,12 @@ std::string zoom_words(const std::array<double, 4>& window) {
                      number(window[2]), number(window[3]));
 }
 
+// How an input image of a surface whose tangents AUTO set says so.
+constexpr const char* auto_words = "TANGENTS AUTO";
+
 std::string image_line(const Image& image) {
   std::string line = describe_line(image.desim);
+  if (image.desim.what == 0 && image.auto_tangents) line += std::string(", ") + auto_words;
   if (const auto& w = image.window) line += ", " + zoom_words(*w);
   return line;
 }
@@ -399,7 +403,7 @@ Picture picture_of(std::shared_ptr<const Image> image) {
   if (image->desim.what == 2) return picture_of_duct(*image);
   Picture pic;
   pic.caption = image_caption(*image, caption_width);
-  if (image->desim.what == 0 && image->auto_tangents) pic.caption.push_back("TANGENTS AUTO");
+  if (image->desim.what == 0 && image->auto_tangents) pic.caption.push_back(auto_words);
   Grid g = grid_of(image->points);
   if (g.planes == 0 || g.rows == 0) return pic;
   Drawing2& d = pic.drawing;

@@ -158,6 +158,7 @@ TEST_CASE("AUTO at TANGENTS? sets every border tangent by Marks's rule, per unit
   const Image image = input_image(ws, View{Projection::orthogonal, {1, 0, 0}});
   const auto caption = picture_of(image).caption;
   CHECK(caption.back() == "TANGENTS AUTO");
+  CHECK(image_line(image) == "IMAGE: INPUT, ORTHOGONAL XY, TANGENTS AUTO");  // the one-line text
   // Without AUTO there is no such line.
   FakeContext typed(dir.path());
   build_wavy(typed, {"1 1 0 0 1"});
