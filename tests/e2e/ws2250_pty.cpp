@@ -152,7 +152,9 @@ TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, k
   REQUIRE(igds.expect("READY"));
   REQUIRE(igds.expect(gin_on));
   {
-    const TekPage& page = decoded(igds.output()).pages.back();
+    const TekDrawing d = decoded(igds.output());
+    REQUIRE_FALSE(d.pages.empty());
+    const TekPage& page = d.pages.back();
     CHECK(page_has(page, "HELP"));
     CHECK_FALSE(page_has(page, "RETURN"));
     CHECK(page_has(page, "D SURFACE"));
