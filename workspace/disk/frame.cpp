@@ -165,10 +165,14 @@ void Writer::array(const Array& a) {
   }
 }
 
+void Writer::description(const Description& d) {
+  i32(d.what);
+  i32(static_cast<std::int32_t>(d.projection));
+  for (double p : d.parameters) f64(p);
+}
+
 void Writer::image(const Image& image) {
-  i32(image.desim.what);
-  i32(static_cast<std::int32_t>(image.desim.projection));
-  for (double p : image.desim.parameters) f64(p);
+  description(image.desim);
   array(image.points);
   array(image.arrows);
   // A picture (DESIM[1] = 2, which no earlier igds wrote) adds its name and its DUCT text.
@@ -253,11 +257,17 @@ Array Reader::array(std::size_t max_elements) {
   return a;
 }
 
+Description Reader::description() {
+  Description d;
+  d.what = i32();
+  d.projection = static_cast<Projection>(i32());
+  for (double& p : d.parameters) p = f64();
+  return d;
+}
+
 Image Reader::image(std::size_t max_elements) {
   Image image;
-  image.desim.what = i32();
-  image.desim.projection = static_cast<Projection>(i32());
-  for (double& p : image.desim.parameters) p = f64();
+  image.desim = description();
   image.points = array(max_elements);
   image.arrows = array(max_elements);
   if (image.desim.what == 2) {

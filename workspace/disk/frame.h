@@ -62,6 +62,8 @@ class Writer {
   void array(const Array& a);
   // DESIM[1] DESIM[2] (i32), DESIM[3 4 5] (f64), the points, the arrows; a picture
   // (DESIM[1] = 2) then its name and its DUCT text, each a length (u64) and the bytes.
+  // DESIM[1] DESIM[2] (i32), DESIM[3 4 5] (f64).
+  void description(const Description& d);
   void image(const Image& image);
   // Another writer's runs, after these.
   void append(const Writer& other);
@@ -88,6 +90,7 @@ class Reader {
   std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
   std::uint64_t u64();
   double f64();
+  Description description();
   std::string_view bytes(std::size_t n);
   // At most `max_elements` elements (more: Damage "FORMAT").
   Array array(std::size_t max_elements = std::size_t(1) << 60);

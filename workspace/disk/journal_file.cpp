@@ -100,20 +100,6 @@ ArrayChange read_change(Reader& r) {
   return c;
 }
 
-void write_description(Writer& w, const Description& d) {
-  w.i32(d.what);
-  w.i32(static_cast<std::int32_t>(d.projection));
-  for (double p : d.parameters) w.f64(p);
-}
-
-Description read_description(Reader& r) {
-  Description d;
-  d.what = r.i32();
-  d.projection = static_cast<Projection>(r.i32());
-  for (double& p : d.parameters) p = r.f64();
-  return d;
-}
-
 // The generation of state k (before steps[k], after steps[k - 1]).
 std::uint64_t generation_of(std::span<const JournalStep> steps, std::size_t k) {
   return k < steps.size() ? steps[k].generation_before : steps[k - 1].generation_after;
@@ -235,7 +221,7 @@ std::string encode_journal(const Journal& journal, const Workspace& ws) {
       w.bytes(k.bytes);
     } else {
       w.u32(k.number);
-      if (k.kind == recipe_image) write_description(w, k.desim);
+      if (k.kind == recipe_image) w.description(k.desim);
     }
   }
   for (std::size_t k = first; k < last; ++k) {
@@ -289,7 +275,7 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
       e.image = slots[e.number];
     } else {
       if (e.number > count) throw Damage("FORMAT");
-      e.desim = read_description(r);
+      e.desim = r.description();
       Image probe;
       probe.desim = e.desim;
       if (auto p = image_problem(probe)) throw Damage("IMAGE: " + p->reason);

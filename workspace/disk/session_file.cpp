@@ -87,20 +87,6 @@ StoredArray read_array(Reader& r) {
   return a;
 }
 
-void write_description(Writer& w, const Description& d) {
-  w.i32(d.what);
-  w.i32(static_cast<std::int32_t>(d.projection));
-  for (double p : d.parameters) w.f64(p);
-}
-
-Description read_description(Reader& r) {
-  Description d;
-  d.what = r.i32();
-  d.projection = static_cast<Projection>(r.i32());
-  for (double& p : d.parameters) p = r.f64();
-  return d;
-}
-
 }  // namespace
 
 std::uint64_t Blob::size() const {
@@ -166,7 +152,7 @@ std::string encode_session(const SessionTable& t) {
         break;
       case ImageEntry::recipe:
         w.u32(e.record);
-        write_description(w, e.desim);
+        w.description(e.desim);
         break;
       case ImageEntry::stored:
         write_blob(w, e.data);
@@ -240,7 +226,7 @@ SessionTable decode_session(std::string_view payload) {
       case ImageEntry::recipe:
         e.record = r.u32();
         if (!t.record(e.record)) throw Damage("FORMAT");
-        e.desim = read_description(r);
+        e.desim = r.description();
         break;
       case ImageEntry::stored:
         e.data = read_blob(r);
