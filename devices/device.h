@@ -2,6 +2,7 @@
 // coordinates, and a device that remembers its own state so that it emits nothing redundant.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,22 @@ struct DevicePoint {
 
 // A polyline in device coordinates: a move to the first point, vectors to the others.
 using DevicePath = std::vector<DevicePoint>;
+
+// Polylines stored one after another in one buffer: path k is points[starts[k]] up to, not
+// including, points[starts[k + 1]].
+struct PathList {
+  std::vector<DevicePoint> points;
+  std::vector<std::size_t> starts{0};
+
+  std::size_t size() const { return starts.size() - 1; }
+  std::span<const DevicePoint> operator[](std::size_t k) const {
+    return {points.data() + starts[k], starts[k + 1] - starts[k]};
+  }
+  void clear() {
+    points.clear();
+    starts.assign(1, 0);
+  }
+};
 
 class Device {
  public:

@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 
+#include "workspace/kernels/large_array.h"
+
 namespace igds {
 
 namespace {
@@ -14,38 +16,63 @@ double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
 
+// An integer of at most 11 characters at `out`; returns its end. The small values of relative
+// moves, the commonest numbers of a plot, digit by digit without a library call.
+char* integer(char* out, int v) {
+  unsigned u = static_cast<unsigned>(v);
+  if (v < 0) {
+    *out++ = '-';
+    u = 0u - u;
+  }
+  if (u < 10) {
+    *out++ = static_cast<char>('0' + u);
+    return out;
+  }
+  if (u < 100) {
+    out[0] = static_cast<char>('0' + u / 10);
+    out[1] = static_cast<char>('0' + u % 10);
+    return out + 2;
+  }
+  return std::to_chars(out, out + 10, u).ptr;
+}
+
 }  // namespace
 
 HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute)
     : model_(model), absolute_(absolute) {
-  out_ = fmt::format("IN;SP1;SI{},{};", label_width_cm, label_height_cm);
+  put(fmt::format("IN;SP1;SI{},{};", label_width_cm, label_height_cm));
   // After IN the pen is somewhere near the origin: the first move is absolute.
   at_exact_ = false;
 }
 
+void HpglEncoder::grow(std::size_t bytes) {
+  out_.resize(std::max(2 * out_.size(), size_ + bytes + 4096));
+}
+
 void HpglEncoder::relative_mode(bool on) {
   if (on == relative_) return;
-  out_ += on ? "PR;" : "PA;";
+  put(on ? "PR;" : "PA;");
   relative_ = on;
 }
 
 void HpglEncoder::coordinates(DevicePoint p) {
-  // The commonest bytes of a plot: two integers by to_chars, appended at once.
+  // The commonest bytes of a plot: two integers, written in place.
   if (relative_) p = {p.x - at_.x, p.y - at_.y};
-  char buffer[32];
-  char* end = std::to_chars(buffer, buffer + 15, p.x).ptr;
-  *end++ = ',';
-  end = std::to_chars(end, buffer + sizeof buffer, p.y).ptr;
-  out_.append(buffer, end);
+  char* out = room(24);
+  out = integer(out, p.x);
+  *out++ = ',';
+  size_ = static_cast<std::size_t>(integer(out, p.y) - out_.data());
 }
 
 void HpglEncoder::reserve(std::size_t vectors) {
-  out_.reserve(out_.size() + 6 * vectors);
+  if (out_.size() >= size_ + 6 * vectors) return;
+  reserve_large(out_, size_ + 6 * vectors);
+  out_.resize(out_.capacity());
 }
 
 void HpglEncoder::close_pd() {
   if (!pd_open_) return;
-  out_ += ';';
+  put(';');
   pd_open_ = false;
 }
 
@@ -54,9 +81,9 @@ void HpglEncoder::move(DevicePoint p) {
   close_pd();
   // A position known only roughly (after IN or a label) is left by an absolute move.
   relative_mode(!absolute_ && at_exact_);
-  out_ += "PU";
+  put("PU");
   coordinates(p);
-  out_ += ';';
+  put(';');
   travel_units_ += distance(at_, p);
   ++stats_.pen_lifts;
   at_ = p;
@@ -71,27 +98,56 @@ void HpglEncoder::draw(DevicePoint p) {
   if (at_ == p) return;
   if (!pd_open_) {
     relative_mode(!absolute_);
-    out_ += "PD";
+    put("PD");
     pd_open_ = true;
   } else {
-    out_ += ',';
+    put(',');
   }
   coordinates(p);
   ++stats_.vectors;
   at_ = p;
 }
 
+void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
+  const std::size_t n = points.size();
+  std::size_t i = 0;
+  // Until the pen is down at an exact place, point by point.
+  for (; i < n && !(at_exact_ && pd_open_ && relative_ == !absolute_); ++i)
+    draw(points[reversed ? n - 1 - i : i]);
+  if (i == n) return;
+  // The rest with the pen down: at most 24 bytes a point, written through locals (a store
+  // through a char pointer would otherwise make every member be read again).
+  char* out = room(24 * (n - i));
+  DevicePoint at = at_;
+  std::size_t vectors = 0;
+  const bool relative = relative_;
+  for (; i < n; ++i) {
+    const DevicePoint p = points[reversed ? n - 1 - i : i];
+    if (at == p) continue;
+    *out++ = ',';
+    const DevicePoint d = relative ? DevicePoint{p.x - at.x, p.y - at.y} : p;
+    out = integer(out, d.x);
+    *out++ = ',';
+    out = integer(out, d.y);
+    ++vectors;
+    at = p;
+  }
+  size_ = static_cast<std::size_t>(out - out_.data());
+  stats_.vectors += vectors;
+  at_ = at;
+}
+
 void HpglEncoder::text(DevicePoint p, std::string_view line) {
   close_pd();
   if (!(at_exact_ && at_ == p)) {
     relative_mode(false);
-    fmt::format_to(std::back_inserter(out_), "PU{},{};", p.x, p.y);
+    put(fmt::format("PU{},{};", p.x, p.y));
     travel_units_ += distance(at_, p);
     ++stats_.pen_lifts;
   }
-  out_ += "LB";
-  for (char c : line) out_ += (c >= 0x20 && c < 0x7F) ? c : '?';
-  out_ += '\x03';
+  put("LB");
+  for (char c : line) put((c >= 0x20 && c < 0x7F) ? c : '?');
+  put('\x03');
   // The pen ends after the last character: its place is only estimated.
   double width = label_advance(model_) * static_cast<double>(line.size());
   at_ = {p.x + static_cast<int>(std::lround(width)), p.y};
@@ -101,22 +157,22 @@ void HpglEncoder::text(DevicePoint p, std::string_view line) {
 void HpglEncoder::style(const Style& style) {
   if (style.pen != style_.pen) {
     close_pd();
-    fmt::format_to(std::back_inserter(out_), "SP{};", std::clamp(style.pen, 1, 6));
+    put(fmt::format("SP{};", std::clamp(style.pen, 1, 6)));
   }
   if (style.dash != style_.dash) {
     close_pd();
     switch (style.dash) {
       case Dash::solid:
-        out_ += "LT;";
+        put("LT;");
         break;
       case Dash::dotted:
-        out_ += "LT1;";
+        put("LT1;");
         break;
       case Dash::dashed:
-        out_ += "LT2;";
+        put("LT2;");
         break;
       case Dash::chain:
-        out_ += "LT4;";
+        put("LT4;");
         break;
     }
   }
@@ -125,10 +181,10 @@ void HpglEncoder::style(const Style& style) {
 
 void HpglEncoder::finish() {
   close_pd();
-  out_ += "PU;SP0;";
+  put("PU;SP0;");
   travel_units_ += distance(at_, {0, 0});
   stats_.pen_up_mm = travel_units_ * model_.unit_mm;
-  stats_.bytes = out_.size();
+  stats_.bytes = size_;
 }
 
 }  // namespace igds

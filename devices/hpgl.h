@@ -1,7 +1,9 @@
 // The HP-GL/1 encoder and the plot layout (spec hpgl.md).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -48,23 +50,44 @@ class HpglEncoder : public Device {
   // SP n for the pen (the 7475A has 6), LT for the dash: solid LT;, dashed LT2;, chain LT4;,
   // dotted LT1;. The weight is the pen's own.
   void style(const Style& style) override;
+  // draw() to each point of `points` in turn (from the last to the first when `reversed`): the
+  // bulk of a plot, without a call per point.
+  void draw_run(std::span<const DevicePoint> points, bool reversed);
   // PU;SP0; at the end of the plot.
   void finish();
   // Room for about `vectors` more vectors, so that a large plot is not copied as it grows.
   void reserve(std::size_t vectors);
 
-  const std::string& bytes() const { return out_; }
-  std::string take_bytes() { return std::move(out_); }  // the plot, without a copy
+  std::string_view bytes() const { return {out_.data(), size_}; }
+  std::string take_bytes() {  // the plot, without a copy
+    out_.resize(size_);
+    return std::move(out_);
+  }
   const PlotStats& stats() const { return stats_; }
 
  private:
   void close_pd();
   void coordinates(DevicePoint p);
   void relative_mode(bool on);
+  // Room for `bytes` more at out_[size_]: out_ is kept longer than what it holds.
+  char* room(std::size_t bytes) {
+    if (size_ + bytes > out_.size()) grow(bytes);
+    return out_.data() + size_;
+  }
+  void grow(std::size_t bytes);
+  void put(std::string_view s) {
+    std::copy(s.begin(), s.end(), room(s.size()));
+    size_ += s.size();
+  }
+  void put(char c) {
+    *room(1) = c;
+    ++size_;
+  }
 
   const PlotterModel& model_;
   bool absolute_;
-  std::string out_;
+  std::string out_;  // the plot in its first size_ bytes
+  std::size_t size_ = 0;
   PlotStats stats_;
   DevicePoint at_{0, 0};     // where the pen is (estimated after a label)
   bool at_exact_ = true;     // false after a label: its end is only estimated

@@ -8,6 +8,7 @@
 
 #include "devices/hpgl.h"
 #include "devices/plot_order.h"
+#include "devices/render.h"
 
 namespace igds {
 
@@ -34,15 +35,12 @@ PlotLayout plot_layout(const Picture& picture, const PlotOptions& options) {
   const double margin = plot_margin_mm * per_mm, gap = plot_gap_mm * per_mm;
   const double strip = static_cast<double>(columns) * l.advance;
   Box room{margin, margin, lim.x - margin - gap - strip, lim.y - margin};
-  l.at = fit(picture.drawing, room, l.mark);
+  const Box b = bounds(picture.drawing);
+  const bool marks = has_marks(picture.drawing);
+  l.at = fit(b, marks, room, l.mark);
   // The drawing and its caption, side by side, centred across the sheet.
-  Box b = bounds(picture.drawing);
   double left = room.x0, right = room.x0, top = room.y1;
   if (b.x0 <= b.x1) {
-    const auto& items = picture.drawing.items();
-    const bool marks = std::any_of(items.begin(), items.end(), [](const auto& item) {
-      return item.kind == Drawing2::Kind::mark;
-    });
     double m = marks ? l.mark : 0;
     left = l.at.dx + l.at.scale * b.x0 - m;
     right = l.at.dx + l.at.scale * b.x1 + m;
@@ -59,12 +57,10 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
   const PlotterModel& model = hp7475a;
   DevicePoint lim = model.limit(options.paper);
   const Rendering rendering{.point = plot_point_mm / model.unit_mm};
-  Placed placed =
+  const Placed placed =
       place(picture.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)}, rendering);
   HpglEncoder hpgl(model, options.absolute);
-  std::size_t points = 0;
-  for (const auto& p : placed.paths) points += p.points.size();
-  hpgl.reserve(points);
+  hpgl.reserve(placed.paths.points.size());
   // The description first, where the pen starts from the origin; a line that would not fit on
   // the sheet is left out (and said, as clipping).
   bool clipped = placed.clipped;
@@ -84,25 +80,32 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
   // Pen by pen (a pen change is slow), each pen's strokes in plot order; the texts of the drawing
   // last, with their pens.
   std::vector<Style> styles;
-  for (const auto& p : placed.paths)
-    if (std::find(styles.begin(), styles.end(), p.style) == styles.end()) styles.push_back(p.style);
-  std::vector<DevicePath> paths;
-  PathList ordered;
+  for (const Style& s : placed.styles)
+    if (std::find(styles.begin(), styles.end(), s) == styles.end()) styles.push_back(s);
+  std::vector<Line> lines;
+  PlotOrder order;
   const DevicePoint origin{0, 0};
   for (const Style& style : styles) {
-    paths.clear();
-    for (auto& p : placed.paths)
-      if (p.style == style) paths.push_back(std::move(p.points));
-    plot_order(paths, pen, ordered);
+    lines.clear();
+    for (std::size_t k = 0; k < placed.paths.size(); ++k)
+      if (placed.styles[k] == style) lines.push_back(placed.paths[k]);
+    plot_order(lines, pen, order);
     hpgl.style(style);
     // Never more pen-up travel than the drawing order.
-    if (pen_up_travel(ordered, pen, origin) > pen_up_travel(paths, pen, origin)) {
-      for (const auto& path : paths) hpgl.polyline(path);
-      if (!paths.empty() && !paths.back().empty()) pen = paths.back().back();
+    if (pen_up_travel(order, lines, pen, origin) > pen_up_travel(lines, pen, origin)) {
+      for (const Line& line : lines) hpgl.polyline(line);
+      if (!lines.empty() && !lines.back().empty()) pen = lines.back().back();
     } else {
-      for (std::size_t k = 0; k < ordered.size(); ++k) hpgl.polyline(ordered[k]);
-      if (ordered.size() > 0 && !ordered[ordered.size() - 1].empty())
-        pen = ordered[ordered.size() - 1].back();
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
+          const Stroke& stroke = order.strokes[s];
+          const Line line =
+              lines[stroke.line].subspan(stroke.first, stroke.last - stroke.first + 1);
+          if (s == order.starts[k]) hpgl.move(stroke.begin(lines));
+          hpgl.draw_run(line, stroke.reversed);
+        }
+      }
+      if (order.size() > 0) pen = order.strokes.back().end(lines);
     }
   }
   for (const auto& t : placed.texts) {

@@ -9,9 +9,8 @@
 #include <memory>
 #include <utility>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
+#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -28,25 +27,6 @@ double distance(DevicePoint a, DevicePoint b) {
 struct Keyed {
   u64 key, value;
 };
-
-// Asks for transparent huge pages over the whole pages of a large buffer, where the system
-// allows (Linux): on a virtual machine, faulting in 4 KB pages one by one costs more than the
-// sort that fills them. Advice only: a refusal leaves the ordinary pages.
-void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
-#ifdef __linux__
-  const std::uintptr_t page = 4096;
-  const auto from = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
-  const auto to = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
-  if (to > from && to - from >= (std::uintptr_t(1) << 22))
-    madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
-#endif
-}
-
-template <class T>
-void reserve_large(std::vector<T>& v, std::size_t n) {
-  v.reserve(n);
-  advise_huge_pages(v.data(), v.capacity() * sizeof(T));
-}
 
 // Room for `size` elements of a trivially copyable T, left unwritten: a sort fills it.
 template <class T>
@@ -103,7 +83,7 @@ struct PointIds {
   u64 h = 1;
   int bits = 0;
 
-  explicit PointIds(std::span<const DevicePath> paths) {
+  explicit PointIds(std::span<const Line> paths) {
     long long x1 = 0, y1 = 0;
     bool first = true;
     for (const auto& path : paths)
@@ -128,7 +108,7 @@ struct Piece {
 // fresh[s] for each segment s of the paths in drawing order: it has a length and was not drawn
 // before in either direction. The segments are sorted by their lower end, and compared by their
 // higher end within each group, first drawn first. Returns the number of fresh segments.
-std::size_t mark_fresh(std::span<const DevicePath> paths, const PointIds& ids,
+std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
                        std::vector<std::uint8_t>& fresh) {
   std::size_t n = 0;
   for (const auto& path : paths) n += path.empty() ? 0 : path.size() - 1;
@@ -137,49 +117,107 @@ std::size_t mark_fresh(std::span<const DevicePath> paths, const PointIds& ids,
   std::size_t count = n;
   auto drop = [&](std::size_t s) { fresh[s] = 0, --count; };
   if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max()) {
+    // First by the high bits of the lower end into buckets (drawing order kept within each),
+    // then each bucket alone by the bits left, in the cache, on as many threads as pay.
     struct Segment {
       std::uint32_t lo, hi, s;
     };
-    Buffer<Segment> records(n);
-    RadixSort sorter(ids.bits);
-    std::size_t m = 0;
-    std::uint32_t s = 0;
-    for (const auto& path : paths)
-      for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
-        auto a = static_cast<std::uint32_t>(ids(path[i])),
-             b = static_cast<std::uint32_t>(ids(path[i + 1]));
-        if (a == b) {
-          drop(s);
-          continue;
-        }
-        records.data[m++] = {std::min(a, b), std::max(a, b), s};
-        sorter.add(std::min(a, b));
-      }
-    Buffer<Segment> scratch(m);
-    std::span<Segment> segments(sorter.sort(records.begin(), scratch.begin(), m,
-                                            [](const Segment& g) { return u64{g.lo}; }),
-                                m);
-    for (std::size_t i = 0; i < segments.size();) {
-      std::size_t j = i + 1;
-      while (j < segments.size() && segments[j].lo == segments[i].lo) ++j;
-      if (j - i <= 16) {
-        // Few segments share an end: compare each with those drawn before it.
-        for (std::size_t k = i + 1; k < j; ++k)
-          for (std::size_t e = i; e < k; ++e)
-            if (segments[e].hi == segments[k].hi) {
-              drop(segments[k].s);
-              break;
-            }
-      } else {
-        std::sort(segments.begin() + long(i), segments.begin() + long(j),
-                  [](const Segment& a, const Segment& b) {
-                    return a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
-                  });
-        for (std::size_t k = i + 1; k < j; ++k)
-          if (segments[k].hi == segments[k - 1].hi) drop(segments[k].s);
-      }
-      i = j;
+    // Buckets of about 2048 segments or more, sorted by at most two digits of 8 to 11 bits.
+    const int high = std::clamp(ids.bits - 16, 0, static_cast<int>(std::bit_width(n >> 11))),
+              low_bits = ids.bits - high;
+    const std::size_t buckets = std::size_t{1} << high;
+    // The paths in `parts` runs of about as many segments, one a thread: each counts its
+    // segments by bucket, then writes them after those of the runs before it.
+    const unsigned parts = buckets > 1 ? threads_for(2 * n) : 1;
+    std::vector<std::size_t> cut{0}, cut_segment{0};
+    for (std::size_t k = 0, done = 0; k < paths.size(); ++k) {
+      done += paths[k].empty() ? 0 : paths[k].size() - 1;
+      if (cut.size() < parts && done * parts >= n * cut.size())
+        cut.push_back(k + 1), cut_segment.push_back(done);
     }
+    while (cut.size() <= parts) cut.push_back(paths.size()), cut_segment.push_back(n);
+    std::vector<std::size_t> counts(parts * (buckets + 1), 0), dropped(parts + buckets, 0);
+    parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
+      for (std::size_t t = from; t < to; ++t) {
+        std::size_t* c = counts.data() + t * (buckets + 1);
+        std::size_t s = cut_segment[t];
+        for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
+          const Line& path = paths[k];
+          for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
+            const auto a = ids(path[i]), b = ids(path[i + 1]);
+            if (a == b)
+              fresh[s] = 0, ++dropped[buckets + t];
+            else
+              ++c[std::min(a, b) >> low_bits];
+          }
+        }
+      }
+    });
+    // first[k]: where bucket k starts; a run's count becomes where its segments go in it.
+    std::vector<std::size_t> first(buckets + 1, 0);
+    std::size_t m = 0;
+    for (std::size_t k = 0; k < buckets; ++k) {
+      first[k] = m;
+      for (unsigned t = 0; t < parts; ++t) m += std::exchange(counts[t * (buckets + 1) + k], m);
+    }
+    first[buckets] = m;
+    Buffer<Segment> records(m);
+    parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
+      for (std::size_t t = from; t < to; ++t) {
+        std::size_t* at = counts.data() + t * (buckets + 1);
+        auto s = static_cast<std::uint32_t>(cut_segment[t]);
+        for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
+          const Line& path = paths[k];
+          for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
+            auto a = static_cast<std::uint32_t>(ids(path[i])),
+                 b = static_cast<std::uint32_t>(ids(path[i + 1]));
+            if (a == b) continue;
+            if (a > b) std::swap(a, b);
+            records.data[at[a >> low_bits]++] = {a, b, s};
+          }
+        }
+      }
+    });
+    // Drops by bucket: each segment is in one bucket, so threads mark different bytes.
+    auto sort_buckets = [&](std::size_t from, std::size_t to) {
+      std::vector<Segment> scratch;  // as large as the largest bucket of this thread
+      for (std::size_t k = from; k < to; ++k) {
+        const std::size_t size = first[k + 1] - first[k];
+        if (size < 2) continue;
+        RadixSort sorter(low_bits);
+        Segment* begin = records.begin() + first[k];
+        for (const Segment* g = begin; g != begin + size; ++g) sorter.add(g->lo);
+        if (scratch.size() < size) scratch.resize(size);
+        std::span<Segment> segments(
+            sorter.sort(begin, scratch.data(), size, [](const Segment& g) { return u64{g.lo}; }),
+            size);
+        auto drop_here = [&](std::size_t segment) { fresh[segment] = 0, ++dropped[k]; };
+        for (std::size_t i = 0; i < segments.size();) {
+          std::size_t j = i + 1;
+          while (j < segments.size() && segments[j].lo == segments[i].lo) ++j;
+          if (j - i <= 16) {
+            // Few segments share an end: compare each with those drawn before it.
+            for (std::size_t q = i + 1; q < j; ++q)
+              for (std::size_t e = i; e < q; ++e)
+                if (segments[e].hi == segments[q].hi) {
+                  drop_here(segments[q].s);
+                  break;
+                }
+          } else {
+            std::sort(segments.begin() + long(i), segments.begin() + long(j),
+                      [](const Segment& a, const Segment& b) {
+                        return a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
+                      });
+            for (std::size_t q = i + 1; q < j; ++q)
+              if (segments[q].hi == segments[q - 1].hi) drop_here(segments[q].s);
+          }
+          i = j;
+        }
+      }
+    };
+    parallel_for(buckets, buckets > 1 ? threads_for(2 * m) : 1, sort_buckets);
+    for (std::size_t d : dropped) count -= d;
+
     return count;
   }
   // Coordinates too far apart, or too many segments, for 32-bit ids: a comparison sort.
@@ -333,8 +371,31 @@ double pen_up_travel(const PathList& paths, DevicePoint from, DevicePoint to) {
   return travel + distance(at, to);
 }
 
-void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& out) {
-  out.clear();
+double pen_up_travel(std::span<const Line> lines, DevicePoint from, DevicePoint to) {
+  double travel = 0;
+  DevicePoint at = from;
+  for (const Line& line : lines) {
+    if (line.empty()) continue;
+    travel += distance(at, line.front());
+    at = line.back();
+  }
+  return travel + distance(at, to);
+}
+
+double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, DevicePoint from,
+                     DevicePoint to) {
+  double travel = 0;
+  DevicePoint at = from;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    travel += distance(at, order.strokes[order.starts[k]].begin(lines));
+    at = order.strokes[order.starts[k + 1] - 1].end(lines);
+  }
+  return travel + distance(at, to);
+}
+
+void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out) {
+  out.strokes.clear();
+  out.starts.assign(1, 0);
   const PointIds ids(paths);
   std::vector<std::uint8_t> fresh;
   const std::size_t segments = mark_fresh(paths, ids, fresh);
@@ -419,33 +480,50 @@ void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& 
     ends[2 * j + 1] = end_point(refs[joined[j + 1] - 1] ^ 1);
   }
   EndGrid grid(ends, start);
-  reserve_large(out.points, segments + m);
-  auto emit = [&](std::size_t r, bool skip_first) {
+  out.strokes.reserve(pieces.size());
+  out.starts.reserve(m + 1);
+  auto stroke = [&](std::size_t r) {
     const Piece& p = pieces[r / 2];
-    auto begin = paths[p.path].begin();
-    std::size_t first = p.first, last = p.last;
-    if (r % 2 == 0)
-      out.points.insert(out.points.end(), begin + long(first + skip_first), begin + long(last + 1));
-    else
-      out.points.insert(out.points.end(),
-                        std::make_reverse_iterator(begin + long(last + 1 - skip_first)),
-                        std::make_reverse_iterator(begin + long(first)));
+    out.strokes.push_back({p.path, p.first, p.last, r % 2 == 1});
   };
+  bool drawn = false;
   DevicePoint at = start;
   for (std::size_t k = 0; k < m; ++k) {
     std::size_t id = grid.nearest(at), j = id / 2;
     grid.take(j);
     // Ends that meet make one path: the pen stays down.
-    bool goes_on = !out.points.empty() && out.points.back() == ends[id];
-    if (!goes_on && !out.points.empty()) out.starts.push_back(out.points.size());
-    bool skip = goes_on;
+    const bool goes_on = drawn && at == ends[id];
+    if (!goes_on && drawn) out.starts.push_back(out.strokes.size());
     if (id % 2 == 0)
-      for (std::size_t i = joined[j]; i < joined[j + 1]; ++i, skip = true) emit(refs[i], skip);
+      for (std::size_t i = joined[j]; i < joined[j + 1]; ++i) stroke(refs[i]);
     else
-      for (std::size_t i = joined[j + 1]; i-- > joined[j]; skip = true) emit(refs[i] ^ 1, skip);
+      for (std::size_t i = joined[j + 1]; i-- > joined[j];) stroke(refs[i] ^ 1);
     at = ends[id ^ 1];
+    drawn = true;
   }
-  out.starts.push_back(out.points.size());
+  out.starts.push_back(out.strokes.size());
+}
+
+void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& out) {
+  out.clear();
+  std::vector<Line> lines(paths.begin(), paths.end());
+  PlotOrder order;
+  plot_order(lines, start, order);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
+      const Stroke& t = order.strokes[s];
+      const Line line = lines[t.line];
+      const bool skip = s > order.starts[k];
+      if (!t.reversed)
+        out.points.insert(out.points.end(), line.begin() + long(t.first + skip),
+                          line.begin() + long(t.last + 1));
+      else
+        out.points.insert(out.points.end(),
+                          std::make_reverse_iterator(line.begin() + long(t.last + 1 - skip)),
+                          std::make_reverse_iterator(line.begin() + long(t.first)));
+    }
+    out.starts.push_back(out.points.size());
+  }
 }
 
 std::vector<DevicePath> plot_order(const std::vector<DevicePath>& paths, DevicePoint start) {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
 #include "workspace/drawing/flatten.h"
+#include "workspace/kernels/large_array.h"
 
 namespace igds {
 
@@ -32,11 +34,14 @@ bool inside(Point2 p, const Box& clip) {
   return p.x >= clip.x0 && p.x <= clip.x1 && p.y >= clip.y0 && p.y <= clip.y1;
 }
 
-// Where placed paths go: a list (the plotter reorders them) or a device at once.
+// Where placed paths go: a list (the plotter reorders them) or a device at once. A path is
+// written into the buffer open() returns, from its size at that moment, and handed over by
+// close(), which drops it when it has fewer than two points.
 class Sink {
  public:
   virtual ~Sink() = default;
-  virtual void path(DevicePath& points, const Style& style) = 0;
+  virtual DevicePath& open() = 0;
+  virtual void close(std::size_t start, const Style& style) = 0;
   virtual void text(DevicePoint at, const std::string& text, const Style& style) = 0;
   bool clipped = false;
 };
@@ -44,9 +49,15 @@ class Sink {
 class ListSink final : public Sink {
  public:
   explicit ListSink(Placed& out) : out_(out) {}
-  void path(DevicePath& points, const Style& style) override {
-    out_.paths.push_back({std::move(points), style});
-    points = {};
+  DevicePath& open() override { return out_.paths.points; }
+  void close(std::size_t start, const Style& style) override {
+    auto& points = out_.paths.points;
+    if (points.size() - start < 2) {
+      points.resize(start);
+      return;
+    }
+    out_.paths.starts.push_back(points.size());
+    out_.styles.push_back(style);
   }
   void text(DevicePoint at, const std::string& text, const Style& style) override {
     out_.texts.push_back({at, text, style});
@@ -59,10 +70,16 @@ class ListSink final : public Sink {
 class DeviceSink final : public Sink {
  public:
   explicit DeviceSink(Device& device) : device_(device) {}
-  void path(DevicePath& points, const Style& style) override {
-    device_.style(style);
-    device_.polyline(points);
-    points.clear();
+  DevicePath& open() override {
+    piece_.clear();
+    return piece_;
+  }
+  void close(std::size_t start, const Style& style) override {
+    if (piece_.size() - start >= 2) {
+      device_.style(style);
+      device_.polyline(std::span<const DevicePoint>(piece_).subspan(start));
+    }
+    piece_.clear();
   }
   void text(DevicePoint at, const std::string& text, const Style& style) override {
     device_.style(style);
@@ -71,28 +88,26 @@ class DeviceSink final : public Sink {
 
  private:
   Device& device_;
+  DevicePath piece_;
 };
 
-// Clips one polyline in device units and hands its visible pieces to the sink; `piece` is
-// reused from call to call.
-void place_line(const std::vector<Point2>& line, const Box& clip, const Style& style, Sink& sink,
-                DevicePath& piece) {
-  piece.clear();
+// Clips one polyline in device units and hands its visible pieces to the sink.
+void place_line(const std::vector<Point2>& line, const Box& clip, const Style& style, Sink& sink) {
+  DevicePath* piece = &sink.open();
+  std::size_t start = piece->size();
+  auto add = [&](DevicePoint p) {
+    if (piece->size() == start || !(piece->back() == p)) piece->push_back(p);
+  };
   if (std::all_of(line.begin(), line.end(), [&](Point2 p) { return inside(p, clip); })) {
-    // Nothing to clip (the usual case): rounding alone.
-    for (Point2 p : line) {
-      DevicePoint d{nearest(p.x), nearest(p.y)};
-      if (piece.empty() || !(piece.back() == d)) piece.push_back(d);
-    }
-    if (piece.size() >= 2) sink.path(piece, style);
+    // Nothing to clip: rounding alone.
+    for (Point2 p : line) add({nearest(p.x), nearest(p.y)});
+    sink.close(start, style);
     return;
   }
   auto flush = [&] {
-    if (piece.size() >= 2) sink.path(piece, style);
-    piece.clear();
-  };
-  auto add = [&](DevicePoint p) {
-    if (piece.empty() || !(piece.back() == p)) piece.push_back(p);
+    sink.close(start, style);
+    piece = &sink.open();
+    start = piece->size();
   };
   for (std::size_t i = 0; i + 1 < line.size(); ++i) {
     Point2 a = line[i], b = line[i + 1];
@@ -102,12 +117,93 @@ void place_line(const std::vector<Point2>& line, const Box& clip, const Style& s
       continue;
     }
     DevicePoint da = rounded(a, clip);
-    if (!piece.empty() && !(piece.back() == da)) flush();
+    if (piece->size() > start && !(piece->back() == da)) flush();
     add(da);
     add(rounded(b, clip));
   }
   if (line.size() == 1 && !inside(line[0], clip)) sink.clipped = true;
-  flush();
+  sink.close(start, style);
+}
+
+// An open polyline whose points are all finite and fall inside `clip` once placed, rounded
+// straight into the sink (the usual case, and most of the points of a large drawing); false,
+// with nothing handed over, when a point is not finite or falls outside.
+bool place_plain(PointsView<Point2, const double> points, const Placement& at, const Box& clip,
+                 const Style& style, Sink& sink) {
+  const double* base = points.data();
+  const std::size_t stride = points.stride(), n = points.size();
+  DevicePath& out = sink.open();
+  const std::size_t start = out.size();
+  out.resize(start + n);
+  DevicePoint* d = out.data() + start;
+  DevicePoint* const first = d;
+  // Points far apart (a stringer of a grid: a row's length between them) are asked for early,
+  // many at once: the processor's own prefetching does not follow such strides.
+  const std::size_t ahead = stride > 8 ? 16 : 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (ahead && i + ahead < n) __builtin_prefetch(base + (i + ahead) * stride);
+    const double* p = base + i * stride;
+    const double x = at.dx + at.scale * p[0], y = at.dy + at.scale * p[1];
+    // Also false for a NaN: not finite, or outside.
+    if (!(x >= clip.x0 && x <= clip.x1 && y >= clip.y0 && y <= clip.y1)) {
+      out.resize(start);
+      return false;
+    }
+    const DevicePoint q{nearest(x), nearest(y)};
+    if (d == first || !(d[-1] == q)) *d++ = q;
+  }
+  out.resize(static_cast<std::size_t>(d - out.data()));
+  sink.close(start, style);
+  return true;
+}
+
+// Side by side polylines of a shared pool: as many as `block` items from `items[0]` that each
+// take `count` points `stride` doubles apart, starting one point after the one before (the
+// stringers of a grid). The number of such items.
+std::size_t side_by_side(std::span<const Drawing2::Item> items, std::size_t block) {
+  const auto& a = items[0];
+  constexpr std::size_t n = Point2::dimension;
+  if (a.kind != Drawing2::Kind::polyline || a.closed || a.pool == 0 || a.stride <= n) return 0;
+  std::size_t k = 1;
+  while (k < items.size() && k < block) {
+    const auto& b = items[k];
+    if (b.kind != a.kind || b.closed || b.pool != a.pool || b.stride != a.stride ||
+        b.count != a.count || b.first != a.first + k * n)
+      break;
+    ++k;
+  }
+  return k;
+}
+
+// place_plain for `items` side by side (side_by_side), a row of points of them all at a time:
+// each row is read as the few cache lines it lies in, where one stringer alone would read a line
+// for each of its points. False, with nothing handed over, when place_plain would refuse one.
+bool place_side_by_side(const Drawing2& drawing, std::span<const Drawing2::Item> items,
+                        const Placement& at, const Box& clip, Sink& sink,
+                        std::vector<DevicePoint>& block, std::vector<std::size_t>& sizes) {
+  const std::size_t m = items.size(), count = items[0].count, stride = items[0].stride;
+  constexpr std::size_t n = Point2::dimension;
+  const double* base = drawing.points(items[0]).data();
+  block.resize(m * count);
+  sizes.assign(m, 0);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double* row = base + i * stride;
+    for (std::size_t j = 0; j < m; ++j) {
+      const double x = at.dx + at.scale * row[j * n], y = at.dy + at.scale * row[j * n + 1];
+      if (!(x >= clip.x0 && x <= clip.x1 && y >= clip.y0 && y <= clip.y1)) return false;
+      const DevicePoint q{nearest(x), nearest(y)};
+      DevicePoint* line = block.data() + j * count;
+      if (sizes[j] == 0 || !(line[sizes[j] - 1] == q)) line[sizes[j]++] = q;
+    }
+  }
+  for (std::size_t j = 0; j < m; ++j) {
+    DevicePath& out = sink.open();
+    const std::size_t start = out.size();
+    out.insert(out.end(), block.begin() + long(j * count),
+               block.begin() + long(j * count + sizes[j]));
+    sink.close(start, items[j].style);
+  }
+  return true;
 }
 
 // Adds `points` placed to `line`, split into `out` wherever a point is not finite.
@@ -182,14 +278,28 @@ void mark_strokes(MarkShape shape, Point2 c, double h, std::vector<std::vector<P
 void place_into(const Drawing2& drawing, const Placement& at, const Box& clip,
                 const Rendering& rendering, Sink& sink) {
   std::vector<std::vector<Point2>> lines;
-  DevicePath piece;
   std::vector<Point2> flat;
+  std::vector<DevicePoint> block;
+  std::vector<std::size_t> sizes;
   const double tolerance = rendering.tolerance * rendering.point;
-  for (const auto& item : drawing.items()) {
+  const auto items = drawing.items();
+  // The items side by side not yet placed as a block: until `plain_until`, one by one.
+  std::size_t plain_until = 0;
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const auto& item = items[k];
+    if (k >= plain_until) {
+      const std::size_t m = side_by_side(items.subspan(k), 16);
+      if (m > 1 && place_side_by_side(drawing, items.subspan(k, m), at, clip, sink, block, sizes)) {
+        k += m - 1;
+        continue;
+      }
+      plain_until = k + std::max<std::size_t>(m, 1);
+    }
     lines.clear();
     const auto points = drawing.points(item);
     switch (item.kind) {
       case Drawing2::Kind::polyline:
+        if (!item.closed && place_plain(points, at, clip, item.style, sink)) break;
         placed_pieces(points, item.closed, at, lines);
         break;
       case Drawing2::Kind::curve: {
@@ -215,7 +325,7 @@ void place_into(const Drawing2& drawing, const Placement& at, const Box& clip,
       case Drawing2::Kind::text:
         break;
     }
-    for (const auto& line : lines) place_line(line, clip, item.style, sink, piece);
+    for (const auto& line : lines) place_line(line, clip, item.style, sink);
   }
   for (const auto& item : drawing.items()) {
     if (item.kind != Drawing2::Kind::text) continue;
@@ -233,24 +343,66 @@ void place_into(const Drawing2& drawing, const Placement& at, const Box& clip,
 }  // namespace
 
 Box bounds(const Drawing2& drawing) {
+  // An item whose points lie far apart in a shared pool (a stringer of a grid) is not read when
+  // items of consecutive points (the curves) cover its whole range already: reading a point per
+  // cache line would cost more than everything else here.
+  struct Run {
+    std::uint32_t pool;
+    std::size_t from, to;  // in doubles
+  };
+  constexpr std::size_t n = Point2::dimension;
+  std::vector<Run> runs;
+  for (const auto& item : drawing.items())
+    if (item.pool != 0 && item.stride == n && item.count > 0)
+      runs.push_back({item.pool, item.first, item.first + n * item.count});
+  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+    return a.pool != b.pool ? a.pool < b.pool : a.from < b.from;
+  });
+  std::vector<Run> merged;
+  for (const Run& r : runs)
+    if (!merged.empty() && merged.back().pool == r.pool && r.from <= merged.back().to)
+      merged.back().to = std::max(merged.back().to, r.to);
+    else
+      merged.push_back(r);
+  auto covered = [&](const Drawing2::Item& item) {
+    const std::size_t last = item.first + item.stride * (item.count - 1) + n;
+    auto at = std::upper_bound(merged.begin(), merged.end(), Run{item.pool, item.first, 0},
+                               [](const Run& a, const Run& b) {
+                                 return a.pool != b.pool ? a.pool < b.pool : a.from < b.from;
+                               });
+    if (at == merged.begin()) return false;
+    --at;
+    return at->pool == item.pool && at->from <= item.first && last <= at->to;
+  };
+
   const double inf = std::numeric_limits<double>::infinity();
   Box b{inf, inf, -inf, -inf};
   for (const auto& item : drawing.items()) {
-    for (Point2 p : drawing.points(item)) {
-      if (!finite(p)) continue;
-      b.x0 = std::min(b.x0, p.x), b.x1 = std::max(b.x1, p.x);
-      b.y0 = std::min(b.y0, p.y), b.y1 = std::max(b.y1, p.y);
+    if (item.count == 0 || (item.pool != 0 && item.stride != n && covered(item))) continue;
+    const auto points = drawing.points(item);
+    const double* base = points.data();
+    const std::size_t stride = points.stride();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double x = base[i * stride], y = base[i * stride + 1];
+      if (!(std::isfinite(x) && std::isfinite(y))) continue;
+      b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
+      b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
     }
   }
   return b;
 }
 
+bool has_marks(const Drawing2& drawing) {
+  return std::any_of(drawing.items().begin(), drawing.items().end(),
+                     [](const auto& item) { return item.kind == Drawing2::Kind::mark; });
+}
+
 Placement fit(const Drawing2& drawing, const Box& box, double mark) {
-  const bool marks =
-      std::any_of(drawing.items().begin(), drawing.items().end(),
-                  [](const auto& item) { return item.kind == Drawing2::Kind::mark; });
+  return fit(bounds(drawing), has_marks(drawing), box, mark);
+}
+
+Placement fit(const Box& b, bool marks, const Box& box, double mark) {
   if (!marks) mark = 0;
-  Box b = bounds(drawing);
   double cx = (box.x0 + box.x1) / 2, cy = (box.y0 + box.y1) / 2;
   if (!(b.x0 <= b.x1)) return {1, cx, cy};
   double w = b.x1 - b.x0, h = b.y1 - b.y0;
@@ -296,6 +448,11 @@ bool clip_segment(Point2& a, Point2& b, const Box& clip) {
 Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
              const Rendering& rendering) {
   Placed out;
+  // Room for every polyline point at once: a large drawing's list is not copied as it grows.
+  std::size_t points = 0;
+  for (const auto& item : drawing.items())
+    if (item.kind == Drawing2::Kind::polyline) points += item.count + (item.closed ? 1 : 0);
+  reserve_large(out.paths.points, points);
   ListSink sink(out);
   place_into(drawing, at, clip, rendering, sink);
   out.clipped = sink.clipped;

@@ -28,6 +28,10 @@ Box bounds(const Drawing2& drawing);
 // The placement that fits `drawing` into `box`, centred, aspect kept, leaving `mark` device units
 // on every side for its marks, if it has any. A drawing of one point goes to the box's centre.
 Placement fit(const Drawing2& drawing, const Box& box, double mark);
+// The same for a drawing whose bounds are `extent` (bounds() of it) and that has marks or not:
+// for a caller that needs the bounds too, so that a large drawing is measured once.
+Placement fit(const Box& extent, bool marks, const Box& box, double mark);
+bool has_marks(const Drawing2& drawing);
 
 // Clips the segment a-b to `clip` (Liang-Barsky); false when nothing of it is inside.
 bool clip_segment(Point2& a, Point2& b, const Box& clip);
@@ -39,10 +43,6 @@ struct Rendering {
   double tolerance = 0.2;  // in 4013 points: how far a flattened curve may stray
 };
 
-struct StyledPath {
-  DevicePath points;
-  Style style;
-};
 struct PlacedText {
   DevicePoint at;
   std::string text;
@@ -50,7 +50,8 @@ struct PlacedText {
 };
 // A drawing in integer device units.
 struct Placed {
-  std::vector<StyledPath> paths;  // polylines, flattened curves and marks, in drawing order
+  PathList paths;                 // polylines, flattened curves and marks, in drawing order
+  std::vector<Style> styles;      // the style of each path
   std::vector<PlacedText> texts;  // texts whose place lies inside the clip box
   bool clipped = false;           // something lay outside the clip box
 };

@@ -78,9 +78,10 @@ class Journal {
   // larger than max_bytes alone cannot be undone: the journal starts again after it.
   static constexpr std::size_t max_steps = 200;
   static constexpr std::size_t max_bytes = 4u << 20;
-  // The images only the journal still holds (drawn earlier, replaced since): a surface image of
-  // 4 M points is 64 MB.
-  static constexpr std::size_t max_image_bytes = 256u << 20;
+  // The images only the journal still holds (drawn earlier, replaced since): one surface image of
+  // 4 M points (64 MB), so that a session with a command's scratch stays within twice its
+  // variables (docs/disk.md, "The undo journal").
+  static constexpr std::size_t max_image_bytes = 64u << 20;
 
   Journal() = default;
   // `ws` is the current state; nothing to undo or redo.

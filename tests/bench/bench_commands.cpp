@@ -1,11 +1,11 @@
 // Every command at the speed of its data: a real igds session (the binary, --term none, its
 // session on a scratch disk of the system's temporary folder, fsync included) on surfaces of about
 // 1 M and 4 M points from a 100 x 100 and a 500 x 500 input grid. For each command (run three
-// times, the median): the milliseconds from sending its lines to the next READY (the autosave
-// included) and the bytes igds wrote to files meanwhile; at the end the session's peak resident
-// memory. Also the start-up with that session saved (to READY; PATCHES and INTPN are made while
-// the first line is typed, and the first command waits for them if it comes sooner), and the
-// variables' own size for comparison.
+// times, the median; BUILD and the exchange files once): the milliseconds from sending its lines to
+// the next READY (the autosave included) and the bytes igds wrote to files meanwhile; at the end
+// the session's peak resident memory. Also the start-up with that session saved (to READY; PATCHES
+// and INTPN are made while the first line is typed, and the first command waits for them if it
+// comes sooner), and the variables' own size for comparison.
 //
 // Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes, ..._peak_rss_mb,
 // ..._variables_mb, e.g. commands_500x500_4m_change_points_ms.
@@ -188,7 +188,22 @@ void save_grid(const Disk& disk, const std::string& name, int n) {
 struct Step {
   const char* key;
   std::string lines;
+  int runs = 3;  // the median of these (one for the writers of files of hundreds of megabytes)
 };
+
+// BUILD of the grid save_grid saves, typed as a designer would: a line of points for each curve,
+// the tangents by AUTO, then the interpolated curves and stringers.
+std::string build_lines(int n, int density) {
+  std::string lines = fmt::format("BUILD\n{} {}\n", n, n);
+  for (int i = 0; i < n; ++i) {
+    lines += fmt::format("{}", i * n + 1);
+    for (int j = 0; j < n; ++j)
+      lines += fmt::format(" {} {} {:.6f}", 10.0 * j, 12.0 * i,
+                           20 * std::sin(0.05 * j) * std::cos(0.04 * i));
+    lines += '\n';
+  }
+  return lines + fmt::format("\nAUTO\n\n{} {}\n", density, density);
+}
 
 void run_case(const Disk& disk, const std::string& grid, int n, int density,
               const std::string& size) {
@@ -203,17 +218,26 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
 
   const int mid = (n / 2) * n + n / 2;  // a point inside
   const std::vector<Step> steps{
+      {"build", build_lines(n, density), 1},
       {"restore", fmt::format("RESTORE {}\n", grid)},
       {"change_grid", fmt::format("CHANGE GRID {} {}\n", density, density)},
       {"change_points",
        fmt::format("CHANGE POINTS\n{} {} {} 5\n\nN\nN\n", mid + 1, 10.0 * (n / 2), 12.0 * (n / 2))},
       {"change_tangents", "CHANGE TANGENTS\n1 1 0.2 0 1\n\nN\n"},
+      {"change_twists", "CHANGE TWISTS MARKS\n"},
       {"display_surface", "DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"},
       {"display_surface_conic",
        fmt::format("DISPLAY SURFACE CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n)},
       {"display_input", "DISPLAY INPUT ISOMETRIC 3 30\n"},
       {"store_first", "STORE FIRST\n"},
       {"display_first", "DISPLAY FIRST\n"},
+      {"store_second", "STORE SECOND\n"},
+      {"display_second", "DISPLAY SECOND\n"},
+      {"zoom", "ZOOM 2\n"},
+      {"zoom_whole", "ZOOM\n"},
+      {"list_surface", "LIST SURFACE\n"},
+      {"undo", "UNDO\n"},
+      {"redo", "REDO\n"},
       {"erase", "ERASE\n"},
       {"help_short", "HELP SHORT\n"},
       {"store_file", "STORE FILE IMG\n"},
@@ -223,22 +247,31 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
       {"plot", "PLOT SELECTRIC\n"},
       {"export_hpgl", "EXPORT HPGL DRAWING\n"},
       {"export_tek", "EXPORT TEK DRAWING\n"},
+      {"export_svg", "EXPORT SVG DRAWING\n"},
+      {"export_duct", "EXPORT DUCT DRAWING\n", 1},
+      {"export_iges", "EXPORT IGES DRAWING\n", 1},
+      {"export_step", "EXPORT STEP DRAWING\n", 1},
   };
   std::size_t peak = 0;
   {
     Igds igds(disk.dir());
     for (const auto& step : steps) {
-      // Each step three times (a DISPLAY before each STORE FIRST, not timed): the median.
+      // Each step three times (not timed: a DISPLAY before each STORE, UNDO and REDO, and an
+      // UNDO before each REDO), the median; BUILD and the exchange files once.
       std::vector<Igds::Timing> runs;
-      for (int r = 0; r < 3; ++r) {
-        if (std::string_view(step.key) == "store_first")
+      for (int r = 0; r < step.runs; ++r) {
+        const std::string_view key = step.key;
+        if (key == "store_first" || key == "store_second")
           igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
+        if (key == "undo" || key == "redo") igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
+        if (key == "redo") igds.command("UNDO\n");
         runs.push_back(igds.command(step.lines));
       }
       std::sort(runs.begin(), runs.end(),
                 [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
+      const auto& median = runs[runs.size() / 2];
       fmt::print("{}_{}_ms {:.1f}\n{}_{}_written_bytes {}\n", prefix, step.key,
-                 1000 * runs[1].seconds, prefix, step.key, runs[1].written);
+                 1000 * median.seconds, prefix, step.key, median.written);
       std::fflush(stdout);
     }
     peak = igds.peak_rss_kb();

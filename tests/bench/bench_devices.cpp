@@ -134,7 +134,7 @@ IGDS_BENCH("devices") {
     naive.text(t, line);
     t.y -= static_cast<int>(std::lround(layout.line));
   }
-  for (const auto& p : placed.paths) naive.polyline(p.points);
+  for (std::size_t k = 0; k < placed.paths.size(); ++k) naive.polyline(placed.paths[k]);
   naive.finish();
   fmt::print("hpgl_pen_up_mm_ordered {:.0f}\n", plot.stats.pen_up_mm);
   fmt::print("hpgl_pen_up_mm_drawing_order {:.0f}\n", naive.stats().pen_up_mm);
@@ -147,7 +147,7 @@ IGDS_BENCH("devices") {
   std::size_t bytes = 0;
   double e = igds::bench::best_seconds(10, [&] {
     igds::TekEncoder encoder;
-    for (const auto& p : on_screen.paths) encoder.polyline(p.points);
+    for (std::size_t k = 0; k < on_screen.paths.size(); ++k) encoder.polyline(on_screen.paths[k]);
     bytes = encoder.bytes().size();
   });
   fmt::print("tek_encode_mb_per_s {:.1f}\n", double(bytes) / e / 1e6);
@@ -174,7 +174,8 @@ IGDS_BENCH("plot_order") {
     struct {
       std::vector<igds::DevicePath> paths;
     } placed;
-    for (const auto& p : styled.paths) placed.paths.push_back(p.points);
+    for (std::size_t k = 0; k < styled.paths.size(); ++k)
+      placed.paths.emplace_back(styled.paths[k].begin(), styled.paths[k].end());
     pic = {};
     for (const auto& p : placed.paths) segments[k] += p.size() - 1;
     // A fresh output each time, as PLOT has.

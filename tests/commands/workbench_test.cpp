@@ -380,10 +380,11 @@ TEST_CASE("DISPLAY INPUT writes each point's number beside it, clear of the line
     for (const Box& c : cells)
       CHECK((c.x1 < cell.x0 || cell.x1 < c.x0 || c.y1 < cell.y0 || cell.y1 < c.y0));
     cells.push_back(cell);
-    for (const auto& path : placed.paths)
-      for (std::size_t i = 0; i + 1 < path.points.size(); ++i) {
-        Point2 a{double(path.points[i].x), double(path.points[i].y)};
-        Point2 e{double(path.points[i + 1].x), double(path.points[i + 1].y)};
+    for (std::size_t k = 0; k < placed.paths.size(); ++k)
+      for (std::size_t i = 0; i + 1 < placed.paths[k].size(); ++i) {
+        const auto path = placed.paths[k];
+        Point2 a{double(path[i].x), double(path[i].y)};
+        Point2 e{double(path[i + 1].x), double(path[i + 1].y)};
         CHECK_MESSAGE(!clip_segment(a, e, cell), "number " << t.text << " over a line");
       }
   }

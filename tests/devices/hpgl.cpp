@@ -90,7 +90,7 @@ TEST_CASE("HpglEncoder: the absolute twin sends the same points") {
     h.move({0, 0});
     h.draw({5, 5});
     h.finish();
-    CHECK(absolute_points(h.bytes()) ==
+    CHECK(absolute_points(std::string(h.bytes())) ==
           std::vector<DevicePoint>{{10, 20}, {30, 40}, {50, 40}, {0, 0}, {5, 5}});
     CHECK((h.bytes().find("PR;") == std::string::npos) == absolute);
   }
@@ -220,7 +220,7 @@ TEST_CASE("plot_hpgl: ordering never costs more pen-up travel than the drawing o
       naive.text(t, line);
       t.y -= static_cast<int>(std::lround(layout.line));
     }
-    for (const auto& p : placed.paths) naive.polyline(p.points);
+    for (std::size_t k = 0; k < placed.paths.size(); ++k) naive.polyline(placed.paths[k]);
     for (const auto& label : placed.texts) naive.text(label.at, label.text);  // point numbers
     naive.finish();
     CHECK(plot.stats.pen_up_mm <= naive.stats().pen_up_mm + 1e-9);

@@ -26,9 +26,14 @@ Drawing2 drawing(std::initializer_list<std::vector<Point2>> lines, std::vector<P
   return d;
 }
 
+DevicePath path(const Placed& placed, std::size_t k) {
+  return {placed.paths[k].begin(), placed.paths[k].end()};
+}
+
 std::vector<DevicePath> paths(const Placed& placed) {
   std::vector<DevicePath> out;
-  for (const auto& p : placed.paths) out.push_back(p.points);
+  for (std::size_t k = 0; k < placed.paths.size(); ++k)
+    out.emplace_back(placed.paths[k].begin(), placed.paths[k].end());
   return out;
 }
 
@@ -87,8 +92,8 @@ TEST_CASE("place: marks are strokes of the given half side, never out of the cli
   Placed placed = place(drawing({}, {{0, 0}, {10, 10}}, 2), {}, {0, 0, 100, 100}, {});
   CHECK(placed.clipped);  // the mark at the origin sticks out
   REQUIRE(placed.paths.size() == 2);
-  CHECK(placed.paths[1].points == DevicePath{{8, 8}, {12, 8}, {12, 12}, {8, 12}, {8, 8}});
-  for (auto p : placed.paths[0].points) CHECK((p.x >= 0 && p.y >= 0));
+  CHECK(path(placed, 1) == DevicePath{{8, 8}, {12, 8}, {12, 12}, {8, 12}, {8, 8}});
+  for (auto p : path(placed, 0)) CHECK((p.x >= 0 && p.y >= 0));
   // The other shapes, and the device's point: a 12-bit screen has 4 units to the 4013 point.
   Drawing2 d;
   d.add_mark({50, 50}, MarkShape::cross, 2);
@@ -97,10 +102,10 @@ TEST_CASE("place: marks are strokes of the given half side, never out of the cli
   d.add_mark({50, 50}, MarkShape::circle, 2);
   Placed shapes = place(d, {}, {0, 0, 100, 100}, Rendering{.point = 4});
   REQUIRE(shapes.paths.size() == 2 + 2 + 1 + 1);
-  CHECK(shapes.paths[0].points == DevicePath{{42, 42}, {58, 58}});
-  CHECK(shapes.paths[3].points == DevicePath{{50, 42}, {50, 58}});
-  CHECK(shapes.paths[4].points == DevicePath{{50, 42}, {58, 50}, {50, 58}, {42, 50}, {50, 42}});
-  for (auto p : shapes.paths[5].points) CHECK(std::abs(std::hypot(p.x - 50, p.y - 50) - 8) <= 0.75);
+  CHECK(path(shapes, 0) == DevicePath{{42, 42}, {58, 58}});
+  CHECK(path(shapes, 3) == DevicePath{{50, 42}, {50, 58}});
+  CHECK(path(shapes, 4) == DevicePath{{50, 42}, {58, 50}, {50, 58}, {42, 50}, {50, 42}});
+  for (auto p : path(shapes, 5)) CHECK(std::abs(std::hypot(p.x - 50, p.y - 50) - 8) <= 0.75);
 }
 
 TEST_CASE("place: curves are flattened in device units, more finely on a finer device") {
@@ -113,11 +118,11 @@ TEST_CASE("place: curves are flattened in device units, more finely on a finer d
   Placed coarse = place(d, at, {-10, -10, 200, 200}, Rendering{.point = 1});
   Placed fine = place(d, at, {-10, -10, 200, 200}, Rendering{.point = 0.1});
   REQUIRE(coarse.paths.size() == 1);
-  CHECK(coarse.paths[0].style.pen == 2);
-  CHECK(coarse.paths[0].points.front() == DevicePoint{100, 0});
-  CHECK(coarse.paths[0].points.back() == DevicePoint{0, 100});
-  for (auto p : coarse.paths[0].points) CHECK(std::abs(std::hypot(p.x, p.y) - 100) <= 1);
-  CHECK(fine.paths[0].points.size() > coarse.paths[0].points.size());
+  CHECK(coarse.styles[0].pen == 2);
+  CHECK(path(coarse, 0).front() == DevicePoint{100, 0});
+  CHECK(path(coarse, 0).back() == DevicePoint{0, 100});
+  for (auto p : path(coarse, 0)) CHECK(std::abs(std::hypot(p.x, p.y) - 100) <= 1);
+  CHECK(path(fine, 0).size() > path(coarse, 0).size());
 }
 
 TEST_CASE("render draws what place lists, in the same order, with the styles") {

@@ -84,7 +84,7 @@ fs::path hand_written() {
 }
 
 // The shortest distance from `p` to the polyline.
-double distance_to(DevicePoint p, const DevicePath& path) {
+double distance_to(DevicePoint p, std::span<const DevicePoint> path) {
   double best = INFINITY;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) {
     const double ax = path[k].x, ay = path[k].y, bx = path[k + 1].x, by = path[k + 1].y;
@@ -98,7 +98,7 @@ double distance_to(DevicePoint p, const DevicePath& path) {
 }
 
 // The largest distance of a vertex of either path from the other path.
-double path_gap(const DevicePath& a, const DevicePath& b) {
+double path_gap(std::span<const DevicePoint> a, std::span<const DevicePoint> b) {
   double gap = 0;
   for (DevicePoint p : a) gap = std::max(gap, distance_to(p, b));
   for (DevicePoint p : b) gap = std::max(gap, distance_to(p, a));
@@ -306,8 +306,8 @@ TEST_CASE("round trip: EXPORT DUCT then DISPLAY PICTURE draws the surface's own 
   REQUIRE(a.paths.size() > 40);
   double worst = 0;
   for (std::size_t k = 0; k < a.paths.size(); ++k) {
-    CHECK(a.paths[k].style == b.paths[k].style);
-    worst = std::max(worst, path_gap(a.paths[k].points, b.paths[k].points));
+    CHECK(a.styles[k] == b.styles[k]);
+    worst = std::max(worst, path_gap(a.paths[k], b.paths[k]));
   }
   MESSAGE(
       fmt::format("round trip: {} paths, largest gap {:.3f} device units", a.paths.size(), worst));

@@ -58,6 +58,16 @@ void prepare(double*, std::size_t, unsigned) {}
 
 }  // namespace
 
+void advise_huge_pages([[maybe_unused]] const void* data, [[maybe_unused]] std::size_t bytes) {
+#ifdef __linux__
+  const std::uintptr_t page = 4096;
+  const auto from = (reinterpret_cast<std::uintptr_t>(data) + page - 1) & ~(page - 1);
+  const auto to = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(page - 1);
+  if (to > from && to - from >= (std::uintptr_t(1) << 22))
+    madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
+#endif
+}
+
 unsigned threads_for(std::size_t doubles) {
   if (doubles < large / 4) return 1;
   return std::clamp(std::thread::hardware_concurrency(), 1u, 8u);

@@ -22,4 +22,16 @@ void reuse_for_output(Array& a, std::vector<std::size_t> shape, unsigned threads
 // The number of threads worth using to write `doubles` numbers (1 below a few megabytes).
 unsigned threads_for(std::size_t doubles);
 
+// Asks for transparent huge pages over the whole pages of a large buffer that has not been
+// written yet (a vector's reserved room), where the system allows (Linux): on a virtual machine
+// each 4 KB page faulted in costs more than writing it. Advice only; nothing below 4 MB.
+void advise_huge_pages(const void* data, std::size_t bytes);
+
+// v.reserve(n), the room asked for as huge pages (a scratch buffer of a large drawing).
+template <class V>
+void reserve_large(V& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v.data(), v.capacity() * sizeof(*v.data()));
+}
+
 }  // namespace igds
