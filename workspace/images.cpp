@@ -121,4 +121,18 @@ Image image_of(const Workspace& ws, const Description& desim) {
   return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
 }
 
+Image copy_of(const Image& image) {
+  Image out;
+  out.desim = image.desim;
+  out.points = large_copy(image.points, threads_for(image.points.size()));
+  out.arrows = image.arrows;
+  out.drawn_from = image.drawn_from;
+  out.file = image.file;
+  out.file_sum = image.file_sum;
+  out.picture = image.picture;
+  out.window = image.window;
+  out.auto_tangents = image.auto_tangents;
+  return out;
+}
+
 }  // namespace igds

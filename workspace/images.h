@@ -30,4 +30,8 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 // image, DESIM[1] 2, is made by picture_image from its text, not from a surface).
 Image image_of(const Workspace& ws, const Description& desim);
 
+// A copy of `image`, every member alike; its points in memory made ready for a large array
+// (kernels/large_array.h): ZOOM's copy of a 4 M-point image costs the copy, not its page faults.
+Image copy_of(const Image& image);
+
 }  // namespace igds

@@ -111,8 +111,15 @@ class Igds {
     const std::size_t wrote_before = proc_value(pid_, "io", "wchar:");
     const std::size_t output_before = output_bytes_;
     const auto t0 = std::chrono::steady_clock::now();
+    // igds echoes long answers (a BUILD's lines of points): its output is read while the lines
+    // are written, or both would wait for the other.
     for (std::size_t done = 0; done < lines.size();) {
-      ssize_t n = ::write(to_, lines.data() + done, lines.size() - done);
+      pollfd p[2] = {{to_, POLLOUT, 0}, {from_, POLLIN, 0}};
+      if (::poll(p, 2, 300000) <= 0) break;
+      if (p[1].revents & (POLLIN | POLLHUP)) read_some();
+      if (!(p[0].revents & POLLOUT)) continue;
+      ssize_t n =
+          ::write(to_, lines.data() + done, std::min<std::size_t>(lines.size() - done, 4096));
       if (n <= 0) break;
       done += static_cast<std::size_t>(n);
     }
@@ -147,16 +154,22 @@ class Igds {
         ::kill(pid_, SIGKILL);
         return false;
       }
-      char buffer[65536];
-      ssize_t n = ::read(from_, buffer, sizeof buffer);
-      if (n <= 0) return false;
-      output_.append(buffer, static_cast<std::size_t>(n));
-      output_bytes_ += static_cast<std::size_t>(n);
-      if (output_.size() > (1u << 20)) {  // keep the tail only
-        output_.erase(0, output_.size() - 4096);
-        scanned_ = 0;
-      }
+      if (!read_some()) return false;
     }
+  }
+
+  // Reads what igds wrote; false at the end of its output.
+  bool read_some() {
+    char buffer[65536];
+    ssize_t n = ::read(from_, buffer, sizeof buffer);
+    if (n <= 0) return false;
+    output_.append(buffer, static_cast<std::size_t>(n));
+    output_bytes_ += static_cast<std::size_t>(n);
+    if (output_.size() > (1u << 20)) {  // keep the tail only
+      output_.erase(0, output_.size() - 4096);
+      scanned_ = 0;
+    }
+    return true;
   }
 
   pid_t pid_ = -1;

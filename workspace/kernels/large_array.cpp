@@ -85,6 +85,12 @@ Array large_array(std::vector<std::size_t> shape, unsigned threads) {
   return a;
 }
 
+Array large_copy(const Array& a, unsigned threads) {
+  Array out = large_array(a.shape, threads);
+  std::copy(a.ravel.begin(), a.ravel.end(), out.ravel.begin());
+  return out;
+}
+
 void reuse_for_output(Array& a, std::vector<std::size_t> shape, unsigned threads) {
   const std::size_t n = Array::count(shape);
   if (a.ravel.capacity() >= n && a.ravel.capacity() / 2 <= n) {

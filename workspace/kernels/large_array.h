@@ -13,6 +13,9 @@ namespace igds {
 // (Linux): on a virtual machine faulting 4 KB pages one by one costs several times the writing.
 Array large_array(std::vector<std::size_t> shape, unsigned threads);
 
+// A copy of `a` in memory made ready as large_array's (huge pages, faulted in by `threads`).
+Array large_copy(const Array& a, unsigned threads);
+
 // Gives `a` the shape for an output that will be overwritten entirely: its memory is kept when it
 // can hold the new array (and is not more than twice as large), so a recompute of the same size
 // writes warm pages; otherwise `a` becomes large_array(shape, threads). The numbers it holds
