@@ -51,17 +51,32 @@ void add_polyline(Drawing2& drawing, const std::vector<Point2>& line, Identity i
 
 // Adds `line` to the drawing (the devices break it wherever a point is not finite); with a
 // ZOOM window, only its pieces inside the window, one polyline each.
-void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id,
-              const Box* window = nullptr) {
-  if (!window) return add_polyline(drawing, line, id);
+template <class Line>
+void add_clipped(Drawing2& drawing, const Line& line, Identity id, const Box* window) {
   std::vector<Point2> piece;
+  if (!window) {
+    piece.assign(line.begin(), line.end());
+    return add_polyline(drawing, piece, id);
+  }
   auto flush = [&] {
     if (piece.size() >= 2) add_polyline(drawing, piece, id);
     piece.clear();
   };
+  // Where a point lies against the window: 0 inside, else a bit for each side it is beyond.
+  const Box& w = *window;
+  auto side = [&w](Point2 p) {
+    return (p.x < w.x0 ? 1 : p.x > w.x1 ? 2 : 0) | (p.y < w.y0 ? 4 : p.y > w.y1 ? 8 : 0);
+  };
   for (std::size_t i = 0; i + 1 < line.size(); ++i) {
     Point2 a = line[i], b = line[i + 1];
-    if (!finite(a) || !finite(b) || !clip_segment(a, b, *window)) {
+    if (!finite(a) || !finite(b)) {
+      flush();
+      continue;
+    }
+    // Both beyond one side: nothing of it is inside; both inside: nothing to clip (most segments
+    // of a large grid are one or the other).
+    const int sa = side(a), sb = side(b);
+    if ((sa & sb) != 0 || ((sa | sb) != 0 && !clip_segment(a, b, w))) {
       flush();
       continue;
     }
@@ -72,6 +87,11 @@ void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id,
     if (!(b.x == line[i + 1].x && b.y == line[i + 1].y)) flush();
   }
   flush();
+}
+
+void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id,
+              const Box* window = nullptr) {
+  add_clipped(drawing, line, id, window);
 }
 
 // The border of the grid, once around and closed: curve 1, the last stringer, the last curve
@@ -428,17 +448,13 @@ Picture picture_of(std::shared_ptr<const Image> image) {
     return pic;
   }
   if (window) {
-    std::vector<Point2> line;
-    for (std::size_t c = 0; c < g.planes; ++c) {
-      line.clear();
-      for (std::size_t r = 0; r < g.rows; ++r) line.push_back(g.at(c, r));
-      add_line(d, line, {Role::curve, static_cast<int>(c + 1)}, window);
-    }
-    for (std::size_t r = 0; r < g.rows; ++r) {
-      line.clear();
-      for (std::size_t c = 0; c < g.planes; ++c) line.push_back(g.at(c, r));
-      add_line(d, line, {Role::stringer, static_cast<int>(r + 1)}, window);
-    }
+    // Each curve and stringer read in place (a view of the image's points), cut to the window.
+    for (std::size_t c = 0; c < g.planes; ++c)
+      add_clipped(d, Point2View(g.data + 2 * c * g.rows, g.rows),
+                  {Role::curve, static_cast<int>(c + 1)}, window);
+    for (std::size_t r = 0; r < g.rows; ++r)
+      add_clipped(d, Point2View(g.data + 2 * r, g.planes, 2 * g.rows),
+                  {Role::stringer, static_cast<int>(r + 1)}, window);
     return pic;
   }
   // The curves and stringers read the image's own points: no copy of a large grid.

@@ -349,26 +349,14 @@ class EndGrid {
 }  // namespace
 
 double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, DevicePoint to) {
-  double travel = 0;
-  DevicePoint at = from;
-  for (const auto& path : paths) {
-    if (path.empty()) continue;
-    travel += distance(at, path.front());
-    at = path.back();
-  }
-  return travel + distance(at, to);
+  const std::vector<Line> lines(paths.begin(), paths.end());
+  return pen_up_travel(lines, from, to);
 }
 
 double pen_up_travel(const PathList& paths, DevicePoint from, DevicePoint to) {
-  double travel = 0;
-  DevicePoint at = from;
-  for (std::size_t k = 0; k < paths.size(); ++k) {
-    auto path = paths[k];
-    if (path.empty()) continue;
-    travel += distance(at, path.front());
-    at = path.back();
-  }
-  return travel + distance(at, to);
+  std::vector<Line> lines;
+  for (std::size_t k = 0; k < paths.size(); ++k) lines.push_back(paths[k]);
+  return pen_up_travel(lines, from, to);
 }
 
 double pen_up_travel(std::span<const Line> lines, DevicePoint from, DevicePoint to) {

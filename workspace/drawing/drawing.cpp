@@ -1,5 +1,6 @@
 #include "workspace/drawing/drawing.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace igds {
@@ -24,7 +25,10 @@ void Drawing<P>::add_polyline(View points, Style style, Identity id, bool closed
   Item item{.kind = Kind::polyline, .style = style, .id = id, .closed = closed};
   item.first = own_.size();
   item.count = points.size();
-  own_.reserve(own_.size() + n * points.size());
+  // Room grown by half at least: many small polylines (the pieces of a zoomed grid) must not
+  // each move all the points before them.
+  const std::size_t need = own_.size() + n * points.size();
+  if (need > own_.capacity()) own_.reserve(std::max(need, own_.capacity() + own_.capacity() / 2));
   for (P p : points) own_point(p);
   items_.push_back(item);
 }
