@@ -118,11 +118,12 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
   auto drop = [&](std::size_t s) { fresh[s] = 0, --count; };
   if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max()) {
     // First by the high bits of the lower end into buckets (drawing order kept within each),
-    // then each bucket alone by the bits left, in the cache, on as many threads as pay.
+    // then each bucket alone, in the cache, on as many threads as pay.
     struct Segment {
       std::uint32_t lo, hi, s;
     };
-    // Buckets of about 2048 segments or more, sorted by at most two digits of 8 to 11 bits.
+    // Buckets of the lower ends' places 2 ^ 16 apart, or more: about 2048 segments or more each
+    // (a large plot: 2048 buckets of about 4000).
     const int high = std::clamp(ids.bits - 16, 0, static_cast<int>(std::bit_width(n >> 11))),
               low_bits = ids.bits - high;
     const std::size_t buckets = std::size_t{1} << high;
@@ -179,43 +180,33 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
       }
     });
     // Drops by bucket: each segment is in one bucket, so threads mark different bytes.
-    auto sort_buckets = [&](std::size_t from, std::size_t to) {
-      std::vector<Segment> scratch;  // as large as the largest bucket of this thread
+    // Each bucket alone, in drawing order, through a table of the segments seen (open
+    // addressing, sized to the bucket: in the cache): a segment already there is a repeat.
+    auto find_repeats = [&](std::size_t from, std::size_t to) {
+      std::vector<u64> table;  // 0: an empty slot (a segment has lo < hi, so its key is not 0)
       for (std::size_t k = from; k < to; ++k) {
         const std::size_t size = first[k + 1] - first[k];
         if (size < 2) continue;
-        RadixSort sorter(low_bits);
-        Segment* begin = records.begin() + first[k];
-        for (const Segment* g = begin; g != begin + size; ++g) sorter.add(g->lo);
-        if (scratch.size() < size) scratch.resize(size);
-        std::span<Segment> segments(
-            sorter.sort(begin, scratch.data(), size, [](const Segment& g) { return u64{g.lo}; }),
-            size);
-        auto drop_here = [&](std::size_t segment) { fresh[segment] = 0, ++dropped[k]; };
-        for (std::size_t i = 0; i < segments.size();) {
-          std::size_t j = i + 1;
-          while (j < segments.size() && segments[j].lo == segments[i].lo) ++j;
-          if (j - i <= 16) {
-            // Few segments share an end: compare each with those drawn before it.
-            for (std::size_t q = i + 1; q < j; ++q)
-              for (std::size_t e = i; e < q; ++e)
-                if (segments[e].hi == segments[q].hi) {
-                  drop_here(segments[q].s);
-                  break;
-                }
-          } else {
-            std::sort(segments.begin() + long(i), segments.begin() + long(j),
-                      [](const Segment& a, const Segment& b) {
-                        return a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
-                      });
-            for (std::size_t q = i + 1; q < j; ++q)
-              if (segments[q].hi == segments[q - 1].hi) drop_here(segments[q].s);
+        const int bits = std::bit_width(2 * size - 1);
+        const std::size_t mask = (std::size_t{1} << bits) - 1;
+        table.assign(mask + 1, 0);
+        const Segment* begin = records.begin() + first[k];
+        for (const Segment* g = begin; g != begin + size; ++g) {
+          const u64 key = u64{g->lo} << 32 | g->hi;
+          for (std::size_t h = (key * 0x9E3779B97F4A7C15u) >> (64 - bits);; h = (h + 1) & mask) {
+            if (table[h] == 0) {
+              table[h] = key;
+              break;
+            }
+            if (table[h] == key) {
+              fresh[g->s] = 0, ++dropped[k];
+              break;
+            }
           }
-          i = j;
         }
       }
     };
-    parallel_for(buckets, buckets > 1 ? threads_for(2 * m) : 1, sort_buckets);
+    parallel_for(buckets, buckets > 1 ? threads_for(2 * m) : 1, find_repeats);
     for (std::size_t d : dropped) count -= d;
 
     return count;
