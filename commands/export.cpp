@@ -1,5 +1,6 @@
 // EXPORT SVG | TEK | HPGL | DUCT | IGES | STEP [name]: the current image, or the current surface
 // exactly, in a file for other programs.
+#include <cstdint>
 #include <cstdlib>
 #include <ctime>
 #include <string>
@@ -76,30 +77,32 @@ bool duct_of_surface(const Workspace& ws) {
   return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
 }
 
-// The bytes of EXPORT DUCT and what the report says they hold.
-std::pair<std::string, std::string_view> duct_file(const Workspace& ws, const std::string& name) {
+// The picture of EXPORT DUCT and what the report says it holds.
+std::pair<DuctPicture, std::string_view> duct_file(const Workspace& ws, const std::string& name) {
   const std::string date = duct_date(export_date());
   if (duct_of_surface(ws)) {
     const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
-    return {write_duct(duct_picture(drawing, {name, date, title})), "THE SURFACE IN SPACE"};
+    return {duct_picture(drawing, {name, date, title}), "THE SURFACE IN SPACE"};
   }
   if (!ws.image) throw Report(reports::surface_not_found);
   std::string title;
   for (const std::string& line : describe(ws.image->desim, 72))
     title += (title.empty() ? "" : " ") + line;
   const Picture picture = picture_of(ws.image);
-  return {
-      write_duct(duct_picture(picture.drawing, {name, date, title}, ws.image->desim.projection)),
-      "THE IMAGE AS PROJECTED"};
+  return {duct_picture(picture.drawing, {name, date, title}, ws.image->desim.projection),
+          "THE IMAGE AS PROJECTED"};
 }
 
-std::string cad_file(const Workspace& ws, const std::string& name, Option option) {
+// EXPORT IGES or STEP into `out`.
+void cad_file(const Workspace& ws, const std::string& name, Option option, TextOut& out) {
   if (!ws.has_surface()) throw Report(reports::surface_not_found);
   const CadHeader header{name, fmt::format("{}.{}", name, types[option]), export_date(), "", ""};
-  return option == iges ? write_iges(input_of(ws), ws.patches, header)
-                        : write_step(input_of(ws), ws.patches, header);
+  if (option == iges)
+    write_iges(input_of(ws), ws.patches, header, out);
+  else
+    write_step(input_of(ws), ws.patches, header, out);
 }
 
 void run_export(Context& ctx, const Choice* option) {
@@ -114,7 +117,8 @@ void run_export(Context& ctx, const Choice* option) {
     throw Report(reports::image_not_found);
   }
   const std::string name = ask_file_name(ctx, file_prompt);
-  std::string bytes;
+  const bool existed = ctx.disk().exists(name, type);
+  std::uint64_t size = 0;
   std::string_view holds;
   try {
     switch (code) {
@@ -122,28 +126,34 @@ void run_export(Context& ctx, const Choice* option) {
       case tek:
       case hpgl: {
         const Picture picture = picture_of(ws.image);
-        bytes = code == svg   ? svg_of(picture)
-                : code == tek ? tek_stream(picture, ctx.options().tek)
-                              : plot_hpgl(picture, ctx.options().plot).hpgl;
+        const std::string bytes = code == svg   ? svg_of(picture)
+                                  : code == tek ? tek_stream(picture, ctx.options().tek)
+                                                : plot_hpgl(picture, ctx.options().plot).hpgl;
+        write_user_file(ctx.disk(), name, type, bytes);
+        size = bytes.size();
         break;
       }
-      case duct:
-        std::tie(bytes, holds) = duct_file(ws, name);
+      case duct: {
+        // The picture's text is made while it is written: it may be hundreds of megabytes.
+        DuctPicture picture;
+        std::tie(picture, holds) = duct_file(ws, name);
+        size = write_user_file(ctx.disk(), name, type,
+                               [&](TextOut& out) { write_duct(picture, out); });
         break;
+      }
       case iges:
       case step:
-        bytes = cad_file(ws, name, code);
+        size = write_user_file(ctx.disk(), name, type,
+                               [&](TextOut& out) { cad_file(ws, name, code, out); });
         break;
     }
   } catch (const DataError& e) {
     throw worded(e, "NO FILE WRITTEN");
   }
-  const bool existed = ctx.disk().exists(name, type);
-  write_user_file(ctx.disk(), name, type, bytes);
   if (holds.empty())
-    ctx.say(fmt::format("{}.{}: {} BYTES", name, type, bytes.size()));
+    ctx.say(fmt::format("{}.{}: {} BYTES", name, type, size));
   else
-    ctx.say(fmt::format("{}.{}: {}, {} BYTES", name, type, holds, bytes.size()));
+    ctx.say(fmt::format("{}.{}: {}, {} BYTES", name, type, holds, size));
   if (existed) ctx.say(fmt::format("{}.{} REPLACED", name, type));
 }
 

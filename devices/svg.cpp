@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 
 #include "devices/layout.h"
 
@@ -14,12 +15,28 @@ int flip(int y) {
   return tek_screen::height - 1 - y;
 }
 
+// " x,y" (or "x,y" without the blank) appended by std::to_chars: a polyline's points are most of
+// the document, and fmt with a runtime format string costs several times the digits.
+void append_point(std::string& out, bool blank, int x, int y) {
+  char buffer[32];  // a blank, two ints of at most 11 characters, a comma
+  buffer[0] = ' ';
+  char* p = buffer + (blank ? 1 : 0);
+  p = std::to_chars(p, p + 11, x).ptr;
+  *p++ = ',';
+  p = std::to_chars(p, p + 11, y).ptr;
+  out.append(buffer, static_cast<std::size_t>(p - buffer));
+}
+
 }  // namespace
 
 void SvgWriter::close_polyline() {
-  if (drawing_)
-    fmt::format_to(std::back_inserter(body_), "<polyline points=\"{}\"{}/>\n", points_,
-                   attributes_);
+  if (drawing_) {
+    body_ += "<polyline points=\"";
+    body_ += points_;
+    body_ += '"';
+    body_ += attributes_;
+    body_ += "/>\n";
+  }
   drawing_ = false;
   points_.clear();
 }
@@ -37,8 +54,8 @@ void SvgWriter::draw(DevicePoint p) {
     return;
   }
   if (at_ == p) return;
-  if (!drawing_) fmt::format_to(std::back_inserter(points_), "{},{}", at_.x, flip(at_.y));
-  fmt::format_to(std::back_inserter(points_), " {},{}", p.x, flip(p.y));
+  if (!drawing_) append_point(points_, false, at_.x, flip(at_.y));
+  append_point(points_, true, p.x, flip(p.y));
   drawing_ = true;
   at_ = p;
 }

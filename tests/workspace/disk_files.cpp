@@ -4,7 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
+#include <stdexcept>
 
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
@@ -365,3 +367,52 @@ TEST_CASE("RESTORE applies the 4,000,000-point limit to what the file says") {
   restore_surface(s.disk, "LIMIT", ws);
   CHECK(ws.intst == 3999998);
 }
+
+namespace igds {
+
+// A text of several pieces with a hole filled later, as EXPORT IGES writes its directory.
+void holed_text(TextOut& out) {
+  out.put("head\n");
+  const std::uint64_t hole = out.offset();
+  out.skip(10);
+  for (int k = 0; k < 3000000; ++k) {
+    char* w = out.room(4);
+    w[0] = char('a' + k % 26), w[1] = 'b', w[2] = 'c';
+    out.commit(w + 3);
+  }
+  const std::uint64_t end = out.offset();
+  out.seek(hole);
+  out.put("0123456789");
+  out.seek(end);
+  out.put('\n');
+}
+
+TEST_CASE("a made text: pieces, a hole written later, the same in a string and in a file") {
+  StringOut text;
+  holed_text(text);
+  const std::string expected = text.take_text();
+  REQUIRE(expected.size() == 5 + 10 + 9000000 + 1);
+  CHECK(expected.substr(0, 15) == "head\n0123456789");
+  CHECK(expected.substr(15, 6) == "abcbbc");
+  Scratch s;
+  CHECK(write_user_file(s.disk, "TEXT", "IGS", holed_text) == expected.size());
+  std::ifstream in(s.disk.path("TEXT", "IGS"), std::ios::binary);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  CHECK(written == expected);
+  // A writer that fails part way, or a disk that fills, leaves the file as it was.
+  CHECK_THROWS_AS(write_user_file(s.disk, "TEXT", "IGS",
+                                  [](TextOut& out) {
+                                    holed_text(out);
+                                    throw std::runtime_error("writer failed");
+                                  }),
+                  std::runtime_error);
+  disk::set_write_limit_for_testing(std::size_t{5} << 20);
+  CHECK_THROWS_AS(write_user_file(s.disk, "TEXT", "IGS", holed_text), Report);
+  disk::set_write_limit_for_testing(std::nullopt);
+  std::ifstream again(s.disk.path("TEXT", "IGS"), std::ios::binary);
+  CHECK(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()) ==
+        expected);
+  CHECK(disk::folder_entries(s.dir.path()).size() == 1);
+}
+
+}  // namespace igds

@@ -178,6 +178,17 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
   }
 }
 
+std::uint64_t write_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                              const std::function<void(TextOut& out)>& make,
+                              std::string_view kept) {
+  const std::string n = checked(name);
+  try {
+    return *disk::write_made(disk.path(n, type), make);
+  } catch (const disk::IoError& e) {
+    throw Report(fmt::format("CANNOT WRITE {} ({}); {}", file_name(n, type), e.reason(), kept));
+  }
+}
+
 std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,
                            std::size_t max_bytes, std::string_view kept) {
   const std::string n = checked(name);

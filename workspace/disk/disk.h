@@ -5,12 +5,14 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "workspace/state.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -49,6 +51,13 @@ class Disk {
 bool write_user_file(const Disk& disk, std::string_view name, std::string_view type,
                      std::string_view bytes, bool replace = true,
                      std::string_view kept = "NO FILE CHANGED");
+
+// The same for a text made while it is written (disk::write_made): make(out) puts the file's
+// bytes into `out`. Returns the file's size in bytes. Whatever `make` throws leaves no file
+// changed and goes on to the caller.
+std::uint64_t write_user_file(const Disk& disk, std::string_view name, std::string_view type,
+                              const std::function<void(TextOut& out)>& make,
+                              std::string_view kept = "NO FILE CHANGED");
 
 // A file another program wrote (FIT's NAME.CADADATA, DISPLAY PICTURE's NAME.DUCTPIC): its
 // bytes, read once its size was checked against `max_bytes`. Throws Report FILE NOT FOUND, or

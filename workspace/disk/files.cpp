@@ -15,6 +15,7 @@
 #include <cstring>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <utility>
 
 #include <fmt/format.h>
@@ -89,21 +90,106 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
   }
 }
 
-// Writes a large file's pieces as fill() makes them: the next piece is made while the last one is
-// copied to the system, in two buffers of `piece` bytes, so that a text of hundreds of megabytes
-// costs about the slower of the two and never a buffer of its size.
-void write_filled(int fd, const Fill& fill) {
-  constexpr std::size_t piece = std::size_t{8} << 20;
-  std::unique_ptr<char[]> buffers[2] = {std::make_unique_for_overwrite<char[]>(piece),
-                                        std::make_unique_for_overwrite<char[]>(piece)};
-  std::future<void> writing;  // the piece being written, whose errors get() rethrows
-  for (int b = 0;; b ^= 1) {
-    const std::size_t n = fill(buffers[b].get(), piece);
-    if (writing.valid()) writing.get();
-    if (n == 0) return;
-    const char* bytes = buffers[b].get();
-    writing = std::async(std::launch::async, [fd, bytes, n] { write_runs(fd, {{bytes, n}}); });
+// pwrite(2) of n bytes at `offset`, honouring the test limit; then the system is asked to start
+// putting them on the disk (advice: a refusal changes nothing), so that the writes of a large
+// file overlap with the making of its next pieces instead of all waiting for the last fsync.
+void write_at(int fd, const char* p, std::size_t n, std::uint64_t offset) {
+  const std::uint64_t first = offset;
+  while (n > 0) {
+    std::size_t now = n;
+    if (write_limit) {
+      if (*write_limit == 0) throw IoError(ENOSPC);
+      now = std::min(now, *write_limit);
+    }
+    const ssize_t done = ::pwrite(fd, p, now, static_cast<off_t>(offset));
+    if (done < 0) {
+      if (errno == EINTR) continue;
+      throw IoError(errno);
+    }
+    const auto d = static_cast<std::size_t>(done);
+    bytes_written += d;
+    if (write_limit) *write_limit -= d;
+    p += d;
+    n -= d;
+    offset += d;
   }
+#ifdef SYNC_FILE_RANGE_WRITE
+  ::sync_file_range(fd, static_cast<off_t>(first), static_cast<off_t>(offset - first),
+                    SYNC_FILE_RANGE_WRITE);
+#endif
+}
+
+// The buffers of FileOut, kept for the next file: fresh memory costs a page fault per 4 KB,
+// which on a virtual machine costs more than making the bytes.
+constexpr std::size_t piece = std::size_t{4} << 20;
+std::mutex pool_mutex;
+std::vector<std::unique_ptr<char[]>> pool;
+
+std::unique_ptr<char[]> borrow_buffer() {
+  {
+    std::lock_guard lock(pool_mutex);
+    if (!pool.empty()) {
+      auto b = std::move(pool.back());
+      pool.pop_back();
+      return b;
+    }
+  }
+  return std::make_unique_for_overwrite<char[]>(piece);
+}
+
+void return_buffer(std::unique_ptr<char[]> b) {
+  std::lock_guard lock(pool_mutex);
+  if (pool.size() < 2) pool.push_back(std::move(b));
+}
+
+// A TextOut into an open file, in two buffers of `piece` bytes: one is being filled while the
+// other is written by a second thread, at its offset.
+class FileOut final : public TextOut {
+ public:
+  explicit FileOut(int fd) : fd_(fd), buffers_{borrow_buffer(), borrow_buffer()} {
+    begin_ = at_ = buffers_[0].get();
+    end_ = begin_ + piece;
+  }
+  ~FileOut() override {
+    if (writing_.valid()) writing_.wait();
+    for (auto& b : buffers_) return_buffer(std::move(b));
+  }
+  // Writes what is left and waits for the writes; IoError when one failed.
+  void finish() {
+    seek(offset());
+    if (writing_.valid()) writing_.get();
+  }
+
+ private:
+  void take(std::size_t) override {
+    const auto n = static_cast<std::size_t>(at_ - begin_);
+    if (n > 0) {
+      // The other buffer's write must be done (and its error seen) before it is filled again.
+      if (writing_.valid()) writing_.get();
+      writing_ = std::async(std::launch::async, [fd = fd_, p = begin_, n, offset = base_] {
+        write_at(fd, p, n, offset);
+      });
+      current_ ^= 1;
+    }
+    begin_ = at_ = buffers_[current_].get();
+    end_ = begin_ + piece;
+  }
+  int fd_;
+  std::unique_ptr<char[]> buffers_[2];
+  int current_ = 0;
+  std::future<void> writing_;  // the other buffer's write, whose errors get() rethrows
+};
+
+// Writes a large file's pieces as fill() makes them (see write_file).
+void write_filled(int fd, const Fill& fill) {
+  FileOut out(fd);
+  for (;;) {
+    const TextOut::Space room = out.space(TextOut::max_room);
+    const std::size_t n = fill(room.first, room.size);
+    if (n == 0) break;
+    out.commit(room.first + n);
+  }
+  out.finish();
 }
 
 // Creates `path` (it must not exist; never through a link), writes by `write(fd)`, fsyncs;
@@ -205,6 +291,22 @@ bool write_file(const std::filesystem::path& target, const Writer& bytes, bool r
 bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace) {
   return write_in_place(
       target, [&](int fd) { write_filled(fd, fill); }, replace);
+}
+
+std::optional<std::uint64_t> write_made(const std::filesystem::path& target, const Make& make,
+                                        bool replace) {
+  std::uint64_t size = 0;
+  const bool written = write_in_place(
+      target,
+      [&](int fd) {
+        FileOut out(fd);
+        make(out);
+        size = out.size();
+        out.finish();
+      },
+      replace);
+  if (!written) return std::nullopt;
+  return size;
 }
 
 bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace) {

@@ -14,6 +14,7 @@
 
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
+#include "workspace/text_out.h"
 
 namespace igds::disk {
 
@@ -38,12 +39,19 @@ std::filesystem::path temporary_for(const std::filesystem::path& target);
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace = true);
 bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace = true);
 
-// A file's bytes made piece by piece: fill(out, room) puts at most `room` bytes (several
-// megabytes) at `out` and returns how many; 0 ends the file.
+// A file's bytes made piece by piece: fill(out, room) puts at most `room` bytes (at least
+// TextOut::max_room, usually megabytes) at `out` and returns how many; 0 ends the file.
 using Fill = std::function<std::size_t(char* out, std::size_t room)>;
 // The same for bytes made while they are written (a listing of hundreds of megabytes): the next
-// piece is made while the last one is being written.
+// piece is made while the last one is being written, and the system is asked to put each piece
+// on the disk as soon as it has it, so that the last fsync finds little left to do.
 bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace = true);
+// The same for a text that make(out) puts into `out` (workspace/text_out.h; skipped bytes are
+// holes filled later, the file being written at offsets). Returns the file's size in bytes, or
+// nullopt when `replace` is false and a file is there.
+using Make = std::function<void(TextOut& out)>;
+std::optional<std::uint64_t> write_made(const std::filesystem::path& target, const Make& make,
+                                        bool replace = true);
 
 // Writes a new file whole (O_EXCL: never an existing one, never through a link) and fsyncs it;
 // the caller makes it reachable later (and syncs the folder).

@@ -1174,60 +1174,59 @@ class WrittenRecord {
 
 }  // namespace
 
-void append_duct(std::string& out, const DuctPicture& p) {
-  // About 46 characters a pixel line (68 with T U), 20 an instruction.
-  out.reserve(out.size() + 200 + 20 * p.instructions.size() +
-              (p.tu.empty() ? 46 : 68) * p.pixel_count() + 100 * p.texts.size());
+void write_duct(const DuctPicture& p, TextOut& out) {
+  // The records besides the pixels are few: made in a string, then put.
+  std::string head;
   for (const auto& line : p.header) {
-    out += line;
-    out += '\n';
+    head += line;
+    head += '\n';
   }
-  out += " *\n";
+  head += " *\n";
   WrittenRecord counters, reals;
   for (std::int64_t v : p.counters) counters.integer(v, 6);
   for (double v : p.reals) reals.fixed(v, 10, 4);
-  counters.write(out);
-  out += '\n';
-  reals.write(out);
-  out += '\n';
+  counters.write(head);
+  head += '\n';
+  reals.write(head);
+  head += '\n';
+  out.put(head);
   // Instructions and pixels have a blank before every field.
   for (const auto& in : p.instructions) {
-    out += ' ';
-    put_integer(out, in.code(), 11);
-    out += ' ';
-    put_integer(out, std::int64_t(in.pixels), 6);
-    out += '\n';
+    char* w = out.room(2 * 22 + 1);
+    *w++ = ' ';
+    w = put_integer(w, in.code(), 11);
+    *w++ = ' ';
+    w = put_integer(w, std::int64_t(in.pixels), 6);
+    *w++ = '\n';
+    out.commit(w);
   }
-  // Pixel lines, the bulk of a picture, are made in a buffer and appended whole.
+  // Pixel lines, the bulk of a picture: (3(1X,E14.7)), then 2(1X,F10.4) with T U.
   const bool tu = !p.tu.empty();
-  std::string tail;
   for (std::size_t k = 0; k < p.pixel_count(); ++k) {
-    char line[64];
-    char* at = line;
+    char* w = out.room(3 * 15 + 2 * 27 + 1);
     for (int i = 0; i < 3; ++i) {
       char number[48];
       const std::size_t n = format_exponent(number, p.xyz[3 * k + std::size_t(i)], 7);
-      *at++ = ' ';
-      for (std::size_t pad = n; pad < 14; ++pad) *at++ = ' ';
-      for (std::size_t c = 0; c < n; ++c) *at++ = number[c];
+      *w++ = ' ';
+      for (std::size_t pad = n; pad < 14; ++pad) *w++ = ' ';
+      for (std::size_t c = 0; c < n; ++c) *w++ = number[c];
     }
-    out.append(line, std::size_t(at - line));
     if (tu) {
-      tail.clear();
       for (int i = 0; i < 2; ++i) {
-        tail += ' ';
-        put_fixed(tail, p.tu[2 * k + std::size_t(i)], 10, 4);
+        *w++ = ' ';
+        w = put_fixed(w, p.tu[2 * k + std::size_t(i)], 10, 4);
       }
-      out += tail;
     }
-    out += '\n';
+    *w++ = '\n';
+    out.commit(w);
   }
   if (!p.has_texts()) return;
+  std::string tail;
   WrittenRecord counts;
   counts.integer(std::int64_t(p.texts.size()), 6);
   counts.integer(std::int64_t(p.dimensions.size()), 6);
-  counts.write(out);
-  out += '\n';
+  counts.write(tail);
+  tail += '\n';
   for (const auto& t : p.texts) {
     // The string starts in column 51 whatever the numbers: values its fields cannot hold (DUCT
     // could not have written them) are brought into them.
@@ -1238,29 +1237,36 @@ void append_duct(std::string& out, const DuctPicture& p) {
     numbers.integer(std::clamp(t.units, -9, 99), 2);
     numbers.fixed(std::isfinite(t.angle) ? std::fmod(t.angle, 360.0) : 0.0, 8, 3);
     numbers.fixed(std::isfinite(t.height) ? std::clamp(t.height, -999.999, 9999.999) : 0.0, 8, 3);
-    numbers.write(out);
-    out.append(17, ' ');
-    out.append(t.text, 0, 30);
+    numbers.write(tail);
+    tail.append(17, ' ');
+    tail.append(t.text, 0, 30);
     if (t.text.size() > 30) {
-      out += "\n ";
-      out.append(t.text, 30);
+      tail += "\n ";
+      tail.append(t.text, 30);
     }
-    out += '\n';
+    tail += '\n';
+    if (tail.size() > TextOut::max_room) out.put(tail), tail.clear();
   }
   for (const auto& d : p.dimensions) {
     static constexpr int widths[11] = {2, 8, 8, 2, 8, 8, 8, 3, 3, 3, 2};
     WrittenRecord dimension;
     for (int k = 0; k < 11; ++k) dimension.integer(d.k[std::size_t(k)], widths[k]);
     dimension.fixed(d.t, 8, 3);
-    dimension.write(out);
-    out += '\n';
+    dimension.write(tail);
+    tail += '\n';
+    if (tail.size() > TextOut::max_room) out.put(tail), tail.clear();
   }
+  out.put(tail);
+}
+
+void append_duct(std::string& out, const DuctPicture& picture) {
+  out += write_duct(picture);
 }
 
 std::string write_duct(const DuctPicture& picture) {
-  std::string out;
-  append_duct(out, picture);
-  return out;
+  StringOut out;
+  write_duct(picture, out);
+  return out.take_text();
 }
 
 }  // namespace igds

@@ -16,6 +16,7 @@
 #include "workspace/drawing/drawing.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/vec3.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -220,5 +221,7 @@ DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Proj
 // its string stays in column 51. Whatever read_duct returns, this writes a text it reads back.
 std::string write_duct(const DuctPicture& picture);
 void append_duct(std::string& out, const DuctPicture& picture);
+// The same into `out`, made while it is written (a picture may be hundreds of megabytes).
+void write_duct(const DuctPicture& picture, TextOut& out);
 
 }  // namespace igds

@@ -1,8 +1,11 @@
 #include "workspace/exchange/fields.h"
 
+#include <bit>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -20,6 +23,19 @@ void put_field(std::string& out, const char* text, std::size_t length, int width
   out.append(text, length);
 }
 
+// The same at `out`.
+char* put_field(char* out, const char* text, std::size_t length, int width) {
+  const std::size_t w = static_cast<std::size_t>(width < 0 ? 0 : width);
+  if (length > w) {
+    *out++ = ' ';
+  } else {
+    std::memset(out, ' ', w - length);
+    out += w - length;
+  }
+  std::memcpy(out, text, length);
+  return out + length;
+}
+
 bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
@@ -32,19 +48,109 @@ void put_integer(std::string& out, std::int64_t value, int width) {
   put_field(out, buffer, static_cast<std::size_t>(end - buffer), width);
 }
 
-void put_fixed(std::string& out, double value, int width, int decimals) {
-  char buffer[400];
+char* put_integer(char* out, std::int64_t value, int width) {
+  char buffer[24];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return put_field(out, buffer, static_cast<std::size_t>(end - buffer), width);
+}
+
+namespace {
+
+// Fw.d into `buffer` (400 characters), unpadded; returns the length.
+std::size_t format_fixed(char* buffer, double value, int decimals) {
   if (value == 0) value = 0;  // no "-0.0000"
   const auto result =
-      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::fixed, decimals);
+      std::to_chars(buffer, buffer + 400, value, std::chars_format::fixed, decimals);
   std::size_t length = static_cast<std::size_t>(result.ptr - buffer);
   // Beyond 24 characters the exact shortest form, 1.875E200, which list-directed readers take.
   if (length > 24) length = format_real(buffer, value);
-  put_field(out, buffer, length, width);
+  return length;
 }
+
+}  // namespace
+
+void put_fixed(std::string& out, double value, int width, int decimals) {
+  char buffer[400];
+  put_field(out, buffer, format_fixed(buffer, value, decimals), width);
+}
+
+char* put_fixed(char* out, double value, int width, int decimals) {
+  char buffer[400];
+  return put_field(out, buffer, format_fixed(buffer, value, decimals), width);
+}
+
+namespace {
+
+// 10^k, k = 0..22: the powers of ten that doubles hold exactly.
+constexpr double exact_power[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                    1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                    1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+// "00" to "99".
+constexpr char two_digits[] =
+    "0001020304050607080910111213141516171819202122232425262728293031323334353637383940414243444546"
+    "4748495051525354555657585960616263646566676869707172737475767778798081828384858687888990919293"
+    "949596979899";
+
+// |value| * 10^n in one correctly rounded operation, or 0 when 10^|n| is not exact.
+double scaled(double magnitude, int n) {
+  if (n >= 0) return n <= 22 ? magnitude * exact_power[n] : 0;
+  return n >= -22 ? magnitude / exact_power[-n] : 0;
+}
+
+// The digits and exponent of format_exponent by double arithmetic, for the values (nearly all)
+// where that is provably what the exact value rounds to: |value| * 10^(digits - E) is made by
+// one rounded multiplication or division by an exact power of ten, so it is within
+// 2^-52 of itself, relatively; when it is farther than that from a half-integer and from the
+// ends of [10^(digits-1), 10^digits), its nearest integer is the correctly rounded significand.
+// Otherwise (and for digits above 9, subnormals, huge or tiny values) false: the library does it.
+bool fast_exponent(char*& p, double value, int digits) {
+  if (digits < 1 || digits > 9) return false;
+  const double magnitude = std::abs(value);
+  const auto bits = std::bit_cast<std::uint64_t>(magnitude);
+  const int binary = static_cast<int>(bits >> 52) - 1023;  // magnitude in [2^b, 2^(b+1))
+  if (binary < -60 || binary > 90) return false;
+  // 0.d1d2... x 10^e: e = floor(log10(magnitude)) + 1, estimated within one from the binary
+  // exponent (78913 / 2^18 is log10(2) to 1e-6).
+  int e = ((binary * 78913) >> 18) + 1;
+  const double low = exact_power[digits - 1], high = exact_power[digits];
+  double s = scaled(magnitude, digits - e);
+  if (s >= high)
+    s = scaled(magnitude, digits - ++e);
+  else if (s < low)
+    s = scaled(magnitude, digits - --e);
+  const double margin = high * 1e-15;  // above the rounding error of s (2^-52 s)
+  if (!(s - low > margin && high - s > margin)) return false;
+  auto r = static_cast<std::uint64_t>(s);  // s > 0: its integer part
+  const double fraction = s - static_cast<double>(r);
+  if (std::abs(fraction - 0.5) < margin) return false;
+  if (fraction > 0.5) ++r;
+  if (r == static_cast<std::uint64_t>(high)) {
+    r = static_cast<std::uint64_t>(low);
+    ++e;
+  }
+  if (value < 0) *p++ = '-';
+  *p++ = '0';
+  *p++ = '.';
+  int k = digits;
+  for (; k >= 2; k -= 2, r /= 100) std::memcpy(p + k - 2, two_digits + 2 * (r % 100), 2);
+  if (k == 1) p[0] = static_cast<char>('0' + r);
+  p += digits;
+  const int magnitude_e = std::abs(e);
+  if (magnitude_e < 100) *p++ = 'E';
+  *p++ = e < 0 ? '-' : '+';
+  if (magnitude_e >= 100) *p++ = static_cast<char>('0' + magnitude_e / 100);
+  std::memcpy(p, two_digits + 2 * (magnitude_e % 100), 2);
+  p += 2;
+  return true;
+}
+
+}  // namespace
 
 std::size_t format_exponent(char* buffer, double value, int digits) {
   char* p = buffer;
+  if (std::isfinite(value) && value != 0 && fast_exponent(p, value, digits))
+    return static_cast<std::size_t>(p - buffer);
   if (!std::isfinite(value))
     return std::size_t(std::to_chars(buffer, buffer + 32, value).ptr - buffer);
   if (value == 0) {
@@ -85,8 +191,67 @@ void put_exponent(std::string& out, double value, int width, int digits) {
   put_field(out, buffer, format_exponent(buffer, value, digits), width);
 }
 
+char* put_exponent(char* out, double value, int width, int digits) {
+  char buffer[64];
+  return put_field(out, buffer, format_exponent(buffer, value, digits), width);
+}
+
+namespace {
+
+// format_real of a finite non-zero value below 2^53 in magnitude, from its shortest digits
+// (fmt's Dragonbox, the digits std::to_chars chooses too, about three times as fast), laid out as
+// std::to_chars lays them out: fixed or scientific, whichever is shorter, fixed on a tie.
+std::size_t format_real_fast(char* out, double value) {
+  const auto decimal = fmt::detail::dragonbox::to_decimal(std::abs(value));
+  char digits[24];
+  char* end = digits + sizeof digits;
+  char* first = end;
+  for (std::uint64_t s = decimal.significand; s != 0; s /= 10)
+    *--first = static_cast<char>('0' + s % 10);
+  const int n = static_cast<int>(end - first), x = decimal.exponent;  // value = digits x 10^x
+  const int exponent = x + n - 1;                                     // d.ddd x 10^exponent
+  const int e_digits = std::abs(exponent) >= 100 ? 3 : 2;
+  const int scientific = n + (n > 1 ? 1 : 0) + 2 + e_digits;
+  const int fixed = x >= 0 ? n + x : (n > -x ? n + 1 : 2 - x);
+  char* o = out;
+  if (value < 0) *o++ = '-';
+  if (fixed <= scientific) {
+    if (x >= 0) {
+      // An integer: its digits, its zeros, and the point.
+      o = std::copy(first, end, o);
+      o = std::fill_n(o, x, '0');
+      *o++ = '.';
+    } else if (n > -x) {
+      o = std::copy(first, end + x, o);
+      *o++ = '.';
+      o = std::copy(end + x, end, o);
+    } else {
+      *o++ = '0';
+      *o++ = '.';
+      o = std::fill_n(o, -x - n, '0');
+      o = std::copy(first, end, o);
+    }
+  } else {
+    *o++ = *first;
+    *o++ = '.';
+    o = std::copy(first + 1, end, o);
+    *o++ = 'E';
+    if (exponent < 0) *o++ = '-';
+    char e[4];
+    char* e_end = e + sizeof e;
+    char* e_first = e_end;
+    for (int m = std::abs(exponent); m != 0 || e_first == e_end; m /= 10)
+      *--e_first = static_cast<char>('0' + m % 10);
+    o = std::copy(e_first, e_end, o);
+  }
+  return static_cast<std::size_t>(o - out);
+}
+
+}  // namespace
+
 std::size_t format_real(char* out, double value) {
   if (value == 0) value = 0;  // no "-0."
+  if (value != 0 && std::abs(value) < 0x1p53) return format_real_fast(out, value);
   char buffer[32];
   const char* end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
   const char* e = buffer;

@@ -14,15 +14,21 @@ namespace igds {
 // Iw: right-justified in `width` columns. A value too wide for its field is written in full after
 // one blank (FORTRAN would write asterisks; a list-directed reader reads this).
 void put_integer(std::string& out, std::int64_t value, int width);
+// The same at `out` (room for max(width, 21) characters); returns the end.
+char* put_integer(char* out, std::int64_t value, int width);
 
 // Fw.d: `decimals` digits after the point, right-justified in `width` columns; too wide: as
 // put_integer says, and beyond 24 characters in put_real's exact exponent form (1.875E200).
 void put_fixed(std::string& out, double value, int width, int decimals);
+// The same at `out` (room for max(width, 26) characters); returns the end.
+char* put_fixed(char* out, double value, int width, int decimals);
 
 // Ew.d: sign, "0.", `digits` digits, then E+ee, or +eee without the E when the exponent has three
 // digits (FORTRAN's form), right-justified in `width` columns: E14.7 of 12.5 is
 // " 0.1250000E+02". Zero (of either sign) is 0.0000000E+00.
 void put_exponent(std::string& out, double value, int width, int digits);
+// The same at `out` (room for max(width, 40) characters); returns the end.
+char* put_exponent(char* out, double value, int width, int digits);
 
 // The same into `buffer` (at least 40 characters, for digits up to 16), unpadded; returns the
 // length.

@@ -45,7 +45,7 @@ std::string hollerith(std::string_view text) {
 // the pointer back to its directory entry). Each record is made in a buffer and appended whole.
 class Records {
  public:
-  Records(std::string& out, char section, std::size_t width, std::size_t first_sequence)
+  Records(TextOut& out, char section, std::size_t width, std::size_t first_sequence)
       : out_(out),
         section_(section),
         width_(width),
@@ -89,7 +89,7 @@ class Records {
     line_[at++] = section_;
     at = right_justified(at, sequence_++, 7);
     line_[at++] = '\n';
-    out_.append(line_, at);
+    out_.put(std::string_view(line_, at));
     used_ = 0;
     return sequence_ - first_;
   }
@@ -102,7 +102,7 @@ class Records {
       line_[at + k] = value > 0 || k == width - 1 ? char('0' + value % 10) : ' ';
     return at + width;
   }
-  std::string& out_;
+  TextOut& out_;
   char section_;
   std::size_t width_, used_ = 0, sequence_, de_ = 0, first_;
   char line_[96];
@@ -117,23 +117,25 @@ struct Entity {
 };
 
 // One directory entry: two records of nine 8-column fields (IGES 5.3, 2.2.4.4).
-void directory_entry(std::string& out, const Entity& e, std::size_t sequence) {
-  put_integer(out, e.type, 8);
-  put_integer(out, std::int64_t(e.parameters), 8);
+void directory_entry(TextOut& out, const Entity& e, std::size_t sequence) {
+  std::string records;
+  put_integer(records, e.type, 8);
+  put_integer(records, std::int64_t(e.parameters), 8);
   for (int k = 0; k < 6; ++k)
-    put_integer(out, 0, 8);  // structure, font, level, view, matrix, label
-  out += "00000000";         // status: visible, independent, geometry, hierarchy global
-  end_record(out, 'D', sequence);
-  put_integer(out, e.type, 8);
-  put_integer(out, 0, 8);  // line weight
-  put_integer(out, 0, 8);  // colour
-  put_integer(out, std::int64_t(e.lines), 8);
-  put_integer(out, 0, 8);  // form
-  out.append(16, ' ');     // reserved
-  out.append(8 - std::min<std::size_t>(8, e.label.size()), ' ');
-  out.append(e.label, 0, 8);
-  put_integer(out, e.subscript, 8);
-  end_record(out, 'D', sequence + 1);
+    put_integer(records, 0, 8);  // structure, font, level, view, matrix, label
+  records += "00000000";         // status: visible, independent, geometry, hierarchy global
+  end_record(records, 'D', sequence);
+  put_integer(records, e.type, 8);
+  put_integer(records, 0, 8);  // line weight
+  put_integer(records, 0, 8);  // colour
+  put_integer(records, std::int64_t(e.lines), 8);
+  put_integer(records, 0, 8);  // form
+  records.append(16, ' ');     // reserved
+  records.append(8 - std::min<std::size_t>(8, e.label.size()), ' ');
+  records.append(e.label, 0, 8);
+  put_integer(records, e.subscript, 8);
+  end_record(records, 'D', sequence + 1);
+  out.put(records);
 }
 
 // Knots of Bézier spans of degree 3 on [first, last], one per unit: `first` four times, each
@@ -203,23 +205,14 @@ void write_surface(Records& p, const BezierNet& net, std::size_t row0, std::size
 
 }  // namespace
 
-std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form) {
+void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                TextOut& out, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
   for (double v : net.xyz) largest = std::max(largest, std::abs(v));
   for (double v : net.xyz)
     if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
-
-  std::string out;
-  // About 20 characters a coordinate and 3 a weight, in records of 64 of 81 characters.
-  // Room for the file at once (it may be hundreds of MB): about 20 characters a coordinate, 3 a
-  // weight, 4 a knot, in records of 64 of 81 characters; patches repeat their shared borders.
-  const double coordinates =
-      form == SurfaceForm::one ? double(net.xyz.size()) : 48.0 * double(nc - 1) * double(ns - 1);
-  const double curve_coordinates = 3.0 * double(2 * nc * ns + 2 * (nc + ns));
-  out.reserve(4096 + std::size_t((coordinates * 23 + curve_coordinates * 26) * 81 / 64));
 
   // Start section.
   std::size_t s_lines = 0;
@@ -228,12 +221,14 @@ std::string write_iges(const SurfaceInput& input, const Array& patches, const Ca
       "126). Units mm.",
       header.name,
       form == SurfaceForm::one ? "one bicubic B-spline surface" : "its bicubic patches");
+  std::string records;
   for (std::size_t at = 0; at < start.size(); at += 72) {
     const std::string_view piece = std::string_view(start).substr(at, 72);
-    out.append(piece);
-    out.append(72 - piece.size(), ' ');
-    end_record(out, 'S', ++s_lines);
+    records.append(piece);
+    records.append(72 - piece.size(), ' ');
+    end_record(records, 'S', ++s_lines);
   }
+  out.put(records);
 
   // Global section (IGES 5.3, 2.2.4.3).
   Records g(out, 'G', 72, 1);
@@ -274,10 +269,10 @@ std::string write_iges(const SurfaceInput& input, const Array& patches, const Ca
   const std::size_t entities =
       (form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1)) + curves.size() + stringers.size();
 
-  // Directory section: 2 records per entity, filled in once the parameters are written.
-  const std::size_t d_at = out.size();
+  // Directory section: 2 records of 81 characters per entity, written once the parameters are.
+  const std::uint64_t d_at = out.offset();
   const std::size_t d_lines = 2 * entities;
-  out.append(81 * d_lines, ' ');
+  out.skip(81 * d_lines);
 
   // Parameter section.
   std::vector<Entity> list;
@@ -302,21 +297,29 @@ std::string write_iges(const SurfaceInput& input, const Array& patches, const Ca
     entity(126, "STRINGER", c.first, [&] { write_curve(p, c.second); });
   const std::size_t p_lines = p.next_sequence() - 1;
 
-  std::string directory;
-  directory.reserve(81 * d_lines);
-  for (std::size_t e = 0; e < list.size(); ++e) directory_entry(directory, list[e], 2 * e + 1);
-  out.replace(d_at, directory.size(), directory);
+  const std::uint64_t end = out.offset();
+  out.seek(d_at);
+  for (std::size_t e = 0; e < list.size(); ++e) directory_entry(out, list[e], 2 * e + 1);
+  out.seek(end);
 
   // Terminate section.
+  records.clear();
   const std::size_t counts[4] = {s_lines, g_lines, d_lines, p_lines};
   const char letters[4] = {'S', 'G', 'D', 'P'};
   for (int k = 0; k < 4; ++k) {
-    out.push_back(letters[k]);
-    put_integer(out, std::int64_t(counts[k]), 7);
+    records.push_back(letters[k]);
+    put_integer(records, std::int64_t(counts[k]), 7);
   }
-  out.append(40, ' ');
-  end_record(out, 'T', 1);
-  return out;
+  records.append(40, ' ');
+  end_record(records, 'T', 1);
+  out.put(records);
+}
+
+std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                       SurfaceForm form) {
+  StringOut out;
+  write_iges(input, patches, header, out, form);
+  return out.take_text();
 }
 
 }  // namespace igds

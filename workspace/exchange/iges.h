@@ -7,6 +7,7 @@
 
 #include "workspace/exchange/fields.h"
 #include "workspace/kernels/surface.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -40,5 +41,8 @@ enum class SurfaceForm { patches, one };
 // lines.
 std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
                        SurfaceForm form = SurfaceForm::patches);
+// The same into `out`, made while it is written (the file may be hundreds of megabytes).
+void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                TextOut& out, SurfaceForm form = SurfaceForm::patches);
 
 }  // namespace igds

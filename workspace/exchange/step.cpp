@@ -13,12 +13,14 @@ namespace igds {
 
 namespace {
 
-// Entity instances of the exchange structure (ISO 10303-21), numbered in order.
+// Entity instances of the exchange structure (ISO 10303-21), numbered in order, made in a string
+// that is handed on to `text` whenever it holds more than 64 KB.
 class Instances {
  public:
-  explicit Instances(std::string& out) : out_(out) {}
+  Instances(std::string& out, TextOut& text) : out_(out), text_(text) {}
   // Starts instance #n = and returns n.
   std::size_t begin() {
+    if (out_.size() >= (std::size_t{1} << 16)) flush();
     const std::size_t id = next_++;
     ref(id);
     out_ += '=';
@@ -50,9 +52,15 @@ class Instances {
     out_ += '\'';
   }
   std::string& out() { return out_; }
+  // Hands what is made on to `text`.
+  void flush() {
+    text_.put(out_);
+    out_.clear();
+  }
 
  private:
   std::string& out_;
+  TextOut& text_;
   std::size_t next_ = 1;
 };
 
@@ -81,8 +89,8 @@ void bezier_knots(Instances& s, std::size_t first, std::size_t last, bool multip
 
 }  // namespace
 
-std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form) {
+void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                TextOut& text, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
@@ -92,11 +100,8 @@ std::string write_step(const SurfaceInput& input, const Array& patches, const Ca
   }
 
   std::string out;
-  // Room for the file at once: a point's instance about 75 characters, a patch's about 170, a
-  // curve's control point and its reference 85.
-  out.reserve(4096 + net.rows * net.cols * 75 + (nc - 1) * (ns - 1) * 170 +
-              (2 * nc * ns + 2 * (nc + ns)) * 85);
-  Instances s(out);
+  out.reserve(std::size_t{1} << 17);
+  Instances s(out, text);
   out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((";
   s.string("IGDS surface " + header.name);
   out += "),'2;1');\nFILE_NAME(";
@@ -299,7 +304,14 @@ std::string write_step(const SurfaceInput& input, const Array& patches, const Ca
   out += ',';
   s.ref(representation);
   out += ");\nENDSEC;\nEND-ISO-10303-21;\n";
-  return out;
+  s.flush();
+}
+
+std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                       SurfaceForm form) {
+  StringOut out;
+  write_step(input, patches, header, out, form);
+  return out.take_text();
 }
 
 }  // namespace igds

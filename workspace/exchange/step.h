@@ -8,6 +8,7 @@
 
 #include "workspace/exchange/iges.h"
 #include "workspace/kernels/surface.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -17,5 +18,8 @@ namespace igds {
 // Throws DataError as write_iges does (but for the line limit: STEP has none).
 std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
                        SurfaceForm form = SurfaceForm::patches);
+// The same into `text`, made while it is written (the file may be hundreds of megabytes).
+void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
+                TextOut& text, SurfaceForm form = SurfaceForm::patches);
 
 }  // namespace igds

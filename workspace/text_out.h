@@ -1,0 +1,80 @@
+// A text made piece by piece: the writers of files of hundreds of megabytes (EXPORT, WRITE) put
+// their bytes into a buffer that is handed on whenever it fills, to a file being written
+// (disk::write_file) or to a string, so that no copy of the whole text is ever held.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace igds {
+
+class TextOut {
+ public:
+  // The most room(n) may ask for at once.
+  static constexpr std::size_t max_room = 4096;
+
+  virtual ~TextOut() = default;
+  TextOut(const TextOut&) = delete;
+  TextOut& operator=(const TextOut&) = delete;
+
+  // Room for n (at most max_room) bytes at the pointer returned; commit(end) says where the bytes
+  // written there end.
+  char* room(std::size_t n) {
+    if (static_cast<std::size_t>(end_ - at_) < n) hand_on(n);
+    return at_;
+  }
+  void commit(char* end) { at_ = end; }
+  // All the room there is at once, at least n (at most max_room) bytes: [first, first + size).
+  struct Space {
+    char* first;
+    std::size_t size;
+  };
+  Space space(std::size_t n) {
+    room(n);
+    return {at_, static_cast<std::size_t>(end_ - at_)};
+  }
+
+  void put(char c) { *room(1) = c, ++at_; }
+  void put(std::string_view bytes);     // any length
+  void put(char c, std::size_t count);  // `count` copies of c
+  std::uint64_t offset() const { return base_ + std::uint64_t(at_ - begin_); }  // the next byte's
+  std::uint64_t size() const;  // the text's length so far
+
+  // `n` bytes to be written later (after seek(offset) to them); the text goes on after them.
+  void skip(std::size_t n) { seek(offset() + n); }
+  // The next bytes go at `offset`, within what was written or skipped or at the end. A text must
+  // have every skipped byte written by the time it is finished.
+  void seek(std::uint64_t offset);
+
+ protected:
+  TextOut() = default;
+  // Takes the bytes [begin_, at_), which belong at base_, and sets begin_ = at_ to fresh room
+  // of at least n bytes up to end_. The caller moves base_.
+  virtual void take(std::size_t n) = 0;
+  char* begin_ = nullptr;
+  char* at_ = nullptr;
+  char* end_ = nullptr;
+  std::uint64_t base_ = 0;
+
+ private:
+  void hand_on(std::size_t n);
+  std::uint64_t end_offset_ = 0;  // the largest offset handed on so far
+};
+
+// A TextOut into a string.
+class StringOut final : public TextOut {
+ public:
+  StringOut();
+  // The text, once it is finished (every skipped byte written).
+  std::string take_text();
+
+ private:
+  void take(std::size_t n) override;
+  std::string text_;
+  std::vector<char> buffer_;
+};
+
+}  // namespace igds
