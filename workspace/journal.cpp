@@ -237,9 +237,22 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
   Array inppn = current_.inppn, inptg = current_.inptg;
   if (!apply_change(step.inppn, inppn, back) || !apply_change(step.inptg, inptg, back))
     throw std::logic_error("undo journal out of step with the workspace");
-  // PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same).
-  Surface surface;
-  if (to.nocur > 0) surface = interpolate({to.nocur, to.nostr, to.intcu, to.intst, &inppn, &inptg});
+  // PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same), with
+  // the state's twists, into the memory of the current ones (a 4 M-point surface then writes no
+  // fresh pages); on DataError they are left as they were.
+  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
+  if (to.nocur > 0) {
+    const bool marks = to.status[Workspace::status_twists] == 1;
+    try {
+      interpolate_into({to.nocur, to.nostr, to.intcu, to.intst, &inppn, &inptg, marks}, surface);
+    } catch (...) {
+      ws.patches = std::move(surface.patches);
+      ws.intpn = std::move(surface.intpn);
+      throw;
+    }
+  } else {
+    surface = {};
+  }
   to.apply_to(ws);
   current_.inppn = inppn;
   current_.inptg = inptg;

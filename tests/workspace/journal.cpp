@@ -372,3 +372,37 @@ TEST_CASE("a surface replaced whole (RESTORE) keeps the parts that differ, or bo
   j.undo(ws);
   test::check_same_surface(ws, before);
 }
+
+TEST_CASE("UNDO and REDO make PATCHES and INTPN again with the twists of the state they go to") {
+  Workspace ws = test::make_interpolated(5, 6, 2, 3);
+  saved(ws);
+  Journal j(ws);
+  const Workspace zero = ws;
+  // CHANGE TWISTS MARKS: the same points, Marks's twists, STATUS[3] = 1.
+  CHECK(command(j, ws, "CHANGE TWISTS", [&] {
+    ws.status[Workspace::status_twists] = 1;
+    Surface s = interpolate(surface_input(ws));
+    ws.patches = std::move(s.patches);
+    ws.intpn = std::move(s.intpn);
+  }));
+  const Workspace marks = ws;
+  REQUIRE(marks.patches != zero.patches);
+  CHECK(command(j, ws, "CHANGE POINTS", [&] {
+    ws.inppn.ravel[3 * 7 + 2] = 4;
+    Edits points = Edits::none();
+    points.part(3 * 7, 3 * 7 + 3);
+    ws.changes.edited(points, Edits::none());
+    Surface s = interpolate(surface_input(ws));
+    ws.patches = std::move(s.patches);
+    ws.intpn = std::move(s.intpn);
+  }));
+  const Workspace changed = ws;
+  CHECK(j.undo(ws) == "CHANGE POINTS");
+  test::check_same_workspace(ws, marks);
+  CHECK(j.undo(ws) == "CHANGE TWISTS");
+  test::check_same_workspace(ws, zero);
+  CHECK(j.redo(ws) == "CHANGE TWISTS");
+  test::check_same_workspace(ws, marks);
+  CHECK(j.redo(ws) == "CHANGE POINTS");
+  test::check_same_workspace(ws, changed);
+}
