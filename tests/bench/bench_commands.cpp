@@ -7,7 +7,8 @@
 // and INTPN are made while the first line is typed, and the first command waits for them if it
 // comes sooner), and the variables' own size for comparison.
 //
-// Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes, ..._peak_rss_mb,
+// Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes,
+// ..._<command>_peak_rss_mb (the session's peak once the command is done), ..._peak_rss_mb,
 // ..._variables_mb, e.g. commands_500x500_4m_change_points_ms.
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -285,6 +286,8 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
       const auto& median = runs[runs.size() / 2];
       fmt::print("{}_{}_ms {:.1f}\n{}_{}_written_bytes {}\n", prefix, step.key,
                  1000 * median.seconds, prefix, step.key, median.written);
+      // The session's peak so far: which command sets it.
+      fmt::print("{}_{}_peak_rss_mb {:.1f}\n", prefix, step.key, igds.peak_rss_kb() / 1024.0);
       std::fflush(stdout);
     }
     peak = igds.peak_rss_kb();
