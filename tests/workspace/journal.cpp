@@ -378,23 +378,22 @@ TEST_CASE("UNDO and REDO make PATCHES and INTPN again with the twists of the sta
   saved(ws);
   Journal j(ws);
   const Workspace zero = ws;
-  // CHANGE TWISTS MARKS: the same points, Marks's twists, STATUS[3] = 1.
-  CHECK(command(j, ws, "CHANGE TWISTS", [&] {
-    ws.status[Workspace::status_twists] = 1;
+  // PATCHES and INTPN of the inputs and twists `ws` has now, as the commands make them.
+  auto interpolated = [&ws] {
     Surface s = interpolate(surface_input(ws));
     ws.patches = std::move(s.patches);
     ws.intpn = std::move(s.intpn);
+  };
+  // CHANGE TWISTS MARKS: the same points, Marks's twists, STATUS[3] = 1.
+  CHECK(command(j, ws, "CHANGE TWISTS", [&] {
+    ws.status[Workspace::status_twists] = 1;
+    interpolated();
   }));
   const Workspace marks = ws;
   REQUIRE(marks.patches != zero.patches);
   CHECK(command(j, ws, "CHANGE POINTS", [&] {
-    ws.inppn.ravel[3 * 7 + 2] = 4;
-    Edits points = Edits::none();
-    points.part(3 * 7, 3 * 7 + 3);
-    ws.changes.edited(points, Edits::none());
-    Surface s = interpolate(surface_input(ws));
-    ws.patches = std::move(s.patches);
-    ws.intpn = std::move(s.intpn);
+    change_point(ws, 7, 4, false);
+    interpolated();
   }));
   const Workspace changed = ws;
   CHECK(j.undo(ws) == "CHANGE POINTS");
