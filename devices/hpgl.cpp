@@ -36,6 +36,13 @@ char* integer(char* out, int v) {
   return std::to_chars(out, out + 10, u).ptr;
 }
 
+// The coordinates of a vector at `out`, "x,y" (at most 23 characters); returns their end.
+char* pair(char* out, DevicePoint p) {
+  out = integer(out, p.x);
+  *out++ = ',';
+  return integer(out, p.y);
+}
+
 }  // namespace
 
 HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute)
@@ -58,10 +65,7 @@ void HpglEncoder::relative_mode(bool on) {
 void HpglEncoder::coordinates(DevicePoint p) {
   // The commonest bytes of a plot: two integers, written in place.
   if (relative_) p = {p.x - at_.x, p.y - at_.y};
-  char* out = room(24);
-  out = integer(out, p.x);
-  *out++ = ',';
-  size_ = static_cast<std::size_t>(integer(out, p.y) - out_.data());
+  size_ = static_cast<std::size_t>(pair(room(24), p) - out_.data());
 }
 
 void HpglEncoder::reserve(std::size_t vectors) {
@@ -125,10 +129,7 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
     const DevicePoint p = points[reversed ? n - 1 - i : i];
     if (at == p) continue;
     *out++ = ',';
-    const DevicePoint d = relative ? DevicePoint{p.x - at.x, p.y - at.y} : p;
-    out = integer(out, d.x);
-    *out++ = ',';
-    out = integer(out, d.y);
+    out = pair(out, relative ? DevicePoint{p.x - at.x, p.y - at.y} : p);
     ++vectors;
     at = p;
   }

@@ -125,6 +125,18 @@ void place_line(const std::vector<Point2>& line, const Box& clip, const Style& s
   sink.close(start, style);
 }
 
+// The point at p[0], p[1] placed, rounded and added to the `size` points of `line` unless it is
+// the last of them again; false when it is not finite or falls outside `clip`.
+inline bool add_plain(const double* p, const Placement& at, const Box& clip, DevicePoint* line,
+                      std::size_t& size) {
+  const double x = at.dx + at.scale * p[0], y = at.dy + at.scale * p[1];
+  // Also false for a NaN.
+  if (!(x >= clip.x0 && x <= clip.x1 && y >= clip.y0 && y <= clip.y1)) return false;
+  const DevicePoint q{nearest(x), nearest(y)};
+  if (size == 0 || !(line[size - 1] == q)) line[size++] = q;
+  return true;
+}
+
 // An open polyline whose points are all finite and fall inside `clip` once placed, rounded
 // straight into the sink (the usual case, and most of the points of a large drawing); false,
 // with nothing handed over, when a point is not finite or falls outside.
@@ -135,24 +147,19 @@ bool place_plain(PointsView<Point2, const double> points, const Placement& at, c
   DevicePath& out = sink.open();
   const std::size_t start = out.size();
   out.resize(start + n);
-  DevicePoint* d = out.data() + start;
-  DevicePoint* const first = d;
+  DevicePoint* const first = out.data() + start;
   // Points far apart (a stringer of a grid: a row's length between them) are asked for early,
   // many at once: the processor's own prefetching does not follow such strides.
   const std::size_t ahead = stride > 8 ? 16 : 0;
+  std::size_t size = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (ahead && i + ahead < n) __builtin_prefetch(base + (i + ahead) * stride);
-    const double* p = base + i * stride;
-    const double x = at.dx + at.scale * p[0], y = at.dy + at.scale * p[1];
-    // Also false for a NaN: not finite, or outside.
-    if (!(x >= clip.x0 && x <= clip.x1 && y >= clip.y0 && y <= clip.y1)) {
+    if (!add_plain(base + i * stride, at, clip, first, size)) {
       out.resize(start);
       return false;
     }
-    const DevicePoint q{nearest(x), nearest(y)};
-    if (d == first || !(d[-1] == q)) *d++ = q;
   }
-  out.resize(static_cast<std::size_t>(d - out.data()));
+  out.resize(start + size);
   sink.close(start, style);
   return true;
 }
@@ -188,13 +195,8 @@ bool place_side_by_side(const Drawing2& drawing, std::span<const Drawing2::Item>
   sizes.assign(m, 0);
   for (std::size_t i = 0; i < count; ++i) {
     const double* row = base + i * stride;
-    for (std::size_t j = 0; j < m; ++j) {
-      const double x = at.dx + at.scale * row[j * n], y = at.dy + at.scale * row[j * n + 1];
-      if (!(x >= clip.x0 && x <= clip.x1 && y >= clip.y0 && y <= clip.y1)) return false;
-      const DevicePoint q{nearest(x), nearest(y)};
-      DevicePoint* line = block.data() + j * count;
-      if (sizes[j] == 0 || !(line[sizes[j] - 1] == q)) line[sizes[j]++] = q;
-    }
+    for (std::size_t j = 0; j < m; ++j)
+      if (!add_plain(row + j * n, at, clip, block.data() + j * count, sizes[j])) return false;
   }
   for (std::size_t j = 0; j < m; ++j) {
     DevicePath& out = sink.open();
@@ -355,9 +357,10 @@ Box bounds(const Drawing2& drawing) {
   for (const auto& item : drawing.items())
     if (item.pool != 0 && item.stride == n && item.count > 0)
       runs.push_back({item.pool, item.first, item.first + n * item.count});
-  std::sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) {
+  const auto before = [](const Run& a, const Run& b) {
     return a.pool != b.pool ? a.pool < b.pool : a.from < b.from;
-  });
+  };
+  std::sort(runs.begin(), runs.end(), before);
   std::vector<Run> merged;
   for (const Run& r : runs)
     if (!merged.empty() && merged.back().pool == r.pool && r.from <= merged.back().to)
@@ -366,10 +369,7 @@ Box bounds(const Drawing2& drawing) {
       merged.push_back(r);
   auto covered = [&](const Drawing2::Item& item) {
     const std::size_t last = item.first + item.stride * (item.count - 1) + n;
-    auto at = std::upper_bound(merged.begin(), merged.end(), Run{item.pool, item.first, 0},
-                               [](const Run& a, const Run& b) {
-                                 return a.pool != b.pool ? a.pool < b.pool : a.from < b.from;
-                               });
+    auto at = std::upper_bound(merged.begin(), merged.end(), Run{item.pool, item.first, 0}, before);
     if (at == merged.begin()) return false;
     --at;
     return at->pool == item.pool && at->from <= item.first && last <= at->to;

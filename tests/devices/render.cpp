@@ -138,4 +138,44 @@ TEST_CASE("render draws what place lists, in the same order, with the styles") {
   CHECK(r.texts[0].at == DevicePoint{3, 3});
 }
 
+TEST_CASE("place: the stringers of a shared grid, placed side by side, are the paths one by one") {
+  // A grid of 40 curves of 37 points, shared by the drawing as a surface image is: its curves
+  // one after another, its stringers a row apart (placed sixteen at a time). The same points
+  // copied into a polyline each must give the same paths, styles and clipping, also when a
+  // stringer has a point that is not finite, or one outside the clip box.
+  const std::size_t planes = 40, rows = 37;
+  for (int damage = 0; damage < 3; ++damage) {
+    CAPTURE(damage);
+    auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
+    for (std::size_t c = 0; c < planes; ++c)
+      for (std::size_t r = 0; r < rows; ++r) {
+        (*grid)[2 * (c * rows + r)] = 3.0 * r + 0.7 * c + 0.3 * std::sin(double(c * r));
+        (*grid)[2 * (c * rows + r) + 1] = 2.0 * c + 0.4 * r;
+      }
+    if (damage == 1) (*grid)[2 * (11 * rows + 20)] = std::nan("");
+    if (damage == 2) (*grid)[2 * (5 * rows + 19) + 1] = 1e4;
+    Drawing2 shared, copied;
+    const auto pool = shared.share(grid, grid->data(), grid->size());
+    for (std::size_t c = 0; c < planes; ++c) {
+      shared.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
+      copied.add_polyline(Point2View(grid->data() + 2 * c * rows, rows), {},
+                          {Role::curve, int(c + 1)});
+    }
+    for (std::size_t r = 0; r < rows; ++r) {
+      const Style style{1 + int(r % 2)};
+      shared.add_polyline(pool, 2 * r, planes, 2 * rows, style, {Role::stringer, int(r + 1)});
+      copied.add_polyline(Point2View(grid->data() + 2 * r, planes, 2 * rows), style,
+                          {Role::stringer, int(r + 1)});
+    }
+    const Box clip{0, 0, 300, 200};
+    const Placement at{2, 10, 5};
+    const Placed a = place(shared, at, clip, {}), b = place(copied, at, clip, {});
+    CHECK(paths(a) == paths(b));
+    CHECK(a.styles == b.styles);
+    CHECK(a.clipped == b.clipped);
+    CHECK(a.clipped == (damage == 2));
+    CHECK(a.paths.size() == planes + rows + (damage == 0 ? 0 : 2));
+  }
+}
+
 }  // namespace igds::test::devices
