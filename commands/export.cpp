@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <ctime>
 #include <string>
-#include <tuple>
 #include <utility>
 
 #include <fmt/format.h>
@@ -77,22 +76,22 @@ bool duct_of_surface(const Workspace& ws) {
   return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
 }
 
-// The picture of EXPORT DUCT and what the report says it holds.
-std::pair<DuctPicture, std::string_view> duct_file(const Workspace& ws, const std::string& name) {
+// EXPORT DUCT into `out`, written straight from the surface's curves or the image's drawing.
+void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
   const std::string date = duct_date(export_date());
   if (duct_of_surface(ws)) {
     const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
-    return {duct_picture(drawing, {name, date, title}), "THE SURFACE IN SPACE"};
+    write_duct(drawing, {name, date, title}, {}, out);
+    return;
   }
   if (!ws.image) throw Report(reports::surface_not_found);
   std::string title;
   for (const std::string& line : describe(ws.image->desim, 72))
     title += (title.empty() ? "" : " ") + line;
   const Picture picture = picture_of(ws.image);
-  return {duct_picture(picture.drawing, {name, date, title}, ws.image->desim.projection),
-          "THE IMAGE AS PROJECTED"};
+  write_duct(picture.drawing, {name, date, title}, ws.image->desim.projection, out);
 }
 
 // EXPORT IGES or STEP into `out`.
@@ -133,14 +132,12 @@ void run_export(Context& ctx, const Choice* option) {
         size = bytes.size();
         break;
       }
-      case duct: {
-        // The picture's text is made while it is written: it may be hundreds of megabytes.
-        DuctPicture picture;
-        std::tie(picture, holds) = duct_file(ws, name);
+      case duct:
+        // Made while it is written: a picture may be hundreds of megabytes.
+        holds = duct_of_surface(ws) ? "THE SURFACE IN SPACE" : "THE IMAGE AS PROJECTED";
         size = write_user_file(ctx.disk(), name, type,
-                               [&](TextOut& out) { write_duct(picture, out); });
+                               [&](TextOut& out) { duct_file(ws, name, out); });
         break;
-      }
       case iges:
       case step:
         size = write_user_file(ctx.disk(), name, type,

@@ -5,9 +5,12 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -76,5 +79,40 @@ class StringOut final : public TextOut {
   std::string text_;
   std::vector<char> buffer_;
 };
+
+// Room for the second half of put_each's items, kept from one call to the next.
+struct Aside {
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
+};
+
+// Puts into `out`, in order, the texts of items 0 .. count - 1, each written by
+// make(char* w, i) at w (at most `most` bytes, most <= TextOut::max_room) and ending where it
+// returns. With `threads` 2 the calling thread makes the first half straight into `out` while a
+// second makes the rest into `aside`, which is then put: the same text, in about half the time
+// when making it is the work.
+template <class Make>
+void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned threads, Aside& aside,
+              const Make& make) {
+  const std::size_t half = threads > 1 ? count / 2 : count;
+  if (half < count && aside.size < (count - half) * most) {
+    aside.size = (count - half) * most;
+    aside.bytes = std::make_unique_for_overwrite<char[]>(aside.size);
+  }
+  char* aside_end = aside.bytes.get();
+  parallel_for(2, half < count ? 2 : 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t part = from; part < to; ++part) {
+      if (part == 0) {
+        for (std::size_t i = 0; i < half; ++i) out.commit(make(out.room(most), i));
+      } else {
+        char* w = aside.bytes.get();
+        for (std::size_t i = half; i < count; ++i) w = make(w, i);
+        aside_end = w;
+      }
+    }
+  });
+  out.put(
+      std::string_view(aside.bytes.get(), static_cast<std::size_t>(aside_end - aside.bytes.get())));
+}
 
 }  // namespace igds

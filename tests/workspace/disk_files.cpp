@@ -416,3 +416,42 @@ TEST_CASE("a made text: pieces, a hole written later, the same in a string and i
 }
 
 }  // namespace igds
+
+namespace igds {
+
+TEST_CASE("items made on two threads give the text made in order, in a string and in a file") {
+  // Lines of 1 to 60 characters, more than a file piece of them, each naming its number.
+  auto make = [](char* w, std::size_t i) {
+    const std::string line = std::to_string(i) + std::string(i % 50, char('a' + i % 26)) + '\n';
+    return std::copy(line.begin(), line.end(), w);
+  };
+  const std::size_t count = 200000;
+  std::string expected;
+  for (std::size_t i = 0; i < count; ++i) {
+    char line[64];
+    expected.append(line, make(line, i));
+  }
+  REQUIRE(expected.size() > (std::size_t{4} << 20));
+  for (unsigned threads : {1u, 2u}) {
+    CAPTURE(threads);
+    StringOut text;
+    Aside aside;
+    text.put("head\n");
+    put_each(text, count / 3, 64, threads, aside, make);
+    // A second call reuses the room aside, the next items after the first.
+    put_each(text, count - count / 3, 64, threads, aside,
+             [&](char* w, std::size_t i) { return make(w, i + count / 3); });
+    CHECK(text.take_text() == "head\n" + expected);
+    Scratch s;
+    const auto size = write_user_file(s.disk, "LINES", "IGS", [&](TextOut& out) {
+      Aside room;
+      put_each(out, count, 64, threads, room, make);
+    });
+    CHECK(size == expected.size());
+    std::ifstream in(s.disk.path("LINES", "IGS"), std::ios::binary);
+    CHECK(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) ==
+          expected);
+  }
+}
+
+}  // namespace igds

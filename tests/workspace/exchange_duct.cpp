@@ -15,6 +15,7 @@
 #include "workspace/exchange/fields.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/text_out.h"
 
 namespace igds::test::exchange {
 
@@ -30,6 +31,15 @@ Vec3 point_of(const Drawing3& d, const Drawing3::Item& item, std::size_t k) {
 
 bool near(Vec3 a, Vec3 b, double tolerance) {
   return norm(a - b) <= tolerance;
+}
+
+// A drawing's picture as EXPORT DUCT writes it, straight from the drawing; it must be the text of
+// the picture kept whole.
+template <class... Args>
+std::string streamed(const Args&... args) {
+  StringOut out;
+  write_duct(args..., out);
+  return out.take_text();
 }
 
 // A point of a rational quadratic span by de Casteljau in homogeneous coordinates.
@@ -683,6 +693,7 @@ TEST_CASE("rational cubics of a perspective become straight lines close to them"
   const Drawing2 plane = project(space, {Projection::conic, {60, -80, 50}}, centre);
   const DuctPicture p = duct_picture(plane, {"CONIC", "", ""}, Projection::conic);
   CHECK(p.counters[5] == -2);  // straight lines only
+  CHECK(streamed(plane, DuctHeader{"CONIC", "", ""}, Projection::conic) == write_duct(p));
   // Every curve's samples lie within 1e-5 of the picture's extent (plus the seven digits of the
   // pixels) of its polyline.
   double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
@@ -746,6 +757,20 @@ TEST_CASE("nothing at all is one invisible pixel; points that are not finite are
     CHECK(e.problem == DataError::Problem::point_not_finite);
     CHECK(e.number == 1);
   }
+  // Written straight from the drawing: refused before a byte is written.
+  StringOut out;
+  Drawing3 later;
+  later.add_polyline(Vec3View(line, 1));
+  later.add_polyline(Vec3View(line, 2));
+  try {
+    write_duct(later, {"BAD", "", ""}, {}, out);
+    FAIL("no refusal");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::point_not_finite);
+    CHECK(e.number == 2);
+  }
+  CHECK(out.take_text().empty());
+  CHECK(streamed(Drawing3{}, DuctHeader{"EMPTY", "", ""}, DuctView{}) == write_duct(empty));
 }
 
 TEST_CASE("mutated pictures are read or refused, never more; what is read writes and reads back") {
@@ -779,7 +804,11 @@ TEST_CASE("mutated pictures are read or refused, never more; what is read writes
       ++accepted;
       const Drawing3 d = duct_drawing(p);
       CHECK_NOTHROW(read_duct(write_duct(p)));
-      CHECK_NOTHROW(read_duct(write_duct(duct_picture(d, {"AGAIN", "", ""}))));
+      const DuctHeader again{"AGAIN", "", "A TITLE"};
+      const std::string text = write_duct(duct_picture(d, again));
+      CHECK_NOTHROW(read_duct(text));
+      // Conics with their T U, Bézier spans, marks and texts alike.
+      CHECK(streamed(d, again, DuctView{}) == text);
     } catch (const DuctError& e) {
       ++refused;
       CHECK(e.line >= 1);
@@ -800,6 +829,13 @@ TEST_CASE("golden: the pictures of a small surface") {
   check_golden("surface_5x4_assonometric.ductpic",
                write_duct(duct_picture(plane, {"IMAGE", date, "ASSONOMETRIC 110 130 120"},
                                        Projection::assonometric)));
+  // EXPORT DUCT's own way, straight from the drawings: the same files.
+  check_golden(
+      "surface_5x4.ductpic",
+      streamed(d, DuctHeader{"SURFACE", date, "SURFACE 5 X 4, INTCU 2, INTST 2"}, DuctView{}));
+  check_golden("surface_5x4_assonometric.ductpic",
+               streamed(plane, DuctHeader{"IMAGE", date, "ASSONOMETRIC 110 130 120"},
+                        Projection::assonometric));
 }
 
 }  // namespace igds::test::exchange

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -10,6 +11,7 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/fields.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/large_array.h"
 
 namespace igds {
 
@@ -907,7 +909,40 @@ double outwards(double v, bool up) {
 
 }  // namespace
 
-DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, const DuctView& view) {
+namespace {
+
+Vec3 lifted(Vec3 v) {
+  return v;
+}
+Vec3 lifted(Point2 p) {
+  return {p.x, p.y, 0};
+}
+
+// The largest extent of every point of a drawing (0 when it has none).
+template <class P>
+double extent_of(const Drawing<P>& drawing) {
+  Box3 all{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
+  for (const auto& item : drawing.items()) {
+    for (P point : drawing.points(item)) {
+      const Vec3 v = lifted(point);
+      all.lo = {std::min(all.lo.x, v.x), std::min(all.lo.y, v.y), std::min(all.lo.z, v.z)};
+      all.hi = {std::max(all.hi.x, v.x), std::max(all.hi.y, v.y), std::max(all.hi.z, v.z)};
+    }
+  }
+  return all.lo.x <= all.hi.x
+             ? std::max({all.hi.x - all.lo.x, all.hi.y - all.lo.y, all.hi.z - all.lo.z})
+             : 0.0;
+}
+
+// The picture of a drawing (a drawing in the plane at z = 0) as duct_picture makes it, but its
+// pixels handed to `pixels` in file order rather than kept (xyz and tu are left empty):
+// pixels.shape(s) gives the shape factor T of the pixel that follows (a conic arc's mid pixel),
+// pixels.pixel(v) each pixel. Throws DataError before handing on any pixel of an item that is not
+// finite.
+template <class P, class Pixels>
+DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
+                    Pixels& pixels) {
+  using Kind = typename Drawing<P>::Kind;
   DuctPicture p;
   std::string first = printable(fmt::format("IGDS PICTURE FILE {} {}", header.name, header.date));
   p.header.push_back(first);
@@ -917,21 +952,21 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
     p.header.push_back(title);
   }
 
-  // Room for every pixel at once: a picture of millions of them is not copied as it grows.
-  std::size_t pixels = 0;
-  for (const auto& item : drawing.items()) pixels += item.count + (item.closed ? 1 : 0);
-  p.xyz.reserve(3 * pixels);
   p.instructions.reserve(drawing.size());
 
   BoxBuilder box;
-  std::vector<std::pair<std::size_t, double>> shapes;  // pixel, shape factor
+  std::size_t count = 0;  // pixels so far
+  bool shapes = false;    // a conic arc's shape factor was given
   bool all_lines = true;
   // Runs of marks (or texts) of one style and shape share an invisible instruction.
   enum class Run { none, marks, texts } run = Run::none;
   Style run_style;
   MarkShape run_shape = MarkShape::square;
 
-  auto add_pixel = [&](Vec3 v) { p.xyz.insert(p.xyz.end(), {v.x, v.y, v.z}); };
+  auto add_pixel = [&](Vec3 v) { pixels.pixel(v), ++count; };
+  auto bound = [&](Vec3 v) {
+    if constexpr (Pixels::lays_out) box.add(v);
+  };
   auto start = [&](const Style& style, DuctArc arc, DuctMark mark, DuctPen pen) {
     DuctInstruction in;
     in.colour = std::clamp(style.pen, 1, 999999);
@@ -943,45 +978,38 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
     return &p.instructions.back();
   };
 
-  const Box3 all = bounding_box(drawing);
-  const double extent =
-      all.lo.x <= all.hi.x
-          ? std::max({all.hi.x - all.lo.x, all.hi.y - all.lo.y, all.hi.z - all.lo.z})
-          : 0.0;
-  std::vector<Vec3> flat;
+  std::optional<double> extent;  // of the whole drawing, for the first rational cubic
+  std::vector<Vec3> flat, points;
   const auto items = drawing.items();
   for (std::size_t n = 0; n < items.size(); ++n) {
     const auto& item = items[n];
-    const auto points = drawing.points(item);
-    for (Vec3 v : points) {
-      if (!finite(v)) {
-        DataError e(DataError::Problem::point_not_finite);
-        e.number = n + 1;
-        throw e;
-      }
-    }
+    points.clear();
+    for (P point : drawing.points(item)) points.push_back(lifted(point));
     const auto w = drawing.weights(item);
-    for (double x : w) {
-      if (!(std::isfinite(x) && x > 0)) {
+    if constexpr (Pixels::lays_out) {
+      const bool bad =
+          std::any_of(points.begin(), points.end(), [](Vec3 v) { return !finite(v); }) ||
+          std::any_of(w.begin(), w.end(), [](double x) { return !(std::isfinite(x) && x > 0); });
+      if (bad) {
         DataError e(DataError::Problem::point_not_finite);
         e.number = n + 1;
         throw e;
       }
     }
-    if (item.kind != Drawing3::Kind::mark && item.kind != Drawing3::Kind::text) run = Run::none;
+    if (item.kind != Kind::mark && item.kind != Kind::text) run = Run::none;
     switch (item.kind) {
-      case Drawing3::Kind::polyline: {
+      case Kind::polyline: {
         if (points.empty()) break;
         DuctInstruction* in = start(item.style, DuctArc::line, DuctMark::none, DuctPen::move);
         for (Vec3 v : points) {
           add_pixel(v);
-          box.add(v);
+          bound(v);
         }
         if (item.closed) add_pixel(points[0]);
         in->pixels = points.size() + (item.closed ? 1 : 0);
         break;
       }
-      case Drawing3::Kind::curve: {
+      case Kind::curve: {
         const bool rational =
             !w.empty() && std::any_of(w.begin(), w.end(), [&](double x) { return x != w[0]; });
         if (item.degree == 3 && !rational) {
@@ -990,7 +1018,7 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
           for (Vec3 v : points) add_pixel(v);
           for (std::size_t k = 0; k + 3 < points.size(); k += 3) {
             const Vec3 c[4] = {points[k], points[k + 1], points[k + 2], points[k + 3]};
-            add_cubic_span(box, c);
+            if constexpr (Pixels::lays_out) add_cubic_span(box, c);
           }
           in->pixels = points.size();
         } else if (item.degree == 3) {
@@ -1004,12 +1032,13 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
               h[4 * std::size_t(i)] = v.x * wi, h[4 * std::size_t(i) + 1] = v.y * wi;
               h[4 * std::size_t(i) + 2] = v.z * wi, h[4 * std::size_t(i) + 3] = wi;
             }
-            flatten_rational_cubic(h, 1e-5 * extent, 0, flat);
+            if (!extent) extent = extent_of(drawing);
+            flatten_rational_cubic(h, 1e-5 * *extent, 0, flat);
           }
           DuctInstruction* in = start(item.style, DuctArc::line, DuctMark::none, DuctPen::move);
           for (Vec3 v : flat) {
             add_pixel(v);
-            box.add(v);
+            bound(v);
           }
           in->pixels = flat.size();
         } else {
@@ -1021,19 +1050,20 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
                                   w.empty() ? 1 : w[k + 2]};
             const ConicShape cs =
                 conic_shape(points[k], points[k + 1], points[k + 2], ws[0], ws[1], ws[2]);
-            shapes.emplace_back(p.pixel_count(), cs.shape);
+            pixels.shape(cs.shape);
+            shapes = true;
             add_pixel(cs.mid);
             add_pixel(points[k + 2]);
             const Vec3 c[3] = {points[k], points[k + 1], points[k + 2]};
-            add_quadratic_span(box, c, ws);
+            if constexpr (Pixels::lays_out) add_quadratic_span(box, c, ws);
           }
           in->pixels = points.size();
         }
         break;
       }
-      case Drawing3::Kind::mark: {
+      case Kind::mark: {
         const Vec3 v = points[0];
-        box.add(v);
+        bound(v);
         if (run == Run::marks && item.style == run_style && item.shape == run_shape) {
           p.instructions.back().pixels += 1;
           p.instructions.back().mark_all = true;
@@ -1046,9 +1076,9 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
         add_pixel(v);
         break;
       }
-      case Drawing3::Kind::text: {
+      case Kind::text: {
         const Vec3 v = points[0];
-        box.add(v);
+        bound(v);
         if (run == Run::texts) {
           p.instructions.back().pixels += 1;
         } else {
@@ -1057,7 +1087,7 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
         }
         add_pixel(v);
         DuctText text;
-        text.pixel = p.pixel_count();
+        text.pixel = count;
         text.colour = std::clamp(item.style.pen, 1, 999);
         text.units = 1;
         text.angle = 0;
@@ -1072,17 +1102,12 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
     start(Style{}, DuctArc::line, DuctMark::none, DuctPen::invisible)->pixels = 1;
     add_pixel({0, 0, 0});
   }
-  if (!shapes.empty()) {
-    p.tu.assign(2 * p.pixel_count(), 0.0);
-    for (const auto& [pixel, s] : shapes) p.tu[2 * pixel] = s;
-  }
-
   auto& c = p.counters;
-  c[0] = 4 + (p.texts.empty() ? 0 : 2) + (shapes.empty() ? 0 : 1);
+  c[0] = 4 + (p.texts.empty() ? 0 : 2) + (shapes ? 1 : 0);
   c[1] = view.axis;
   c[2] = -1;
   c[3] = std::int64_t(p.instructions.size());
-  c[4] = std::int64_t(p.pixel_count());
+  c[4] = std::int64_t(count);
   c[5] = all_lines ? -2 : 0;
   c[6] = view.dimensions;
   c[7] = view.projected[0];
@@ -1102,34 +1127,49 @@ DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, cons
   return p;
 }
 
-DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Projection projection) {
-  Drawing3 lifted;
-  std::vector<double> xyz;
-  for (const auto& item : drawing.items()) {
-    const auto points = drawing.points(item);
-    xyz.clear();
-    for (Point2 p : points) xyz.insert(xyz.end(), {p.x, p.y, 0.0});
-    const Vec3View v(xyz.data(), points.size());
-    switch (item.kind) {
-      case Drawing2::Kind::polyline:
-        lifted.add_polyline(v, item.style, item.id, item.closed);
-        break;
-      case Drawing2::Kind::curve:
-        lifted.add_curve(item.degree, v, drawing.weights(item), item.style, item.id);
-        break;
-      case Drawing2::Kind::mark:
-        lifted.add_mark(v[0], item.shape, item.size, item.style, item.id);
-        break;
-      case Drawing2::Kind::text:
-        lifted.add_text(v[0], drawing.text(item), item.size, item.style, item.id);
-        break;
-    }
+// The pixels of a picture kept in it.
+struct KeptPixels {
+  static constexpr bool lays_out = true;
+  DuctPicture& p;
+  std::vector<std::pair<std::size_t, double>> shapes;  // pixel, shape factor
+  void shape(double s) { shapes.emplace_back(p.pixel_count(), s); }
+  void pixel(Vec3 v) { p.xyz.insert(p.xyz.end(), {v.x, v.y, v.z}); }
+};
+
+template <class P>
+DuctPicture kept(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view) {
+  DuctPicture p;
+  // Room for every pixel at once: a picture of millions of them is not copied as it grows.
+  std::size_t pixels = 0;
+  for (const auto& item : drawing.items()) pixels += item.count + (item.closed ? 1 : 0);
+  p.xyz.reserve(3 * pixels);
+  KeptPixels out{p, {}};
+  DuctPicture laid = lay_out(drawing, header, view, out);
+  laid.xyz = std::move(p.xyz);
+  if (laid.has_tu()) {
+    laid.tu.assign(2 * laid.pixel_count(), 0.0);
+    for (const auto& [pixel, s] : out.shapes) laid.tu[2 * pixel] = s;
   }
+  return laid;
+}
+
+// What an image's picture says of its view.
+DuctView image_view(Projection projection) {
   DuctView view;
   view.axis = 3;
   view.dimensions = 2;
   view.projected = {static_cast<int>(projection), 0, 0};
-  return duct_picture(lifted, header, view);
+  return view;
+}
+
+}  // namespace
+
+DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header, const DuctView& view) {
+  return kept(drawing, header, view);
+}
+
+DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Projection projection) {
+  return kept(drawing, header, image_view(projection));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1174,7 +1214,10 @@ class WrittenRecord {
 
 }  // namespace
 
-void write_duct(const DuctPicture& p, TextOut& out) {
+namespace {
+
+// The header lines, counters, reals and instructions of a picture.
+void write_head(const DuctPicture& p, TextOut& out) {
   // The records besides the pixels are few: made in a string, then put.
   std::string head;
   for (const auto& line : p.header) {
@@ -1200,26 +1243,31 @@ void write_duct(const DuctPicture& p, TextOut& out) {
     *w++ = '\n';
     out.commit(w);
   }
-  // Pixel lines, the bulk of a picture: (3(1X,E14.7)), then 2(1X,F10.4) with T U.
-  const bool tu = !p.tu.empty();
-  for (std::size_t k = 0; k < p.pixel_count(); ++k) {
-    char* w = out.room(3 * 15 + 2 * 27 + 1);
-    for (int i = 0; i < 3; ++i) {
-      char number[48];
-      const std::size_t n = format_exponent(number, p.xyz[3 * k + std::size_t(i)], 7);
-      *w++ = ' ';
-      for (std::size_t pad = n; pad < 14; ++pad) *w++ = ' ';
-      for (std::size_t c = 0; c < n; ++c) *w++ = number[c];
-    }
-    if (tu) {
-      for (int i = 0; i < 2; ++i) {
-        *w++ = ' ';
-        w = put_fixed(w, p.tu[2 * k + std::size_t(i)], 10, 4);
-      }
-    }
-    *w++ = '\n';
-    out.commit(w);
+}
+
+// A pixel line, the bulk of a picture, at w: (3(1X,E14.7)), then 2(1X,F10.4) with T U when `tu`.
+// Where it ends.
+constexpr std::size_t pixel_line_most = 3 * 15 + 2 * 27 + 1;
+char* pixel_line(char* w, const double xyz[3], const double* tu) {
+  for (int i = 0; i < 3; ++i) {
+    char number[48];
+    const std::size_t n = format_exponent(number, xyz[i], 7);
+    *w++ = ' ';
+    for (std::size_t pad = n; pad < 14; ++pad) *w++ = ' ';
+    for (std::size_t c = 0; c < n; ++c) *w++ = number[c];
   }
+  if (tu) {
+    for (int i = 0; i < 2; ++i) {
+      *w++ = ' ';
+      w = put_fixed(w, tu[i], 10, 4);
+    }
+  }
+  *w++ = '\n';
+  return w;
+}
+
+// The texts and dimensions after the pixels, when I1 says so.
+void write_tail(const DuctPicture& p, TextOut& out) {
   if (!p.has_texts()) return;
   std::string tail;
   WrittenRecord counts;
@@ -1257,6 +1305,81 @@ void write_duct(const DuctPicture& p, TextOut& out) {
     if (tail.size() > TextOut::max_room) out.put(tail), tail.clear();
   }
   out.put(tail);
+}
+
+// The pixels of a picture written as they come, with T U when the picture has them: gathered in
+// blocks, each block's lines made on two threads.
+class WrittenPixels {
+ public:
+  static constexpr bool lays_out = false;  // the picture was laid out before
+  WrittenPixels(TextOut& out, bool tu) : out_(out), tu_(tu) { block_.reserve(block); }
+  ~WrittenPixels() = default;
+  void shape(double s) { t_ = s; }
+  void pixel(Vec3 v) {
+    block_.push_back({v.x, v.y, v.z, t_});
+    t_ = 0;
+    if (block_.size() == block) flush();
+  }
+  void flush() {
+    put_each(out_, block_.size(), pixel_line_most, threads_for(4 * block_.size()), aside_,
+             [&](char* w, std::size_t k) {
+               const double tu[2] = {block_[k][3], 0};
+               return pixel_line(w, block_[k].data(), tu_ ? tu : nullptr);
+             });
+    block_.clear();
+  }
+
+ private:
+  static constexpr std::size_t block = std::size_t{1} << 16;
+  TextOut& out_;
+  bool tu_;
+  double t_ = 0;                              // the shape factor of the next pixel
+  std::vector<std::array<double, 4>> block_;  // x y z T
+  Aside aside_;
+};
+
+// Pixels not wanted: the picture's layout alone.
+struct NoPixels {
+  static constexpr bool lays_out = true;
+  void shape(double) {}
+  void pixel(Vec3) {}
+};
+
+// A drawing's picture written without being kept: laid out once for the counts, limits and
+// instructions that come first, then walked again for its pixels.
+template <class P>
+void write_picture(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
+                   TextOut& out) {
+  NoPixels none;
+  const DuctPicture p = lay_out(drawing, header, view, none);
+  write_head(p, out);
+  WrittenPixels pixels(out, p.has_tu());
+  lay_out(drawing, header, view, pixels);
+  pixels.flush();
+  write_tail(p, out);
+}
+
+}  // namespace
+
+void write_duct(const DuctPicture& p, TextOut& out) {
+  write_head(p, out);
+  const bool tu = !p.tu.empty();
+  Aside aside;
+  put_each(out, p.pixel_count(), pixel_line_most, threads_for(3 * p.pixel_count()), aside,
+           [&](char* w, std::size_t k) {
+             return pixel_line(w, &p.xyz[3 * k], tu ? &p.tu[2 * k] : nullptr);
+           });
+  write_tail(p, out);
+}
+
+void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
+                TextOut& out) {
+  write_picture(drawing, header, view, out);
+}
+
+void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
+                TextOut& out) {
+  write_picture(drawing, header, image_view(projection), out);
 }
 
 void append_duct(std::string& out, const DuctPicture& picture) {

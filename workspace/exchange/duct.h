@@ -223,5 +223,13 @@ std::string write_duct(const DuctPicture& picture);
 void append_duct(std::string& out, const DuctPicture& picture);
 // The same into `out`, made while it is written (a picture may be hundreds of megabytes).
 void write_duct(const DuctPicture& picture, TextOut& out);
+// write_duct(duct_picture(drawing, header, ...)) into `out`, byte for byte, without the picture
+// being kept: its pixels are written straight from the drawing (a second walk over it, after the
+// first has laid out the counts, limits and instructions written before them). Throws DataError
+// as duct_picture does, before writing anything.
+void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
+                TextOut& out);
+void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
+                TextOut& out);
 
 }  // namespace igds
