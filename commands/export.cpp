@@ -122,14 +122,19 @@ void run_export(Context& ctx, const Choice* option) {
   try {
     switch (code) {
       case svg:
-      case tek:
-      case hpgl: {
+      case tek: {
         const Picture picture = picture_of(ws.image);
-        const std::string bytes = code == svg   ? svg_of(picture)
-                                  : code == tek ? tek_stream(picture, ctx.options().tek)
-                                                : plot_hpgl(picture, ctx.options().plot).hpgl;
+        const std::string bytes =
+            code == svg ? svg_of(picture) : tek_stream(picture, ctx.options().tek);
         write_user_file(ctx.disk(), name, type, bytes);
         size = bytes.size();
+        break;
+      }
+      case hpgl: {
+        // Written while it is made: a plot may be tens of megabytes.
+        const Picture picture = picture_of(ws.image);
+        size = write_user_file(ctx.disk(), name, type,
+                               [&](TextOut& out) { plot_hpgl(picture, ctx.options().plot, out); });
         break;
       }
       case duct:

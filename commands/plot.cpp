@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <functional>
 
 #include <fmt/format.h>
 
@@ -21,12 +22,12 @@ namespace {
 constexpr std::string_view plotter_on = "\x1b.(", plotter_off = "\x1b.)";
 
 // A new PLOTnnnn.HPGL on the disk, the first number not used yet (never replacing a file that
-// appears meanwhile); its name.
-std::string to_new_file(const Disk& disk, std::string_view hpgl) {
+// appears meanwhile), the plot made by make(out) while it is written; its name.
+std::string to_new_file(const Disk& disk, const std::function<void(TextOut& out)>& make) {
   for (int n = 1; n <= 9999; ++n) {
     std::string name = fmt::format("PLOT{:04}", n);
     if (disk.exists(name, "HPGL")) continue;
-    if (write_user_file(disk, name, "HPGL", hpgl, false, "NOTHING PLOTTED")) return name + ".HPGL";
+    if (write_new_user_file(disk, name, "HPGL", make, "NOTHING PLOTTED")) return name + ".HPGL";
   }
   throw Report("NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
 }
@@ -66,22 +67,30 @@ void run_plot(Context& ctx, const Choice* option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   expect_no_more_words(ctx);
-  Plot plot = plot_hpgl(picture_of(ws.image), ctx.options().plot);
+  const Picture picture = picture_of(ws.image);
+  const PlotOptions& options = ctx.options().plot;
   const std::string& plotter = ctx.options().plotter;
   std::string where;
+  PlotStats stats;
   if (plotter.empty()) {
-    where = to_new_file(ctx.disk(), plot.hpgl);
-  } else if (plotter == "tty") {
-    ctx.send_to_terminal(std::string(plotter_on) + plot.hpgl + std::string(plotter_off));
-    where = "PLOTTER";
+    // Written while it is made: a plot may be tens of megabytes.
+    where =
+        to_new_file(ctx.disk(), [&](TextOut& out) { stats = plot_hpgl(picture, options, out); });
   } else {
-    to_path(plotter, plot.hpgl);
-    where = plotter;
+    const Plot plot = plot_hpgl(picture, options);
+    stats = plot.stats;
+    if (plotter == "tty") {
+      ctx.send_to_terminal(std::string(plotter_on) + plot.hpgl + std::string(plotter_off));
+      where = "PLOTTER";
+    } else {
+      to_path(plotter, plot.hpgl);
+      where = plotter;
+    }
   }
   // STATUS[2]: the keyboard of the last PLOT, 1 SELECTRIC, 2 EBCDIC.
   ws.status[1] = option->code;
-  ctx.say(plot_summary(where, plot.stats));
-  if (plot.stats.clipped) ctx.say(plot_clipped_notice);
+  ctx.say(plot_summary(where, stats));
+  if (stats.clipped) ctx.say(plot_clipped_notice);
 }
 
 }  // namespace

@@ -6,8 +6,6 @@
 #include <charconv>
 #include <cmath>
 
-#include "workspace/kernels/large_array.h"
-
 namespace igds {
 
 namespace {
@@ -45,15 +43,24 @@ char* pair(char* out, DevicePoint p) {
 
 }  // namespace
 
+HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute, TextOut& out)
+    : model_(model), absolute_(absolute), out_(&out), start_(out.offset()) {
+  initialize();
+}
+
 HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute)
-    : model_(model), absolute_(absolute) {
+    : model_(model),
+      absolute_(absolute),
+      own_(std::make_unique<StringOut>()),
+      out_(own_.get()),
+      start_(0) {
+  initialize();
+}
+
+void HpglEncoder::initialize() {
   put(fmt::format("IN;SP1;SI{},{};", label_width_cm, label_height_cm));
   // After IN the pen is somewhere near the origin: the first move is absolute.
   at_exact_ = false;
-}
-
-void HpglEncoder::grow(std::size_t bytes) {
-  out_.resize(std::max(2 * out_.size(), size_ + bytes + 4096));
 }
 
 void HpglEncoder::relative_mode(bool on) {
@@ -65,13 +72,7 @@ void HpglEncoder::relative_mode(bool on) {
 void HpglEncoder::coordinates(DevicePoint p) {
   // The commonest bytes of a plot: two integers, written in place.
   if (relative_) p = {p.x - at_.x, p.y - at_.y};
-  size_ = static_cast<std::size_t>(pair(room(24), p) - out_.data());
-}
-
-void HpglEncoder::reserve(std::size_t vectors) {
-  if (out_.size() >= size_ + 6 * vectors) return;
-  reserve_large(out_, size_ + 6 * vectors);
-  out_.resize(out_.capacity());
+  out_->commit(pair(room(24), p));
 }
 
 void HpglEncoder::close_pd() {
@@ -120,20 +121,24 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
     draw(points[reversed ? n - 1 - i : i]);
   if (i == n) return;
   // The rest with the pen down: at most 24 bytes a point, written through locals (a store
-  // through a char pointer would otherwise make every member be read again).
-  char* out = room(24 * (n - i));
+  // through a char pointer would otherwise make every member be read again), as many points at
+  // a time as the output has room for.
   DevicePoint at = at_;
   std::size_t vectors = 0;
   const bool relative = relative_;
-  for (; i < n; ++i) {
-    const DevicePoint p = points[reversed ? n - 1 - i : i];
-    if (at == p) continue;
-    *out++ = ',';
-    out = pair(out, relative ? DevicePoint{p.x - at.x, p.y - at.y} : p);
-    ++vectors;
-    at = p;
+  constexpr std::size_t most = TextOut::max_room / 24;
+  while (i < n) {
+    char* out = room(24 * std::min(n - i, most));
+    for (const std::size_t end = std::min(n, i + most); i < end; ++i) {
+      const DevicePoint p = points[reversed ? n - 1 - i : i];
+      if (at == p) continue;
+      *out++ = ',';
+      out = pair(out, relative ? DevicePoint{p.x - at.x, p.y - at.y} : p);
+      ++vectors;
+      at = p;
+    }
+    out_->commit(out);
   }
-  size_ = static_cast<std::size_t>(out - out_.data());
   stats_.vectors += vectors;
   at_ = at;
 }
@@ -185,7 +190,8 @@ void HpglEncoder::finish() {
   put("PU;SP0;");
   travel_units_ += distance(at_, {0, 0});
   stats_.pen_up_mm = travel_units_ * model_.unit_mm;
-  stats_.bytes = size_;
+  stats_.bytes = static_cast<std::size_t>(out_->offset() - start_);
+  if (own_) text_ = own_->take_text();
 }
 
 }  // namespace igds

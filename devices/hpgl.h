@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -11,6 +13,7 @@
 
 #include "devices/device.h"
 #include "devices/plot.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -35,11 +38,13 @@ inline double label_advance(const PlotterModel& model) {
 
 // A Device that writes HP-GL: pen-up moves and pen-down polylines, relative (PR) by default or
 // absolute (PA), labels with LB, pens (SP) and line types (LT). Counts what it draws as
-// PlotStats (bytes excepted). The pen starts at the origin; finish() puts it away and counts the
-// travel back to the origin.
+// PlotStats. The pen starts at the origin; finish() puts it away and counts the travel back to
+// the origin. The plot goes into a TextOut as it is made (a file being written), or into a string
+// of the encoder's own.
 class HpglEncoder : public Device {
  public:
-  HpglEncoder(const PlotterModel& model, bool absolute);
+  HpglEncoder(const PlotterModel& model, bool absolute, TextOut& out);
+  HpglEncoder(const PlotterModel& model, bool absolute);  // into bytes()
 
   void move(DevicePoint p) override;
   void draw(DevicePoint p) override;
@@ -53,41 +58,28 @@ class HpglEncoder : public Device {
   // draw() to each point of `points` in turn (from the last to the first when `reversed`): the
   // bulk of a plot, without a call per point.
   void draw_run(std::span<const DevicePoint> points, bool reversed);
-  // PU;SP0; at the end of the plot.
+  // PU;SP0; at the end of the plot; the statistics count its bytes.
   void finish();
-  // Room for about `vectors` more vectors, so that a large plot is not copied as it grows.
-  void reserve(std::size_t vectors);
 
-  std::string_view bytes() const { return {out_.data(), size_}; }
-  std::string take_bytes() {  // the plot, without a copy
-    out_.resize(size_);
-    return std::move(out_);
-  }
+  // The whole plot, once finished, of an encoder that writes into a string of its own.
+  const std::string& bytes() const { return text_; }
   const PlotStats& stats() const { return stats_; }
 
  private:
+  void initialize();  // IN;, the first pen and the label size
   void close_pd();
   void coordinates(DevicePoint p);
   void relative_mode(bool on);
-  // Room for `bytes` more at out_[size_]: out_ is kept longer than what it holds.
-  char* room(std::size_t bytes) {
-    if (size_ + bytes > out_.size()) grow(bytes);
-    return out_.data() + size_;
-  }
-  void grow(std::size_t bytes);
-  void put(std::string_view s) {
-    std::copy(s.begin(), s.end(), room(s.size()));
-    size_ += s.size();
-  }
-  void put(char c) {
-    *room(1) = c;
-    ++size_;
-  }
+  char* room(std::size_t bytes) { return out_->room(bytes); }
+  void put(std::string_view s) { out_->put(s); }
+  void put(char c) { out_->put(c); }
 
   const PlotterModel& model_;
   bool absolute_;
-  std::string out_;  // the plot in its first size_ bytes
-  std::size_t size_ = 0;
+  std::unique_ptr<StringOut> own_;  // the string written into when no TextOut is given
+  std::string text_;                // own_'s text, once finished
+  TextOut* out_;
+  std::uint64_t start_;  // where the plot starts in out_
   PlotStats stats_;
   DevicePoint at_{0, 0};     // where the pen is (estimated after a label)
   bool at_exact_ = true;     // false after a label: its end is only estimated

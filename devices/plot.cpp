@@ -53,14 +53,14 @@ PlotLayout plot_layout(const Picture& picture, const PlotOptions& options) {
   return l;
 }
 
-Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options) {
+PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options,
+                      TextOut& out) {
   const PlotterModel& model = hp7475a;
   DevicePoint lim = model.limit(options.paper);
   const Rendering rendering{.point = plot_point_mm / model.unit_mm};
   const Placed placed =
       place(picture.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)}, rendering);
-  HpglEncoder hpgl(model, options.absolute);
-  hpgl.reserve(placed.paths.points.size());
+  HpglEncoder hpgl(model, options.absolute, out);
   // The description first, where the pen starts from the origin; a line that would not fit on
   // the sheet is left out (and said, as clipping).
   bool clipped = placed.clipped;
@@ -113,15 +113,26 @@ Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOpt
     hpgl.text(t.at, t.text);
   }
   hpgl.finish();
-  const PlotStats stats = hpgl.stats();
-  Plot plot{hpgl.take_bytes(), stats};
-  plot.stats.clipped = clipped;
+  PlotStats stats = hpgl.stats();
+  stats.clipped = clipped;
+  return stats;
+}
+
+Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options) {
+  StringOut out;
+  Plot plot;
+  plot.stats = plot_placed(picture, layout, options, out);
+  plot.hpgl = out.take_text();
   return plot;
 }
 
 std::string plot_summary(std::string_view where, const PlotStats& stats) {
   return fmt::format("{}: {} VECTORS, {} PEN LIFTS, PEN-UP TRAVEL {:.0f} MM, {} BYTES", where,
                      stats.vectors, stats.pen_lifts, stats.pen_up_mm, stats.bytes);
+}
+
+PlotStats plot_hpgl(const Picture& picture, const PlotOptions& options, TextOut& out) {
+  return plot_placed(picture, plot_layout(picture, options), options, out);
 }
 
 Plot plot_hpgl(const Picture& picture, const PlotOptions& options) {

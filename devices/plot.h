@@ -9,6 +9,7 @@
 
 #include "devices/render.h"
 #include "workspace/drawing/drawing.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
@@ -52,9 +53,13 @@ struct PlotLayout {
 PlotLayout plot_layout(const Picture& picture, const PlotOptions& options);
 
 // The plot of `picture` placed by `layout`: clipped to the hard-clip limits, in plot order (pen
-// by pen), the caption first as labels.
+// by pen), the caption first as labels; into `out` as it is made (a file being written).
+PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options,
+                      TextOut& out);
 Plot plot_placed(const Picture& picture, const PlotLayout& layout, const PlotOptions& options);
 
+// The plot of `picture` laid out by plot_layout.
+PlotStats plot_hpgl(const Picture& picture, const PlotOptions& options, TextOut& out);
 Plot plot_hpgl(const Picture& picture, const PlotOptions& options);
 
 // What PLOT says after a plot, e.g. `PLOT0001.HPGL: 1440 VECTORS, 12 PEN LIFTS, PEN-UP TRAVEL

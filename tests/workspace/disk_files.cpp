@@ -455,3 +455,19 @@ TEST_CASE("items made on two threads give the text made in order, in a string an
 }
 
 }  // namespace igds
+
+namespace igds {
+
+TEST_CASE("a new file made while it is written never replaces one of that name") {
+  Scratch s;
+  auto text = [](std::string_view words) { return [words](TextOut& out) { out.put(words); }; };
+  CHECK(write_new_user_file(s.disk, "PLOT0001", "HPGL", text("IN;PU;SP0;")) == 10u);
+  // Already there: nothing written, the file as it was, no temporary left.
+  CHECK(write_new_user_file(s.disk, "PLOT0001", "HPGL", text("IN;")) == std::nullopt);
+  std::ifstream in(s.disk.path("PLOT0001", "HPGL"), std::ios::binary);
+  CHECK(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()) ==
+        "IN;PU;SP0;");
+  CHECK(disk::folder_entries(s.dir.path()).size() == 1);
+}
+
+}  // namespace igds

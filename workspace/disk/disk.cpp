@@ -168,6 +168,23 @@ std::vector<DiskFile> Disk::files() const {
   return out;
 }
 
+namespace {
+
+// write_user_file and write_new_user_file.
+std::optional<std::uint64_t> write_made_file(const Disk& disk, std::string_view name,
+                                             std::string_view type,
+                                             const std::function<void(TextOut& out)>& make,
+                                             bool replace, std::string_view kept) {
+  const std::string n = checked(name);
+  try {
+    return disk::write_made(disk.path(n, type), make, replace);
+  } catch (const disk::IoError& e) {
+    throw Report(fmt::format("CANNOT WRITE {} ({}); {}", file_name(n, type), e.reason(), kept));
+  }
+}
+
+}  // namespace
+
 bool write_user_file(const Disk& disk, std::string_view name, std::string_view type,
                      std::string_view bytes, bool replace, std::string_view kept) {
   const std::string n = checked(name);
@@ -181,12 +198,14 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
 std::uint64_t write_user_file(const Disk& disk, std::string_view name, std::string_view type,
                               const std::function<void(TextOut& out)>& make,
                               std::string_view kept) {
-  const std::string n = checked(name);
-  try {
-    return *disk::write_made(disk.path(n, type), make);
-  } catch (const disk::IoError& e) {
-    throw Report(fmt::format("CANNOT WRITE {} ({}); {}", file_name(n, type), e.reason(), kept));
-  }
+  return *write_made_file(disk, name, type, make, true, kept);
+}
+
+std::optional<std::uint64_t> write_new_user_file(const Disk& disk, std::string_view name,
+                                                 std::string_view type,
+                                                 const std::function<void(TextOut& out)>& make,
+                                                 std::string_view kept) {
+  return write_made_file(disk, name, type, make, false, kept);
 }
 
 std::string read_user_file(const Disk& disk, std::string_view name, std::string_view type,

@@ -58,6 +58,12 @@ bool write_user_file(const Disk& disk, std::string_view name, std::string_view t
 std::uint64_t write_user_file(const Disk& disk, std::string_view name, std::string_view type,
                               const std::function<void(TextOut& out)>& make,
                               std::string_view kept = "NO FILE CHANGED");
+// The same for a new file only: nullopt, and nothing changed, when one of that name is there by
+// the time it is written.
+std::optional<std::uint64_t> write_new_user_file(const Disk& disk, std::string_view name,
+                                                 std::string_view type,
+                                                 const std::function<void(TextOut& out)>& make,
+                                                 std::string_view kept = "NO FILE CHANGED");
 
 // A file another program wrote (FIT's NAME.CADADATA, DISPLAY PICTURE's NAME.DUCTPIC): its
 // bytes, read once its size was checked against `max_bytes`. Throws Report FILE NOT FOUND, or
