@@ -8,6 +8,7 @@
 
 #include "workspace/drawing/flatten.h"
 #include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -193,8 +194,13 @@ bool place_side_by_side(const Drawing2& drawing, std::span<const Drawing2::Item>
   const double* base = drawing.points(items[0]).data();
   block.resize(m * count);
   sizes.assign(m, 0);
+  // Rows a row's length apart are asked for some rows ahead, each of its cache lines: the
+  // processor's own prefetching does not follow such strides.
+  constexpr std::size_t ahead = 8, line = 64 / sizeof(double);
   for (std::size_t i = 0; i < count; ++i) {
     const double* row = base + i * stride;
+    if (i + ahead < count)
+      for (std::size_t d = 0; d < m * n; d += line) __builtin_prefetch(row + ahead * stride + d);
     for (std::size_t j = 0; j < m; ++j)
       if (!add_plain(row + j * n, at, clip, block.data() + j * count, sizes[j])) return false;
   }
@@ -277,17 +283,18 @@ void mark_strokes(MarkShape shape, Point2 c, double h, std::vector<std::vector<P
   }
 }
 
-void place_into(const Drawing2& drawing, const Placement& at, const Box& clip,
-                const Rendering& rendering, Sink& sink) {
+// The lines, curves and marks of items [from, to) placed into the sink, in item order.
+void place_lines(const Drawing2& drawing, std::size_t from, std::size_t to, const Placement& at,
+                 const Box& clip, const Rendering& rendering, Sink& sink) {
   std::vector<std::vector<Point2>> lines;
   std::vector<Point2> flat;
   std::vector<DevicePoint> block;
   std::vector<std::size_t> sizes;
   const double tolerance = rendering.tolerance * rendering.point;
-  const auto items = drawing.items();
+  const auto items = drawing.items().first(to);
   // The items side by side not yet placed as a block: until `plain_until`, one by one.
-  std::size_t plain_until = 0;
-  for (std::size_t k = 0; k < items.size(); ++k) {
+  std::size_t plain_until = from;
+  for (std::size_t k = from; k < to; ++k) {
     const auto& item = items[k];
     if (k >= plain_until) {
       const std::size_t m = side_by_side(items.subspan(k), 16);
@@ -329,6 +336,10 @@ void place_into(const Drawing2& drawing, const Placement& at, const Box& clip,
     }
     for (const auto& line : lines) place_line(line, clip, item.style, sink);
   }
+}
+
+// The texts of the drawing placed into the sink (after every line).
+void place_texts(const Drawing2& drawing, const Placement& at, const Box& clip, Sink& sink) {
   for (const auto& item : drawing.items()) {
     if (item.kind != Drawing2::Kind::text) continue;
     const Point2 p = drawing.points(item)[0];
@@ -445,24 +456,82 @@ bool clip_segment(Point2& a, Point2& b, const Box& clip) {
   return true;
 }
 
+namespace {
+
+// The number of points of the polylines of items [0, k) for each k, and the number of threads
+// worth placing them on.
+std::vector<std::size_t> polyline_points(const Drawing2& drawing) {
+  const auto items = drawing.items();
+  std::vector<std::size_t> before(items.size() + 1, 0);
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const auto& item = items[k];
+    before[k + 1] =
+        before[k] +
+        (item.kind == Drawing2::Kind::polyline ? item.count + (item.closed ? 1 : 0) : 0);
+  }
+  return before;
+}
+unsigned placing_threads(std::size_t points) {
+  return std::min(threads_for(2 * points), 2u);
+}
+
+}  // namespace
+
 Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
              const Rendering& rendering) {
-  Placed out;
-  // Room for every polyline point at once: a large drawing's list is not copied as it grows.
-  std::size_t points = 0;
-  for (const auto& item : drawing.items())
-    if (item.kind == Drawing2::Kind::polyline) points += item.count + (item.closed ? 1 : 0);
-  reserve_large(out.paths.points, points);
+  const std::vector<std::size_t> before = polyline_points(drawing);
+  const std::size_t items = drawing.size(), points = before.back();
+  // A large drawing in two parts of about as many points, placed at once on two threads, the
+  // second part's paths then put after the first's.
+  const unsigned parts = placing_threads(points);
+  const std::size_t cut =
+      parts == 2 ? static_cast<std::size_t>(
+                       std::lower_bound(before.begin(), before.end(), points / 2) - before.begin())
+                 : items;
+  Placed out, second;
+  parallel_for(2, parts, [&](std::size_t first, std::size_t last) {
+    for (std::size_t part = first; part < last; ++part) {
+      Placed& to = part == 0 ? out : second;
+      const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
+      // Room for every polyline point at once: a large drawing's list is not copied as it grows
+      // (the first part's for the second's too).
+      reserve_large(to.paths.points, part == 0 ? points : points - before[cut]);
+      ListSink sink(to);
+      place_lines(drawing, from, until, at, clip, rendering, sink);
+      to.clipped = sink.clipped;
+    }
+  });
+  const std::size_t offset = out.paths.points.size();
+  out.paths.points.insert(out.paths.points.end(), second.paths.points.begin(),
+                          second.paths.points.end());
+  for (std::size_t k = 1; k < second.paths.starts.size(); ++k)
+    out.paths.starts.push_back(offset + second.paths.starts[k]);
+  out.styles.insert(out.styles.end(), second.styles.begin(), second.styles.end());
   ListSink sink(out);
-  place_into(drawing, at, clip, rendering, sink);
+  sink.clipped = out.clipped || second.clipped;
+  place_texts(drawing, at, clip, sink);
   out.clipped = sink.clipped;
   return out;
 }
 
 bool render(const Drawing2& drawing, const Placement& at, const Box& clip,
             const Rendering& rendering, Device& device) {
+  if (placing_threads(polyline_points(drawing).back()) > 1) {
+    // Placed on two threads first, then drawn as the sink below draws.
+    const Placed placed = place(drawing, at, clip, rendering);
+    for (std::size_t k = 0; k < placed.paths.size(); ++k) {
+      device.style(placed.styles[k]);
+      device.polyline(placed.paths[k]);
+    }
+    for (const auto& t : placed.texts) {
+      device.style(t.style);
+      device.text(t.at, t.text);
+    }
+    return placed.clipped;
+  }
   DeviceSink sink(device);
-  place_into(drawing, at, clip, rendering, sink);
+  place_lines(drawing, 0, drawing.size(), at, clip, rendering, sink);
+  place_texts(drawing, at, clip, sink);
   return sink.clipped;
 }
 

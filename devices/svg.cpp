@@ -29,16 +29,33 @@ void append_point(std::string& out, bool blank, int x, int y) {
 
 }  // namespace
 
+SvgWriter::SvgWriter() {
+  using namespace tek_screen;
+  body_ = fmt::format(
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+      "viewBox=\"0 0 {0} {1}\">\n"
+      "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
+      "<g fill=\"none\" stroke=\"black\" stroke-width=\"1\" stroke-linejoin=\"round\" "
+      "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n",
+      width, height, line_height - 4);
+  head_ = body_.size();
+}
+
+void SvgWriter::start_polyline() {
+  body_ += "<polyline points=\"";
+  append_point(body_, false, at_.x, flip(at_.y));
+  drawing_ = true;
+}
+
+// The attributes in force are those of the whole polyline: style() closes it before they change.
 void SvgWriter::close_polyline() {
   if (drawing_) {
-    body_ += "<polyline points=\"";
-    body_ += points_;
     body_ += '"';
     body_ += attributes_;
     body_ += "/>\n";
   }
   drawing_ = false;
-  points_.clear();
 }
 
 void SvgWriter::move(DevicePoint p) {
@@ -54,10 +71,34 @@ void SvgWriter::draw(DevicePoint p) {
     return;
   }
   if (at_ == p) return;
-  if (!drawing_) append_point(points_, false, at_.x, flip(at_.y));
-  append_point(points_, true, p.x, flip(p.y));
-  drawing_ = true;
+  if (!drawing_) start_polyline();
+  append_point(body_, true, p.x, flip(p.y));
   at_ = p;
+}
+
+void SvgWriter::polyline(std::span<const DevicePoint> points) {
+  if (points.empty()) return;
+  move(points.front());
+  std::size_t i = 1;
+  while (i < points.size() && points[i] == at_) ++i;
+  if (i == points.size()) return;
+  if (!drawing_) start_polyline();
+  // At most 24 bytes a point, written in place.
+  const std::size_t size = body_.size();
+  body_.resize(size + 24 * (points.size() - i));
+  char* out = body_.data() + size;
+  DevicePoint at = at_;
+  for (; i < points.size(); ++i) {
+    const DevicePoint p = points[i];
+    if (p == at) continue;
+    *out++ = ' ';
+    out = std::to_chars(out, out + 11, p.x).ptr;
+    *out++ = ',';
+    out = std::to_chars(out, out + 11, flip(p.y)).ptr;
+    at = p;
+  }
+  body_.resize(static_cast<std::size_t>(out - body_.data()));
+  at_ = at;
 }
 
 void SvgWriter::text(DevicePoint p, std::string_view line) {
@@ -107,22 +148,14 @@ void SvgWriter::style(const Style& style) {
 
 void SvgWriter::page() {
   close_polyline();
-  body_.clear();
+  body_.resize(head_);
   at_known_ = false;
 }
 
 std::string SvgWriter::document() {
   close_polyline();
-  using namespace tek_screen;
-  return fmt::format(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
-      "viewBox=\"0 0 {0} {1}\">\n"
-      "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
-      "<g fill=\"none\" stroke=\"black\" stroke-width=\"1\" stroke-linejoin=\"round\" "
-      "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n"
-      "{3}</g>\n</svg>\n",
-      width, height, line_height - 4, body_);
+  body_ += "</g>\n</svg>\n";
+  return std::move(body_);
 }
 
 std::string svg_of(const Picture& picture) {

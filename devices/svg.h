@@ -1,6 +1,7 @@
 // EXPORT SVG: the Tek screen of a DISPLAY as a standalone SVG document.
 #pragma once
 
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -13,21 +14,25 @@ namespace igds {
 // point (x, y) is the SVG point (x, 779 - y). Polylines become <polyline>, text <text>.
 class SvgWriter : public Device {
  public:
+  SvgWriter();
   void move(DevicePoint p) override;
   void draw(DevicePoint p) override;
+  // The points written straight into the element (the bulk of a document).
+  void polyline(std::span<const DevicePoint> points) override;
   void text(DevicePoint p, std::string_view line) override;
   void page() override;
   // Pens as colours (1 black, 2 red, 3 green, 4 blue, 5 magenta, 6 cyan, ...), dashes as dash
   // arrays, weight 2 as a wider stroke; attributes only where they differ from the default.
   void style(const Style& style) override;
-  // The whole document.
+  // The whole document; the writer is done with.
   std::string document();
 
  private:
   void close_polyline();
+  void start_polyline();  // its element, up to its first point (at_)
 
-  std::string body_;
-  std::string points_;  // the polyline being drawn
+  std::string body_;  // the document's head, then the elements so far
+  std::size_t head_;  // the head's length
   DevicePoint at_;
   bool at_known_ = false;
   bool drawing_ = false;

@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "devices/plot.h"
+#include "devices/svg.h"
 #include "devices/terminal.h"
 #include "tests/devices/support.h"
 #include "tests/support/golden.h"
@@ -61,6 +62,50 @@ TEST_CASE("a golden difference shows the first record that differs, expected and
   CHECK(tek.find("actual:   \\x1Dabd") != std::string::npos);
   CHECK(first_difference("IN;SP1;PD1,2;", "IN;SP1;PD1,3;").find("expected: PD1,2;") !=
         std::string::npos);
+}
+
+}  // namespace igds::test::devices
+
+namespace igds::test::devices {
+
+namespace {
+
+// An SvgWriter given its polylines as moves and draws, one point at a time.
+struct PointByPoint : Device {
+  SvgWriter& svg;
+  explicit PointByPoint(SvgWriter& s) : svg(s) {}
+  void move(DevicePoint p) override { svg.move(p); }
+  void draw(DevicePoint p) override { svg.draw(p); }
+  void text(DevicePoint p, std::string_view line) override { svg.text(p, line); }
+  void page() override { svg.page(); }
+  void style(const Style& s) override { svg.style(s); }
+};
+
+}  // namespace
+
+TEST_CASE("SVG: a polyline written at once is the element its moves and draws make") {
+  const std::vector<DevicePath> paths{{{1, 2}, {1, 2}, {30, 40}, {30, 40}, {50, 7}},
+                                      {{50, 7}, {60, 8}},  // goes on where the last ended
+                                      {{9, 9}, {9, 9}},    // a point: nothing drawn
+                                      {{-5, 1000}, {1023, 0}, {-2147483647, 2147483647}}};
+  const std::vector<Style> styles{{}, {}, {2}, {3, Dash::dashed, 2}};
+  SvgWriter at_once, by_point;
+  PointByPoint points(by_point);
+  for (int page = 0; page < 2; ++page) {
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      at_once.style(styles[k]);
+      at_once.polyline(paths[k]);
+      points.style(styles[k]);
+      points.Device::polyline(paths[k]);
+    }
+    at_once.text({3, 4}, "A<B");
+    by_point.text({3, 4}, "A<B");
+    if (page == 0) at_once.page(), by_point.page();
+  }
+  const std::string document = at_once.document();
+  CHECK(document == by_point.document());
+  CHECK(document.find("<polyline points=\"1,777 30,739 50,772 60,771\"/>") != std::string::npos);
+  CHECK(document.find("-2147483647,") != std::string::npos);
 }
 
 }  // namespace igds::test::devices

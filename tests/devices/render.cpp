@@ -179,3 +179,88 @@ TEST_CASE("place: the stringers of a shared grid, placed side by side, are the p
 }
 
 }  // namespace igds::test::devices
+
+namespace igds::test::devices {
+
+namespace {
+
+// Every polyline a device is given, as it is given, with its style.
+struct PolylineRecorder : Device {
+  std::vector<DevicePath> paths;
+  std::vector<Style> styles;
+  std::vector<std::pair<DevicePoint, std::string>> texts;
+  Style current;
+  void style(const Style& s) override { current = s; }
+  void move(DevicePoint) override {}
+  void draw(DevicePoint) override {}
+  void polyline(std::span<const DevicePoint> points) override {
+    paths.emplace_back(points.begin(), points.end());
+    styles.push_back(current);
+  }
+  void text(DevicePoint p, std::string_view line) override { texts.emplace_back(p, line); }
+  void page() override {}
+};
+
+}  // namespace
+
+TEST_CASE("place: a large drawing placed in two parts at once is the drawing placed in order") {
+  // A 420 x 400 grid shared as a surface image (curves, then stringers sixteen at a time), with a
+  // point that is not finite and one outside the clip box in the second half, then a curve, marks
+  // and texts: more points than one thread places alone. The same items placed one by one, each
+  // a drawing of its own, give the paths in order; render() draws them.
+  const std::size_t planes = 420, rows = 400;
+  auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
+  for (std::size_t c = 0; c < planes; ++c)
+    for (std::size_t r = 0; r < rows; ++r) {
+      (*grid)[2 * (c * rows + r)] = 0.5 * r + 0.1 * c + 0.3 * std::sin(double(c * r));
+      (*grid)[2 * (c * rows + r) + 1] = 0.4 * c + 0.05 * r;
+    }
+  (*grid)[2 * (300 * rows + 20)] = std::nan("");
+  (*grid)[2 * (350 * rows + 19) + 1] = 1e4;
+  Drawing2 d;
+  const auto pool = d.share(grid, grid->data(), grid->size());
+  for (std::size_t c = 0; c < planes; ++c)
+    d.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
+  for (std::size_t r = 0; r < rows; ++r)
+    d.add_polyline(pool, 2 * r, planes, 2 * rows, Style{1 + int(r % 3)},
+                   {Role::stringer, int(r + 1)});
+  const double controls[] = {10, 10, 60, 120, 110, 10};
+  d.add_curve(2, Point2View(controls, 3), {}, Style{2});
+  d.add_mark({40, 40}, MarkShape::cross, 3, Style{3});
+  d.add_text({50, 50}, "INSIDE", 1);
+  d.add_text({5000, 50}, "OUTSIDE", 1);
+  const Box clip{0, 0, 400, 300};
+  const Placement at{1.5, 5, 5};
+  const Placed placed = place(d, at, clip, {});
+  std::vector<DevicePath> one_by_one;
+  std::vector<Style> styles;
+  for (const auto& item : d.items()) {
+    Drawing2 alone;
+    const auto own = alone.share(grid, grid->data(), grid->size());
+    if (item.pool != 0)
+      alone.add_polyline(own, item.first, item.count, item.stride, item.style, item.id);
+    else if (item.kind == Drawing2::Kind::curve)
+      alone.add_curve(item.degree, d.points(item), {}, item.style);
+    else if (item.kind == Drawing2::Kind::mark)
+      alone.add_mark(d.points(item)[0], item.shape, item.size, item.style);
+    const Placed p = place(alone, at, clip, {});
+    for (std::size_t k = 0; k < p.paths.size(); ++k) {
+      one_by_one.emplace_back(p.paths[k].begin(), p.paths[k].end());
+      styles.push_back(p.styles[k]);
+    }
+  }
+  CHECK(placed.clipped);
+  CHECK(paths(placed) == one_by_one);
+  CHECK(placed.styles == styles);
+  CHECK(placed.paths.size() > planes + rows);
+  REQUIRE(placed.texts.size() == 1);
+  CHECK(placed.texts[0].text == "INSIDE");
+  PolylineRecorder r;
+  CHECK(render(d, at, clip, {}, r));
+  CHECK(r.paths == one_by_one);
+  CHECK(r.styles == styles);
+  REQUIRE(r.texts.size() == 1);
+  CHECK(placed.texts[0].at == r.texts[0].first);
+}
+
+}  // namespace igds::test::devices
