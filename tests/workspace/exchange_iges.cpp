@@ -236,6 +236,38 @@ TEST_CASE("IGES: one surface with inner knots of multiplicity 3") {
   for (std::size_t k = 0; k < net.xyz.size(); ++k) CHECK(real(p[41 + 130 + k]) == net.xyz[k]);
 }
 
+TEST_CASE("IGES: a net of many rows, its numbers made ahead on two threads, in both forms") {
+  // 88 net rows by 58 columns: the rows' texts are made some rows at a time (on two threads
+  // when there are many), each number as Records::real writes it, every patch from its rows.
+  const TestSurface t = test_surface(30, 20, 0, 0);
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  REQUIRE(net.rows == 88);
+  auto text = [](double v) {
+    char buffer[32];
+    return std::string(buffer, format_real(buffer, v));
+  };
+  const std::vector<Entity> patches = read_iges(write_iges(t.input, t.surface.patches, header));
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < 29; ++i)
+    for (std::size_t j = 0; j < 19; ++j) {
+      const auto& p = patches[i * 19 + j].parameters;
+      REQUIRE(p.size() == 1 + 4 + 5 + 16 + 16 + 48 + 4);
+      for (std::size_t b = 0; b < 4; ++b)
+        for (std::size_t a = 0; a < 4; ++a)
+          for (std::size_t c = 0; c < 3; ++c, ++checked)
+            CHECK(p[42 + 3 * (4 * b + a) + c] ==
+                  text(net.xyz[3 * ((3 * i + b) * net.cols + 3 * j + a) + c]));
+    }
+  CHECK(checked == 29 * 19 * 48);
+  const std::vector<Entity> one =
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::one));
+  const auto& p = one[0].parameters;
+  const std::size_t controls = net.rows * net.cols, knots_u = 58 + 4, knots_v = 88 + 4;
+  REQUIRE(p.size() == 10 + knots_u + knots_v + controls + 3 * controls + 4);
+  for (std::size_t k = 0; k < net.xyz.size(); ++k)
+    CHECK(p[10 + knots_u + knots_v + controls + k] == text(net.xyz[k]));
+}
+
 TEST_CASE("IGES: a curve that is a point is left out and the directory says so") {
   TestSurface t = test_surface(4, 5, 0, 0);
   for (int j = 0; j < 5; ++j) std::fill_n(t.inppn.data() + 3 * j, 3, 1.0);

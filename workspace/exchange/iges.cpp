@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <string_view>
 #include <vector>
 
@@ -10,6 +11,8 @@
 
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -173,9 +176,45 @@ void write_curve(Records& p, const CubicBspline& c) {
   p.token("0.", 2, ';');
 }
 
+// The texts of the net's numbers as Records::real writes them, a window of the net's rows at a
+// time, made on two threads: the bulk of a file, and a control shared by neighbouring patches is
+// formatted once.
+class NetTexts {
+ public:
+  explicit NetTexts(const BezierNet& net) : net_(net) {}
+  // Makes rows [first, last] ready (and some after them).
+  void rows(std::size_t first, std::size_t last) {
+    if (first >= lo_ && last < hi_) return;
+    lo_ = first;
+    hi_ = std::min(net_.rows, std::max(last + 1, first + window));
+    const std::size_t n = (hi_ - lo_) * net_.cols * 3;
+    text_.resize(n * slot);
+    length_.resize(n);
+    const double* v = &net_.xyz[3 * lo_ * net_.cols];
+    const unsigned threads = n >= 4096 ? std::min(2u, threads_for(std::size_t{1} << 20)) : 1;
+    parallel_for(n, threads, [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = from; k < to; ++k)
+        length_[k] = static_cast<std::uint8_t>(format_real(&text_[k * slot], v[k]));
+    });
+  }
+  // Number `k` (3 per control, x y z) of row `row`, made ready by rows().
+  std::string_view at(std::size_t row, std::size_t k) const {
+    const std::size_t i = (row - lo_) * net_.cols * 3 + k;
+    return {&text_[i * slot], length_[i]};
+  }
+
+ private:
+  static constexpr std::size_t slot = 32;    // format_real's most
+  static constexpr std::size_t window = 25;  // rows: eight rows of patches
+  const BezierNet& net_;
+  std::size_t lo_ = 0, hi_ = 0;
+  std::vector<char> text_;
+  std::vector<std::uint8_t> length_;
+};
+
 // Entity 128 of the net's rows [row0, row0 + rows) and columns [col0, col0 + cols): the whole
-// surface, or one patch, on the parameters [u0, u1] x [v0, v1].
-void write_surface(Records& p, const BezierNet& net, std::size_t row0, std::size_t rows,
+// surface, or one patch, on the parameters [u0, u1] x [v0, v1]; the net's numbers from `texts`.
+void write_surface(Records& p, NetTexts& texts, std::size_t row0, std::size_t rows,
                    std::size_t col0, std::size_t cols) {
   const std::size_t u0 = col0 / 3, u1 = u0 + (cols - 1) / 3, v0 = row0 / 3,
                     v1 = v0 + (rows - 1) / 3;
@@ -194,8 +233,8 @@ void write_surface(Records& p, const BezierNet& net, std::size_t row0, std::size
   for (std::size_t k = 0; k < rows * cols; ++k) p.token("1.", 2, ',');
   // Controls with the first index (u) varying fastest: along the net's rows.
   for (std::size_t r = row0; r < row0 + rows; ++r) {
-    const double* at = &net.xyz[3 * (r * net.cols + col0)];
-    for (std::size_t k = 0; k < 3 * cols; ++k) p.real(at[k]);
+    texts.rows(r, std::min(r + 3, row0 + rows - 1));
+    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.token(texts.at(r, k));
   }
   p.real(double(u0));
   p.real(double(u1));
@@ -284,13 +323,14 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
     const std::size_t lines = p.finish();
     list.push_back({type, p.first(), lines, label, int(subscript)});
   };
+  NetTexts texts(net);
   if (form == SurfaceForm::one) {
-    entity(128, "SURFACE", 0, [&] { write_surface(p, net, 0, net.rows, 0, net.cols); });
+    entity(128, "SURFACE", 0, [&] { write_surface(p, texts, 0, net.rows, 0, net.cols); });
   } else {
     for (std::size_t i = 0; i + 1 < nc; ++i)
       for (std::size_t j = 0; j + 1 < ns; ++j)
         entity(128, "PATCH", i * (ns - 1) + j + 1,
-               [&] { write_surface(p, net, 3 * i, 4, 3 * j, 4); });
+               [&] { write_surface(p, texts, 3 * i, 4, 3 * j, 4); });
   }
   for (const auto& c : curves) entity(126, "CURVE", c.first, [&] { write_curve(p, c.second); });
   for (const auto& c : stringers)
