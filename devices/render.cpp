@@ -471,6 +471,7 @@ std::vector<std::size_t> polyline_points(const Drawing2& drawing) {
   }
   return before;
 }
+
 unsigned placing_threads(std::size_t points) {
   return std::min(threads_for(2 * points), 2u);
 }
