@@ -49,21 +49,16 @@ void add_polyline(Drawing2& drawing, const std::vector<Point2>& line, Identity i
   drawing.add_polyline(Point2View(xy.data(), line.size()), {}, id);
 }
 
-// Adds `line` to the drawing (the devices break it wherever a point is not finite); with a
-// ZOOM window, only its pieces inside the window, one polyline each.
+// Adds the pieces of `line` (a vector or a view of points) inside a ZOOM window to the drawing,
+// one polyline each.
 template <class Line>
-void add_clipped(Drawing2& drawing, const Line& line, Identity id, const Box* window) {
+void add_clipped(Drawing2& drawing, const Line& line, Identity id, const Box& w) {
   std::vector<Point2> piece;
-  if (!window) {
-    piece.assign(line.begin(), line.end());
-    return add_polyline(drawing, piece, id);
-  }
   auto flush = [&] {
     if (piece.size() >= 2) add_polyline(drawing, piece, id);
     piece.clear();
   };
   // Where a point lies against the window: 0 inside, else a bit for each side it is beyond.
-  const Box& w = *window;
   auto side = [&w](Point2 p) {
     return (p.x < w.x0 ? 1 : p.x > w.x1 ? 2 : 0) | (p.y < w.y0 ? 4 : p.y > w.y1 ? 8 : 0);
   };
@@ -89,9 +84,14 @@ void add_clipped(Drawing2& drawing, const Line& line, Identity id, const Box* wi
   flush();
 }
 
+// Adds `line` to the drawing (the devices break it wherever a point is not finite); with a
+// ZOOM window, only its pieces inside the window.
 void add_line(Drawing2& drawing, const std::vector<Point2>& line, Identity id,
               const Box* window = nullptr) {
-  add_clipped(drawing, line, id, window);
+  if (window)
+    add_clipped(drawing, line, id, *window);
+  else
+    add_polyline(drawing, line, id);
 }
 
 // The border of the grid, once around and closed: curve 1, the last stringer, the last curve
@@ -451,10 +451,10 @@ Picture picture_of(std::shared_ptr<const Image> image) {
     // Each curve and stringer read in place (a view of the image's points), cut to the window.
     for (std::size_t c = 0; c < g.planes; ++c)
       add_clipped(d, Point2View(g.data + 2 * c * g.rows, g.rows),
-                  {Role::curve, static_cast<int>(c + 1)}, window);
+                  {Role::curve, static_cast<int>(c + 1)}, *window);
     for (std::size_t r = 0; r < g.rows; ++r)
       add_clipped(d, Point2View(g.data + 2 * r, g.planes, 2 * g.rows),
-                  {Role::stringer, static_cast<int>(r + 1)}, window);
+                  {Role::stringer, static_cast<int>(r + 1)}, *window);
     return pic;
   }
   // The curves and stringers read the image's own points: no copy of a large grid.

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 namespace igds {
@@ -14,50 +13,10 @@ double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
 
-// An integer of at most 11 characters at `out`; returns its end. The small values of relative
-// moves, the commonest numbers of a plot, digit by digit without a library call.
-char* integer(char* out, int v) {
-  unsigned u = static_cast<unsigned>(v);
-  if (v < 0) {
-    *out++ = '-';
-    u = 0u - u;
-  }
-  if (u < 10) {
-    *out++ = static_cast<char>('0' + u);
-    return out;
-  }
-  if (u < 100) {
-    out[0] = static_cast<char>('0' + u / 10);
-    out[1] = static_cast<char>('0' + u % 10);
-    return out + 2;
-  }
-  return std::to_chars(out, out + 10, u).ptr;
-}
-
-// The coordinates of a vector at `out`, "x,y" (at most 23 characters); returns their end.
-char* pair(char* out, DevicePoint p) {
-  out = integer(out, p.x);
-  *out++ = ',';
-  return integer(out, p.y);
-}
-
 }  // namespace
 
 HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute, TextOut& out)
     : model_(model), absolute_(absolute), out_(&out), start_(out.offset()) {
-  initialize();
-}
-
-HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute)
-    : model_(model),
-      absolute_(absolute),
-      own_(std::make_unique<StringOut>()),
-      out_(own_.get()),
-      start_(0) {
-  initialize();
-}
-
-void HpglEncoder::initialize() {
   put(fmt::format("IN;SP1;SI{},{};", label_width_cm, label_height_cm));
   // After IN the pen is somewhere near the origin: the first move is absolute.
   at_exact_ = false;
@@ -72,7 +31,7 @@ void HpglEncoder::relative_mode(bool on) {
 void HpglEncoder::coordinates(DevicePoint p) {
   // The commonest bytes of a plot: two integers, written in place.
   if (relative_) p = {p.x - at_.x, p.y - at_.y};
-  out_->commit(pair(room(24), p));
+  out_->commit(put_pair(room(24), p.x, p.y));
 }
 
 void HpglEncoder::close_pd() {
@@ -133,7 +92,7 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
       const DevicePoint p = points[reversed ? n - 1 - i : i];
       if (at == p) continue;
       *out++ = ',';
-      out = pair(out, relative ? DevicePoint{p.x - at.x, p.y - at.y} : p);
+      out = relative ? put_pair(out, p.x - at.x, p.y - at.y) : put_pair(out, p.x, p.y);
       ++vectors;
       at = p;
     }
@@ -191,7 +150,6 @@ void HpglEncoder::finish() {
   travel_units_ += distance(at_, {0, 0});
   stats_.pen_up_mm = travel_units_ * model_.unit_mm;
   stats_.bytes = static_cast<std::size_t>(out_->offset() - start_);
-  if (own_) text_ = own_->take_text();
 }
 
 }  // namespace igds

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -39,12 +38,10 @@ inline double label_advance(const PlotterModel& model) {
 // A Device that writes HP-GL: pen-up moves and pen-down polylines, relative (PR) by default or
 // absolute (PA), labels with LB, pens (SP) and line types (LT). Counts what it draws as
 // PlotStats. The pen starts at the origin; finish() puts it away and counts the travel back to
-// the origin. The plot goes into a TextOut as it is made (a file being written), or into a string
-// of the encoder's own.
+// the origin. The plot goes into `out` as it is made (a file being written, or a StringOut).
 class HpglEncoder : public Device {
  public:
   HpglEncoder(const PlotterModel& model, bool absolute, TextOut& out);
-  HpglEncoder(const PlotterModel& model, bool absolute);  // into bytes()
 
   void move(DevicePoint p) override;
   void draw(DevicePoint p) override;
@@ -60,13 +57,9 @@ class HpglEncoder : public Device {
   void draw_run(std::span<const DevicePoint> points, bool reversed);
   // PU;SP0; at the end of the plot; the statistics count its bytes.
   void finish();
-
-  // The whole plot, once finished, of an encoder that writes into a string of its own.
-  const std::string& bytes() const { return text_; }
   const PlotStats& stats() const { return stats_; }
 
  private:
-  void initialize();  // IN;, the first pen and the label size
   void close_pd();
   void coordinates(DevicePoint p);
   void relative_mode(bool on);
@@ -76,8 +69,6 @@ class HpglEncoder : public Device {
 
   const PlotterModel& model_;
   bool absolute_;
-  std::unique_ptr<StringOut> own_;  // the string written into when no TextOut is given
-  std::string text_;                // own_'s text, once finished
   TextOut* out_;
   std::uint64_t start_;  // where the plot starts in out_
   PlotStats stats_;

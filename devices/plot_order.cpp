@@ -344,12 +344,6 @@ double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, Dev
   return pen_up_travel(lines, from, to);
 }
 
-double pen_up_travel(const PathList& paths, DevicePoint from, DevicePoint to) {
-  std::vector<Line> lines;
-  for (std::size_t k = 0; k < paths.size(); ++k) lines.push_back(paths[k]);
-  return pen_up_travel(lines, from, to);
-}
-
 double pen_up_travel(std::span<const Line> lines, DevicePoint from, DevicePoint to) {
   double travel = 0;
   DevicePoint at = from;

@@ -36,7 +36,6 @@ struct PlotOrder {
 
 // Pen-up travel, in plotter units, of drawing `paths` in this order from `from`, then to `to`.
 double pen_up_travel(const std::vector<DevicePath>& paths, DevicePoint from, DevicePoint to);
-double pen_up_travel(const PathList& paths, DevicePoint from, DevicePoint to);
 double pen_up_travel(std::span<const Line> lines, DevicePoint from, DevicePoint to);
 double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, DevicePoint from,
                      DevicePoint to);

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <charconv>
 
 #include "devices/layout.h"
 
@@ -15,16 +14,16 @@ int flip(int y) {
   return tek_screen::height - 1 - y;
 }
 
-// " x,y" (or "x,y" without the blank) appended by std::to_chars: a polyline's points are most of
-// the document, and fmt with a runtime format string costs several times the digits.
-void append_point(std::string& out, bool blank, int x, int y) {
-  char buffer[32];  // a blank, two ints of at most 11 characters, a comma
-  buffer[0] = ' ';
-  char* p = buffer + (blank ? 1 : 0);
-  p = std::to_chars(p, p + 11, x).ptr;
-  *p++ = ',';
-  p = std::to_chars(p, p + 11, y).ptr;
-  out.append(buffer, static_cast<std::size_t>(p - buffer));
+// " x,y" (or "x,y" without the blank) of the 4013 point p: a polyline's points are most of the
+// document.
+char* put_point(char* out, bool blank, DevicePoint p) {
+  if (blank) *out++ = ' ';
+  return put_pair(out, p.x, flip(p.y));
+}
+
+void append_point(std::string& out, bool blank, DevicePoint p) {
+  char buffer[32];
+  out.append(buffer, put_point(buffer, blank, p));
 }
 
 }  // namespace
@@ -44,7 +43,7 @@ SvgWriter::SvgWriter() {
 
 void SvgWriter::start_polyline() {
   body_ += "<polyline points=\"";
-  append_point(body_, false, at_.x, flip(at_.y));
+  append_point(body_, false, at_);
   drawing_ = true;
 }
 
@@ -72,7 +71,7 @@ void SvgWriter::draw(DevicePoint p) {
   }
   if (at_ == p) return;
   if (!drawing_) start_polyline();
-  append_point(body_, true, p.x, flip(p.y));
+  append_point(body_, true, p);
   at_ = p;
 }
 
@@ -91,10 +90,7 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   for (; i < points.size(); ++i) {
     const DevicePoint p = points[i];
     if (p == at) continue;
-    *out++ = ' ';
-    out = std::to_chars(out, out + 11, p.x).ptr;
-    *out++ = ',';
-    out = std::to_chars(out, out + 11, flip(p.y)).ptr;
+    out = put_point(out, true, p);
     at = p;
   }
   body_.resize(static_cast<std::size_t>(out - body_.data()));

@@ -128,7 +128,8 @@ IGDS_BENCH("devices") {
   igds::DevicePoint lim = igds::hp7475a.limit(igds::Paper::a4);
   igds::Placed placed = igds::place(pic.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)},
                                     {.point = igds::plot_point_mm / igds::hp7475a.unit_mm});
-  igds::HpglEncoder naive(igds::hp7475a, false);
+  igds::StringOut naive_plot;
+  igds::HpglEncoder naive(igds::hp7475a, false, naive_plot);
   igds::DevicePoint t = layout.text;
   for (const auto& line : pic.caption) {
     naive.text(t, line);
@@ -171,22 +172,20 @@ IGDS_BENCH("plot_order") {
     const igds::Placed styled =
         igds::place(pic.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)},
                     {.point = igds::plot_point_mm / igds::hp7475a.unit_mm});
-    struct {
-      std::vector<igds::DevicePath> paths;
-    } placed;
-    for (std::size_t k = 0; k < styled.paths.size(); ++k)
-      placed.paths.emplace_back(styled.paths[k].begin(), styled.paths[k].end());
+    std::vector<igds::DevicePath> paths;
+    for (std::size_t j = 0; j < styled.paths.size(); ++j)
+      paths.emplace_back(styled.paths[j].begin(), styled.paths[j].end());
     pic = {};
-    for (const auto& p : placed.paths) segments[k] += p.size() - 1;
+    for (const auto& p : paths) segments[k] += p.size() - 1;
     // A fresh output each time, as PLOT has.
     igds::PathList ordered;
     ms[k] = 1e3 * igds::bench::best_seconds(3, [&] {
               ordered = {};
-              igds::plot_order(placed.paths, {0, 0}, ordered);
+              igds::plot_order(paths, {0, 0}, ordered);
             });
     std::vector<igds::DevicePath> reference;
     double ref = 1e3 * igds::bench::best_seconds(1, [&] {
-                   reference = igds::test::reference::plot_order(placed.paths, {0, 0});
+                   reference = igds::test::reference::plot_order(paths, {0, 0});
                  });
     bool same = reference.size() == ordered.size();
     for (std::size_t i = 0; same && i < ordered.size(); ++i)

@@ -88,20 +88,26 @@ class QuietContext final : public igds::Context {
   std::vector<std::string> pending_;
 };
 
+// A workspace holding the input grid and its surface, interpolated with `density` curves and
+// stringers between the input ones.
+igds::Workspace workspace_of(const Input& in, int density, igds::Surface surface) {
+  igds::Workspace ws;
+  ws.nocur = in.nocur;
+  ws.nostr = in.nostr;
+  ws.intcu = ws.intst = density;
+  ws.inppn = in.inppn;
+  ws.inptg = in.inptg;
+  ws.patches = std::move(surface.patches);
+  ws.intpn = std::move(surface.intpn);
+  return ws;
+}
+
 // The commands on the surface, through the disk (files written crash-safely, fsync'd).
 void bench_commands(const Input& in, const igds::Surface& surface) {
   char scratch[] = "/tmp/igds-bench-exchange-XXXXXX";
   if (!mkdtemp(scratch)) return;
   const std::filesystem::path dir = scratch;
-  igds::Workspace ws;
-  ws.nocur = in.nocur;
-  ws.nostr = in.nostr;
-  ws.intcu = ws.intst = 1;
-  ws.inppn = in.inppn;
-  ws.inptg = in.inptg;
-  ws.patches = surface.patches;
-  ws.intpn = surface.intpn;
-  QuietContext ctx(dir, std::move(ws));
+  QuietContext ctx(dir, workspace_of(in, 1, surface));
   const double duct =
       igds::bench::best_seconds(3, [&] { ctx.run(igds::export_command, "DUCT", {"GRID"}); });
   report("command_export_duct_500x500_int1", duct,
@@ -134,15 +140,8 @@ double median_seconds(int repeats, F&& f) {
 // command, files written crash-safely into a scratch disk and fsync'd.
 IGDS_BENCH("exchange_4m") {
   const Input in = wavy(500, 500);
-  igds::Workspace ws;
-  ws.nocur = in.nocur;
-  ws.nostr = in.nostr;
-  ws.intcu = ws.intst = 3;
-  ws.inppn = in.inppn;
-  ws.inptg = in.inptg;
-  igds::Surface surface = igds::interpolate({ws.nocur, ws.nostr, 3, 3, &ws.inppn, &ws.inptg});
-  ws.patches = std::move(surface.patches);
-  ws.intpn = std::move(surface.intpn);
+  igds::Workspace ws =
+      workspace_of(in, 3, igds::interpolate({in.nocur, in.nostr, 3, 3, &in.inppn, &in.inptg}));
   char scratch[] = "/tmp/igds-bench-exchange-XXXXXX";
   if (!mkdtemp(scratch)) return;
   const std::filesystem::path dir = scratch;

@@ -54,7 +54,8 @@ TEST_CASE("paper_named: A4 A3 LETTER B in any case") {
 }
 
 TEST_CASE("HpglEncoder: relative polylines, absolute after IN and after a label") {
-  HpglEncoder h(hp7475a, false);
+  StringOut out;
+  HpglEncoder h(hp7475a, false, out);
   h.move({1000, 2000});
   h.draw({1010, 2000});
   h.draw({1010, 2005});
@@ -67,13 +68,14 @@ TEST_CASE("HpglEncoder: relative polylines, absolute after IN and after a label"
   h.move({600, 600});
   h.draw({601, 600});
   h.finish();
-  CHECK(h.bytes() ==
+  const std::string bytes = out.take_text();
+  CHECK(bytes ==
         "IN;SP1;SI0.2,0.3;PU1000,2000;PR;PD10,0,0,5,-10,-5;PU2000,0;PD0,-1000;"
         "PA;PU500,500;LBSURFACE\x03PU600,600;PR;PD1,0;PU;SP0;");
   const PlotStats& s = h.stats();
   CHECK(s.vectors == 5);
   CHECK(s.pen_lifts == 4);
-  CHECK(s.bytes == h.bytes().size());
+  CHECK(s.bytes == bytes.size());
   // Travel: from the origin, the two moves, to the label, from its estimated end, back.
   double label_end = 500 + std::lround(7 * 1.5 * 2.0 / 0.02488);
   double travel = std::hypot(1000, 2000) + 2000 + std::hypot(2500, 500) +
@@ -83,24 +85,27 @@ TEST_CASE("HpglEncoder: relative polylines, absolute after IN and after a label"
 
 TEST_CASE("HpglEncoder: the absolute twin sends the same points") {
   for (bool absolute : {false, true}) {
-    HpglEncoder h(hp7475a, absolute);
+    StringOut out;
+    HpglEncoder h(hp7475a, absolute, out);
     h.move({10, 20});
     h.draw({30, 40});
     h.draw({50, 40});
     h.move({0, 0});
     h.draw({5, 5});
     h.finish();
-    CHECK(absolute_points(std::string(h.bytes())) ==
+    const std::string bytes = out.take_text();
+    CHECK(absolute_points(bytes) ==
           std::vector<DevicePoint>{{10, 20}, {30, 40}, {50, 40}, {0, 0}, {5, 5}});
-    CHECK((h.bytes().find("PR;") == std::string::npos) == absolute);
+    CHECK((bytes.find("PR;") == std::string::npos) == absolute);
   }
 }
 
 TEST_CASE("HpglEncoder: labels are printable and end with ETX") {
-  HpglEncoder h(hp7475a, false);
+  StringOut out;
+  HpglEncoder h(hp7475a, false, out);
   h.text({0, 0}, "A;B\x03\n");
   h.finish();
-  CHECK(h.bytes() == "IN;SP1;SI0.2,0.3;PU0,0;LBA;B??\x03PU;SP0;");
+  CHECK(out.take_text() == "IN;SP1;SI0.2,0.3;PU0,0;LBA;B??\x03PU;SP0;");
 }
 
 TEST_CASE("plot_order: duplicates dropped, ends joined, nearest end first, reversed") {
@@ -214,7 +219,8 @@ TEST_CASE("plot_hpgl: ordering never costs more pen-up travel than the drawing o
     Placed placed = place(pic.drawing, layout.at, {0, 0, 11040, 7721},
                           Rendering{.point = plot_point_mm / hp7475a.unit_mm});
     Plot plot = plot_hpgl(im, {});
-    HpglEncoder naive(hp7475a, false);
+    StringOut naive_plot;
+    HpglEncoder naive(hp7475a, false, naive_plot);
     DevicePoint t = layout.text;
     for (const auto& line : pic.caption) {
       naive.text(t, line);

@@ -26,7 +26,12 @@ void check_same(const Paths& paths, DevicePoint start) {
   REQUIRE(flat.size() == expected.size());
   for (std::size_t k = 0; k < flat.size(); ++k)
     REQUIRE(DevicePath(flat[k].begin(), flat[k].end()) == expected[k]);
-  CHECK(pen_up_travel(flat, start, {0, 0}) == pen_up_travel(expected, start, {0, 0}));
+  // The strokes PLOT draws from: the same travel as the reference's paths.
+  const std::vector<Line> lines(paths.begin(), paths.end());
+  PlotOrder order;
+  plot_order(lines, start, order);
+  CHECK(order.size() == expected.size());
+  CHECK(pen_up_travel(order, lines, start, {0, 0}) == pen_up_travel(expected, start, {0, 0}));
 }
 
 // Polylines on a lattice of `side` x `side` points `step` apart: with few points, segments

@@ -405,3 +405,24 @@ TEST_CASE("UNDO and REDO make PATCHES and INTPN again with the twists of the sta
   CHECK(j.redo(ws) == "CHANGE POINTS");
   test::check_same_workspace(ws, changed);
 }
+
+TEST_CASE("an UNDO whose state does not interpolate leaves PATCHES and INTPN as they were") {
+  // A state whose point is not finite (the APL environment can assign one to INPPN; the
+  // interpolation refuses it), then a command that mends it: UNDO to that state is refused with
+  // the kernel's DataError, and the surface shown stays the mended one, bit for bit.
+  Workspace ws = test::make_interpolated(5, 6, 2, 3);
+  saved(ws);
+  Journal j(ws);
+  CHECK(command(j, ws, "APL", [&] { change_point(ws, 8, std::nan(""), false); }));
+  CHECK(command(j, ws, "CHANGE POINTS", [&] { change_point(ws, 8, 2.5); }));
+  const Workspace mended = ws;
+  try {
+    j.undo(ws);
+    FAIL("the state was not refused");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::point_not_finite);
+  }
+  CHECK(ws.patches == mended.patches);
+  CHECK(ws.intpn == mended.intpn);
+  CHECK(ws.inppn == mended.inppn);
+}

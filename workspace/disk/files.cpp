@@ -27,6 +27,25 @@ namespace {
 std::optional<std::size_t> write_limit;
 std::size_t bytes_written = 0;  // by this process's file writes, for the tests
 
+// One write(2) or pwrite(2) of at most n bytes by write_some(m), honouring the test limit (ENOSPC
+// once it is used up) and counting what it wrote; what the call returned.
+template <class Write>
+ssize_t limited(std::size_t n, const Write& write_some) {
+  if (write_limit) {
+    if (*write_limit == 0) {
+      errno = ENOSPC;
+      return -1;
+    }
+    n = std::min(n, *write_limit);
+  }
+  const ssize_t done = write_some(n);
+  if (done > 0) {
+    bytes_written += static_cast<std::size_t>(done);
+    if (write_limit) *write_limit -= static_cast<std::size_t>(done);
+  }
+  return done;
+}
+
 // An open descriptor closed on every path; close() errors are reported by finish().
 class Fd {
  public:
@@ -96,19 +115,13 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
 void write_at(int fd, const char* p, std::size_t n, std::uint64_t offset) {
   const std::uint64_t first = offset;
   while (n > 0) {
-    std::size_t now = n;
-    if (write_limit) {
-      if (*write_limit == 0) throw IoError(ENOSPC);
-      now = std::min(now, *write_limit);
-    }
-    const ssize_t done = ::pwrite(fd, p, now, static_cast<off_t>(offset));
+    const ssize_t done =
+        limited(n, [&](std::size_t m) { return ::pwrite(fd, p, m, static_cast<off_t>(offset)); });
     if (done < 0) {
       if (errno == EINTR) continue;
       throw IoError(errno);
     }
     const auto d = static_cast<std::size_t>(done);
-    bytes_written += d;
-    if (write_limit) *write_limit -= d;
     p += d;
     n -= d;
     offset += d;
@@ -255,17 +268,7 @@ bool write_in_place(const std::filesystem::path& target, const Write& write, boo
 }  // namespace
 
 long limited_write(int fd, const char* p, std::size_t n) {
-  if (write_limit) {
-    if (*write_limit == 0) {
-      errno = ENOSPC;
-      return -1;
-    }
-    n = std::min(n, *write_limit);
-  }
-  ssize_t done = ::write(fd, p, n);
-  if (done > 0) bytes_written += static_cast<std::size_t>(done);
-  if (done > 0 && write_limit) *write_limit -= static_cast<std::size_t>(done);
-  return done;
+  return limited(n, [&](std::size_t m) { return ::write(fd, p, m); });
 }
 
 std::string system_reason(int error) {

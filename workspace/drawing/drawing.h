@@ -131,6 +131,14 @@ class Drawing {
 using Drawing2 = Drawing<Point2>;
 using Drawing3 = Drawing<Vec3>;
 
+// A point of a drawing as a point in space: a point in the plane at z = 0.
+inline Vec3 in_space(Vec3 v) {
+  return v;
+}
+inline Vec3 in_space(Point2 p) {
+  return {p.x, p.y, 0};
+}
+
 // What DISPLAY shows: a drawing and the lines of its description (written beside it by every
 // device: the column right of the image on the Tek screen, labels on a plot).
 struct Picture {

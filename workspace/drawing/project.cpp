@@ -60,16 +60,30 @@ Drawing2 project(const Drawing3& drawing, const View& view, Vec3 centre) {
   return out;
 }
 
-Box3 bounding_box(const Drawing3& drawing) {
+namespace {
+
+template <class P>
+Box3 box_of(const Drawing<P>& drawing) {
   const double inf = INFINITY;
   Box3 box{{inf, inf, inf}, {-inf, -inf, -inf}};
   for (const auto& item : drawing.items()) {
-    for (Vec3 p : drawing.points(item)) {
+    for (P point : drawing.points(item)) {
+      const Vec3 p = in_space(point);
       box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
       box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
     }
   }
   return box;
+}
+
+}  // namespace
+
+Box3 bounding_box(const Drawing3& drawing) {
+  return box_of(drawing);
+}
+
+Box3 bounding_box(const Drawing2& drawing) {
+  return box_of(drawing);
 }
 
 }  // namespace igds

@@ -24,5 +24,7 @@ struct Box3 {
   }
 };
 Box3 bounding_box(const Drawing3& drawing);
+// The same for a drawing in the plane, at z = 0.
+Box3 bounding_box(const Drawing2& drawing);
 
 }  // namespace igds

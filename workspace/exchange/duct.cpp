@@ -907,28 +907,10 @@ double outwards(double v, bool up) {
   return (up ? std::ceil(scaled - slack) : std::floor(scaled + slack)) / 1e4;
 }
 
-}  // namespace
-
-namespace {
-
-Vec3 lifted(Vec3 v) {
-  return v;
-}
-Vec3 lifted(Point2 p) {
-  return {p.x, p.y, 0};
-}
-
 // The largest extent of every point of a drawing (0 when it has none).
 template <class P>
 double extent_of(const Drawing<P>& drawing) {
-  Box3 all{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-  for (const auto& item : drawing.items()) {
-    for (P point : drawing.points(item)) {
-      const Vec3 v = lifted(point);
-      all.lo = {std::min(all.lo.x, v.x), std::min(all.lo.y, v.y), std::min(all.lo.z, v.z)};
-      all.hi = {std::max(all.hi.x, v.x), std::max(all.hi.y, v.y), std::max(all.hi.z, v.z)};
-    }
-  }
+  const Box3 all = bounding_box(drawing);
   return all.lo.x <= all.hi.x
              ? std::max({all.hi.x - all.lo.x, all.hi.y - all.lo.y, all.hi.z - all.lo.z})
              : 0.0;
@@ -984,7 +966,7 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   for (std::size_t n = 0; n < items.size(); ++n) {
     const auto& item = items[n];
     points.clear();
-    for (P point : drawing.points(item)) points.push_back(lifted(point));
+    for (P point : drawing.points(item)) points.push_back(in_space(point));
     const auto w = drawing.weights(item);
     if constexpr (Pixels::lays_out) {
       const bool bad =
@@ -1313,7 +1295,6 @@ class WrittenPixels {
  public:
   static constexpr bool lays_out = false;  // the picture was laid out before
   WrittenPixels(TextOut& out, bool tu) : out_(out), tu_(tu) { block_.reserve(block); }
-  ~WrittenPixels() = default;
   void shape(double s) { t_ = s; }
   void pixel(Vec3 v) {
     block_.push_back({v.x, v.y, v.z, t_});
@@ -1380,10 +1361,6 @@ void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctVie
 void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
                 TextOut& out) {
   write_picture(drawing, header, image_view(projection), out);
-}
-
-void append_duct(std::string& out, const DuctPicture& picture) {
-  out += write_duct(picture);
 }
 
 std::string write_duct(const DuctPicture& picture) {

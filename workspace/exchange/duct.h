@@ -220,7 +220,6 @@ DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Proj
 // blank (list-directed readers read both); a text's numbers are brought into their fields so that
 // its string stays in column 51. Whatever read_duct returns, this writes a text it reads back.
 std::string write_duct(const DuctPicture& picture);
-void append_duct(std::string& out, const DuctPicture& picture);
 // The same into `out`, made while it is written (a picture may be hundreds of megabytes).
 void write_duct(const DuctPicture& picture, TextOut& out);
 // write_duct(duct_picture(drawing, header, ...)) into `out`, byte for byte, without the picture

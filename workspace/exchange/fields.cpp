@@ -1,5 +1,6 @@
 #include "workspace/exchange/fields.h"
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -14,16 +15,6 @@ namespace igds {
 namespace {
 
 // `text` right-justified in `width` columns, or after one blank when it does not fit.
-void put_field(std::string& out, const char* text, std::size_t length, int width) {
-  const std::size_t w = static_cast<std::size_t>(width < 0 ? 0 : width);
-  if (length > w)
-    out.push_back(' ');
-  else
-    out.append(w - length, ' ');
-  out.append(text, length);
-}
-
-// The same at `out`.
 char* put_field(char* out, const char* text, std::size_t length, int width) {
   const std::size_t w = static_cast<std::size_t>(width < 0 ? 0 : width);
   if (length > w) {
@@ -40,12 +31,19 @@ bool is_digit(char c) {
   return c >= '0' && c <= '9';
 }
 
+// What put(w) writes at w appended to `out`: a field of `width` columns, or at most `room`
+// characters when its text does not fit them.
+template <class Put>
+void append_field(std::string& out, int width, std::size_t room, const Put& put) {
+  const std::size_t size = out.size();
+  out.resize(size + std::max(static_cast<std::size_t>(width < 0 ? 0 : width), room));
+  out.resize(static_cast<std::size_t>(put(out.data() + size) - out.data()));
+}
+
 }  // namespace
 
 void put_integer(std::string& out, std::int64_t value, int width) {
-  char buffer[24];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  put_field(out, buffer, static_cast<std::size_t>(end - buffer), width);
+  append_field(out, width, 21, [&](char* w) { return put_integer(w, value, width); });
 }
 
 char* put_integer(char* out, std::int64_t value, int width) {
@@ -70,8 +68,7 @@ std::size_t format_fixed(char* buffer, double value, int decimals) {
 }  // namespace
 
 void put_fixed(std::string& out, double value, int width, int decimals) {
-  char buffer[400];
-  put_field(out, buffer, format_fixed(buffer, value, decimals), width);
+  append_field(out, width, 26, [&](char* w) { return put_fixed(w, value, width, decimals); });
 }
 
 char* put_fixed(char* out, double value, int width, int decimals) {
@@ -187,8 +184,7 @@ std::size_t format_exponent(char* buffer, double value, int digits) {
 }
 
 void put_exponent(std::string& out, double value, int width, int digits) {
-  char buffer[64];
-  put_field(out, buffer, format_exponent(buffer, value, digits), width);
+  append_field(out, width, 41, [&](char* w) { return put_exponent(w, value, width, digits); });
 }
 
 char* put_exponent(char* out, double value, int width, int digits) {

@@ -73,21 +73,32 @@ unsigned threads_for(std::size_t doubles) {
   return std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
 }
 
+namespace {
+
+// Room for n numbers in `ravel` (empty), prepared as large_array says when n is large.
+void reserve_prepared(std::vector<double>& ravel, std::size_t n, unsigned threads) {
+  if (n < large) return;
+  ravel.reserve(n);
+  prepare(ravel.data(), n, std::max(threads, 1u));
+}
+
+}  // namespace
+
 Array large_array(std::vector<std::size_t> shape, unsigned threads) {
   Array a;
   const std::size_t n = Array::count(shape);
   a.shape = std::move(shape);
-  if (n >= large) {
-    a.ravel.reserve(n);
-    prepare(a.ravel.data(), n, std::max(threads, 1u));
-  }
+  reserve_prepared(a.ravel, n, threads);
   a.ravel.resize(n);
   return a;
 }
 
 Array large_copy(const Array& a, unsigned threads) {
-  Array out = large_array(a.shape, threads);
-  std::copy(a.ravel.begin(), a.ravel.end(), out.ravel.begin());
+  Array out;
+  out.shape = a.shape;
+  // The numbers written once, into the prepared room (not zeros first).
+  reserve_prepared(out.ravel, a.size(), threads);
+  out.ravel.assign(a.ravel.begin(), a.ravel.end());
   return out;
 }
 
