@@ -16,7 +16,8 @@ void run_build(Context& ctx, const Choice*) {
   Array inptg = zero_tangents(size.nocur, size.nostr);
   const bool automatic = ask_tangent_entries(ctx, size.nocur, size.nostr, inppn, inptg);
   Density density = ask_density(ctx, size.nocur, size.nostr);
-  Surface surface = interpolate_surface(size.nocur, size.nostr, density, inppn, inptg);
+  Surface surface = interpolate_surface(
+      ctx.workspace(), {size.nocur, size.nostr, density.intcu, density.intst, &inppn, &inptg});
 
   // Only now, with everything asked and interpolated, does the workspace change. A new surface
   // has the manual's zero twists (CHANGE TWISTS MARKS gives Marks's).

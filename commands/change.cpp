@@ -136,28 +136,10 @@ void run_change(Context& ctx, const Choice* option) {
     density = ask_grid_too(ctx, ws);
   }
   const Changes changes = ws.changes;
-  // The new surface is computed into the arrays of the old one (no fresh pages on a large grid);
-  // the kernels check everything first and leave them as they were when they refuse.
   SurfaceInput input{ws.nocur, ws.nostr, density.intcu,     density.intst,
                      &inppn,   &inptg,   modes.marks_twists};
-  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
-  auto give_back = [&] {
-    ws.patches = std::move(surface.patches);
-    ws.intpn = std::move(surface.intpn);
-  };
-  const bool refitted = what == grid && !surface.patches.empty();
-  try {
-    if (refitted)
-      refit_into(input, surface.patches, surface.intpn);  // the patches do not depend on the grid
-    else
-      interpolate_into(input, surface);
-  } catch (const DataError& e) {
-    give_back();
-    throw worded(e, "THE SURFACE IS NOT CHANGED");
-  } catch (...) {
-    give_back();
-    throw;
-  }
+  const bool refitted = what == grid && !ws.patches.empty();
+  Surface surface = interpolate_surface(ws, input, refitted);
   make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
                std::move(surface), modes);
   // The grid of input points is the same: only the parts the entries changed are new.

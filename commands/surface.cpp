@@ -4,14 +4,25 @@
 
 namespace igds {
 
-Surface interpolate_surface(int nocur, int nostr, Density density, const Array& inppn,
-                            const Array& inptg, bool marks_twists) {
-  SurfaceInput input{nocur, nostr, density.intcu, density.intst, &inppn, &inptg, marks_twists};
+Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only) {
+  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
+  auto give_back = [&] {
+    ws.patches = std::move(surface.patches);
+    ws.intpn = std::move(surface.intpn);
+  };
   try {
-    return interpolate(input);
+    if (refit_only)
+      refit_into(input, surface.patches, surface.intpn);
+    else
+      interpolate_into(input, surface);
   } catch (const DataError& e) {
+    give_back();
     throw worded(e, "THE SURFACE IS NOT CHANGED");
+  } catch (...) {
+    give_back();
+    throw;
   }
+  return surface;
 }
 
 void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,

@@ -14,10 +14,12 @@ struct SurfaceModes {
   bool auto_tangents = false;  // the border tangents were set by AUTO
 };
 
-// COONS then FIT; a kernel's refusal becomes its report followed by `; THE SURFACE IS NOT
-// CHANGED` (the surface in the workspace is kept).
-Surface interpolate_surface(int nocur, int nostr, Density density, const Array& inppn,
-                            const Array& inptg, bool marks_twists = false);
+// COONS then FIT (FIT alone when `refit_only`: the patches do not depend on the grid) into the
+// memory of the workspace's PATCHES and INTPN, taken out of it: a new surface of about the same
+// size writes no fresh pages, which on a large grid cost more than the interpolation. The kernels
+// check everything first; when one refuses, the arrays go back to the workspace as they were and
+// its report is followed by `; THE SURFACE IS NOT CHANGED`.
+Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only = false);
 
 // Makes an interpolated surface the current one: the only change BUILD and CHANGE make to the
 // workspace, once everything has been asked and computed. It counts as a new surface

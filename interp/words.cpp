@@ -23,16 +23,13 @@ std::vector<std::string> split_words(std::string_view line) {
   std::vector<std::string> words;
   if (is_comment_line(line)) return words;
   if (auto at = line.find(lamp); at != std::string_view::npos) line = line.substr(0, at);
-  std::string word;
-  for (char c : line) {
-    if (is_blank(c) || c == ',') {
-      if (!word.empty()) words.push_back(std::move(word));
-      word.clear();
-    } else {
-      word += c;
-    }
+  auto separates = [](char c) { return is_blank(c) || c == ','; };
+  for (std::size_t i = 0; i < line.size();) {
+    while (i < line.size() && separates(line[i])) ++i;
+    const std::size_t start = i;
+    while (i < line.size() && !separates(line[i])) ++i;
+    if (i > start) words.emplace_back(line.substr(start, i - start));
   }
-  if (!word.empty()) words.push_back(std::move(word));
   return words;
 }
 

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <string>
+#include <system_error>
 
 namespace igds {
 
@@ -13,43 +15,51 @@ constexpr std::string_view high_minus = "\xC2\xAF";  // U+00AF in UTF-8
 }
 
 std::optional<double> parse_apl_number(std::string_view word) {
-  // Rewrite into the C locale's form: high minus becomes '-', only one sign per mantissa and
-  // exponent, digits and at most one point before the exponent.
-  std::string text;
-  text.reserve(word.size());
-  for (std::size_t i = 0; i < word.size();) {
-    if (word.substr(i).starts_with(high_minus)) {
-      text += '-';
-      i += high_minus.size();
-    } else {
-      text += word[i++];
-    }
+  // Rewritten into from_chars's form as it is checked: high minus becomes '-', only one sign per
+  // mantissa and exponent, digits and at most one point before the exponent. A '+' of the
+  // mantissa is dropped (from_chars takes none); the longest valid word is its digits.
+  char small[64];
+  std::string large;
+  char* text = small;
+  if (word.size() > sizeof small) {
+    large.resize(word.size());
+    text = large.data();
   }
-  std::size_t i = 0;
-  auto sign = [&] {
-    if (i < text.size() && (text[i] == '-' || text[i] == '+')) ++i;
+  std::size_t n = 0, i = 0;
+  auto sign = [&](bool keep_plus) {
+    if (word.substr(i).starts_with(high_minus)) {
+      text[n++] = '-';
+      i += high_minus.size();
+    } else if (i < word.size() && (word[i] == '-' || word[i] == '+')) {
+      if (word[i] == '-' || keep_plus) text[n++] = word[i];
+      ++i;
+    }
   };
   auto digits = [&] {
-    std::size_t start = i;
-    while (i < text.size() && text[i] >= '0' && text[i] <= '9') ++i;
+    const std::size_t start = i;
+    while (i < word.size() && word[i] >= '0' && word[i] <= '9') text[n++] = word[i++];
     return i - start;
   };
-  sign();
+  sign(false);
   std::size_t mantissa = digits();
-  if (i < text.size() && text[i] == '.') {
-    ++i;
+  if (i < word.size() && word[i] == '.') {
+    text[n++] = word[i++];
     mantissa += digits();
   }
   if (mantissa == 0) return std::nullopt;
-  if (i < text.size() && (text[i] == 'E' || text[i] == 'e')) {
-    ++i;
-    sign();
+  if (i < word.size() && (word[i] == 'E' || word[i] == 'e')) {
+    text[n++] = word[i++];
+    sign(true);
     if (digits() == 0) return std::nullopt;
   }
-  if (i != text.size()) return std::nullopt;
-  errno = 0;
-  double value = std::strtod(text.c_str(), nullptr);
-  return value;  // an overflow is an infinity, refused by the caller with the point number
+  if (i != word.size()) return std::nullopt;
+  double value = 0;
+  const auto [end, error] = std::from_chars(text, text + n, value);
+  if (error == std::errc{} && end == text + n) return value;
+  // Out of range: strtod's infinity or underflow, as before (an overflow is refused by the
+  // caller with the point number).
+  const std::string copy(text, n);
+  return std::strtod(copy.c_str(), nullptr);
 }
 
 std::string format_apl_number(double value) {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "commands/command.h"
+#include "commands/surface.h"
 #include "commands/view.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
@@ -114,6 +115,35 @@ TEST_CASE("BUILD: Ctrl-C or the end of the input leaves the workspace as it was"
   ctx.type({"2 2", "1 5 5 5", "", ""});
   CHECK_THROWS_AS(ctx.run(build_command, ""), EndOfInput);
   CHECK(ctx.ws == before);
+}
+
+TEST_CASE("BUILD and CHANGE interpolate into the old surface's memory, kept when refused") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  const Workspace before = ctx.ws;
+  const double* patches = ctx.ws.patches.data();
+  const double* intpn = ctx.ws.intpn.data();
+  // A point that is not finite (the APL environment can put one in INPPN): refused with the
+  // kernel's report, PATCHES and INTPN given back as they were.
+  Array inppn = ctx.ws.inppn;
+  inppn.ravel[4] = std::nan("");
+  const SurfaceInput bad{3, 3, 2, 2, &inppn, &ctx.ws.inptg};
+  try {
+    interpolate_surface(ctx.ws, bad);
+    FAIL("a point that is not finite was interpolated");
+  } catch (const Error& e) {
+    CHECK(std::string(e.what()).ends_with("; THE SURFACE IS NOT CHANGED"));
+  }
+  CHECK(ctx.ws == before);
+  CHECK(ctx.ws.patches.data() == patches);
+  CHECK(ctx.ws.intpn.data() == intpn);
+  // A new surface of the same size is written where the old one was.
+  ctx.type(saddle);
+  ctx.run(build_command, "");
+  CHECK(ctx.ws.patches == before.patches);
+  CHECK(ctx.ws.patches.data() == patches);
+  CHECK(ctx.ws.intpn.data() == intpn);
 }
 
 TEST_CASE("CHANGE needs a surface") {

@@ -3,6 +3,10 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
+#include <limits>
+#include <string>
+
 #include "workspace/apl.h"
 
 namespace igds::test {
@@ -50,6 +54,35 @@ TEST_CASE("APL numbers as typed") {
   CHECK_FALSE(parse_apl_number(""));
   CHECK(format_apl_number(-3.5) == "¯3.5");
   CHECK(format_apl_number(110) == "110");
+}
+
+TEST_CASE("APL numbers: the value strtod gives the same text, at the edges of double too") {
+  CHECK(parse_apl_number("+2.5") == 2.5);
+  CHECK(parse_apl_number("2.") == 2);
+  CHECK(parse_apl_number("1E+2") == 100);
+  CHECK_FALSE(parse_apl_number("+-2"));
+  CHECK_FALSE(parse_apl_number("¯¯2"));
+  CHECK_FALSE(parse_apl_number("1E¯+2"));
+  CHECK_FALSE(parse_apl_number("."));
+  CHECK_FALSE(parse_apl_number("1.2.3"));
+  CHECK_FALSE(parse_apl_number("INF"));
+  // Overflow is an infinity (refused by the commands with the point number), underflow zero or a
+  // subnormal number, as strtod gives them.
+  CHECK(parse_apl_number("1E400") == std::numeric_limits<double>::infinity());
+  CHECK(parse_apl_number("¯1E400") == -std::numeric_limits<double>::infinity());
+  CHECK(parse_apl_number("1E¯400") == 0);
+  CHECK(parse_apl_number("4.9E¯324") == std::strtod("4.9E-324", nullptr));
+  CHECK(parse_apl_number("2.2250738585072011E¯308") ==
+        std::strtod("2.2250738585072011E-308", nullptr));
+  // A word longer than any buffer: every digit counts.
+  const std::string digits = "0." + std::string(200, '0') + "15";
+  CHECK(parse_apl_number(digits) == 1.5E-201);
+  CHECK(parse_apl_number(std::string(100, '9')) ==
+        std::strtod(std::string(100, '9').c_str(), nullptr));
+  // Correct rounding on halfway cases: the nearest double, as strtod.
+  for (const char* text : {"9007199254740993", "0.1", "2.675", "1.7976931348623157E308",
+                           "123456789012345678901234567890", "3.14159265358979323846"})
+    CHECK(parse_apl_number(text) == std::strtod(text, nullptr));
 }
 
 }  // namespace igds::test
