@@ -9,6 +9,7 @@
 #include "devices/hpgl.h"
 #include "devices/plot_order.h"
 #include "devices/render.h"
+#include "workspace/kernels/large_array.h"
 
 namespace igds {
 
@@ -96,15 +97,9 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
       for (const Line& line : lines) hpgl.polyline(line);
       if (!lines.empty() && !lines.back().empty()) pen = lines.back().back();
     } else {
-      for (std::size_t k = 0; k < order.size(); ++k) {
-        for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
-          const Stroke& stroke = order.strokes[s];
-          const Line line =
-              lines[stroke.line].subspan(stroke.first, stroke.last - stroke.first + 1);
-          if (s == order.starts[k]) hpgl.move(stroke.begin(lines));
-          hpgl.draw_run(line, stroke.reversed);
-        }
-      }
+      std::size_t points = 0;
+      for (const Line& line : lines) points += line.size();
+      hpgl.draw_order(order, lines, threads_for(points));
       if (order.size() > 0) pen = order.strokes.back().end(lines);
     }
   }

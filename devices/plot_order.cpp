@@ -1,6 +1,7 @@
 #include "devices/plot_order.h"
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -77,21 +78,39 @@ class RadixSort {
   std::vector<std::size_t> count_;
 };
 
-// Each point of the paths as its place in their bounding box: W * H ids, `bits` wide.
+// Each point of the paths as its place in their bounding box: W * H ids, `bits` wide; the box
+// found on as many threads as pay.
 struct PointIds {
-  long long x0 = 0, y0 = 0;
+  long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   u64 h = 1;
   int bits = 0;
 
-  explicit PointIds(std::span<const Line> paths) {
-    long long x1 = 0, y1 = 0;
-    bool first = true;
-    for (const auto& path : paths)
-      for (DevicePoint p : path) {
-        if (first) x0 = x1 = p.x, y0 = y1 = p.y, first = false;
-        x0 = std::min<long long>(x0, p.x), x1 = std::max<long long>(x1, p.x);
-        y0 = std::min<long long>(y0, p.y), y1 = std::max<long long>(y1, p.y);
+  PointIds(std::span<const Line> paths, std::size_t points) {
+    struct Box {
+      long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+      bool empty = true;
+    };
+    const unsigned parts = threads_for(points / 2);
+    std::vector<Box> boxes(parts);
+    parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
+      for (std::size_t t = from; t < to; ++t) {
+        Box b;  // here, not in boxes: the threads' boxes share a cache line
+        for (std::size_t k = paths.size() * t / parts; k < paths.size() * (t + 1) / parts; ++k)
+          for (DevicePoint p : paths[k]) {
+            if (b.empty) b = {p.x, p.y, p.x, p.y, false};
+            b.x0 = std::min<long long>(b.x0, p.x), b.x1 = std::max<long long>(b.x1, p.x);
+            b.y0 = std::min<long long>(b.y0, p.y), b.y1 = std::max<long long>(b.y1, p.y);
+          }
+        boxes[t] = b;
       }
+    });
+    bool first = true;
+    for (const Box& b : boxes) {
+      if (b.empty) continue;
+      if (first) x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1, first = false;
+      x0 = std::min(x0, b.x0), x1 = std::max(x1, b.x1);
+      y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
+    }
     h = static_cast<u64>(y1 - y0) + 1;
     bits = std::bit_width(static_cast<u64>(x1 - x0) * h + static_cast<u64>(y1 - y0));
   }
@@ -106,8 +125,13 @@ struct Piece {
 };
 
 // fresh[s] for each segment s of the paths in drawing order: it has a length and was not drawn
-// before in either direction. The segments are sorted by their lower end, and compared by their
-// higher end within each group, first drawn first. Returns the number of fresh segments.
+// before in either direction. Returns the number of fresh segments.
+//
+// A segment belongs to the tile (a square of the plane) of its lower end, so a segment and its
+// repeats share a tile. The paths, cut into runs of consecutive segments of one tile (a path
+// crosses a tile in one run, not segment by segment), are grouped by tile in drawing order; each
+// tile's segments then go through a table of those seen, sized to the tile (in the cache), on
+// as many threads as pay. Only the runs are moved, never the segments.
 std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
                        std::vector<std::uint8_t>& fresh) {
   std::size_t n = 0;
@@ -116,100 +140,122 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
   fresh.assign(n, 1);
   std::size_t count = n;
   auto drop = [&](std::size_t s) { fresh[s] = 0, --count; };
-  if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max()) {
-    // First by the high bits of the lower end into buckets (drawing order kept within each),
-    // then each bucket alone, in the cache, on as many threads as pay.
-    struct Segment {
-      std::uint32_t lo, hi, s;
+  if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max() &&
+      paths.size() <= std::numeric_limits<std::uint32_t>::max()) {
+    // Tiles of side 2^shift, about 16384 segments each where the segments are spread evenly (the
+    // table of a tile stays in the cache, and a path crosses a tile in a long run), and at most
+    // one tile for every 2048 segments where they are not.
+    const u64 width = static_cast<u64>(ids.x1 - ids.x0), height = static_cast<u64>(ids.y1 - ids.y0);
+    const double area = static_cast<double>(width + 1) * static_cast<double>(height + 1);
+    int shift = 0;
+    while (shift < 31 && std::ldexp(static_cast<double>(n), 2 * (shift + 1)) <= 16384 * area)
+      ++shift;
+    auto tiles_at = [&](int s) { return ((width >> s) + 1) * ((height >> s) + 1); };
+    while (shift < 31 && tiles_at(shift) > n / 2048 + 1) ++shift;
+    const u64 tiles_y = (height >> shift) + 1, tiles = tiles_at(shift);
+    auto tile_of = [&](DevicePoint p) {
+      return static_cast<std::uint32_t>((static_cast<u64>(p.x - ids.x0) >> shift) * tiles_y +
+                                        (static_cast<u64>(p.y - ids.y0) >> shift));
     };
-    // Buckets of the lower ends' places 2 ^ 16 apart, or more: about 2048 segments or more each
-    // (a large plot: 2048 buckets of about 4000).
-    const int high = std::clamp(ids.bits - 16, 0, static_cast<int>(std::bit_width(n >> 11))),
-              low_bits = ids.bits - high;
-    const std::size_t buckets = std::size_t{1} << high;
-    // The paths in `parts` runs of about as many segments, one a thread: each counts its
-    // segments by bucket, then writes them after those of the runs before it.
-    const unsigned parts = buckets > 1 ? threads_for(2 * n) : 1;
-    std::vector<std::size_t> cut{0}, cut_segment{0};
-    for (std::size_t k = 0, done = 0; k < paths.size(); ++k) {
-      done += paths[k].empty() ? 0 : paths[k].size() - 1;
-      if (cut.size() < parts && done * parts >= n * cut.size())
-        cut.push_back(k + 1), cut_segment.push_back(done);
+    struct Run {
+      std::uint32_t tile, path, first, last;  // segments first..last - 1 of the path
+    };
+    // The paths in `parts` slices of about as many segments, one a thread, each cut into runs.
+    const unsigned parts = threads_for(2 * n);
+    std::vector<std::size_t> cut{0}, base(paths.size() + 1, 0);
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      base[k + 1] = base[k] + (paths[k].empty() ? 0 : paths[k].size() - 1);
+      if (cut.size() < parts && base[k + 1] * parts >= n * cut.size()) cut.push_back(k + 1);
     }
-    while (cut.size() <= parts) cut.push_back(paths.size()), cut_segment.push_back(n);
-    std::vector<std::size_t> counts(parts * (buckets + 1), 0), dropped(parts + buckets, 0);
+    while (cut.size() <= parts) cut.push_back(paths.size());
+    std::vector<std::vector<Run>> runs(parts);
+    std::vector<std::size_t> dropped(parts, 0);
     parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
       for (std::size_t t = from; t < to; ++t) {
-        std::size_t* c = counts.data() + t * (buckets + 1);
-        std::size_t s = cut_segment[t];
+        // Made here, then moved to runs[t]: the threads' vectors share a cache line.
+        std::vector<Run> out;
+        out.reserve((base[cut[t + 1]] - base[cut[t]]) / 16 + 16);
+        std::size_t zero = 0;
         for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
           const Line& path = paths[k];
-          for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
-            const auto a = ids(path[i]), b = ids(path[i + 1]);
-            if (a == b)
-              fresh[s] = 0, ++dropped[buckets + t];
-            else
-              ++c[std::min(a, b) >> low_bits];
+          const auto p = static_cast<std::uint32_t>(k);
+          bool open = false;
+          for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+            const DevicePoint a = path[i], b = path[i + 1];
+            if (a == b) {
+              fresh[base[k] + i] = 0, ++zero, open = false;
+              continue;
+            }
+            const bool a_lower = a.x < b.x || (a.x == b.x && a.y < b.y);
+            const std::uint32_t tile = tile_of(a_lower ? a : b);
+            if (open && out.back().tile == tile) {
+              ++out.back().last;
+            } else {
+              const auto first = static_cast<std::uint32_t>(i);
+              out.push_back({tile, p, first, first + 1});
+              open = true;
+            }
           }
         }
+        runs[t] = std::move(out);
+        dropped[t] = zero;
       }
     });
-    // first[k]: where bucket k starts; a run's count becomes where its segments go in it.
-    std::vector<std::size_t> first(buckets + 1, 0);
-    std::size_t m = 0;
-    for (std::size_t k = 0; k < buckets; ++k) {
-      first[k] = m;
-      for (unsigned t = 0; t < parts; ++t) m += std::exchange(counts[t * (buckets + 1) + k], m);
+    for (std::size_t d : dropped) count -= d;
+    // The runs by tile, in drawing order (slice by slice, each in order): a counting sort.
+    std::vector<std::uint32_t> first(tiles + 1, 0);
+    std::vector<std::size_t> segments(tiles, 0);
+    for (const auto& list : runs)
+      for (const Run& r : list) ++first[r.tile + 1], segments[r.tile] += r.last - r.first;
+    for (std::size_t c = 0; c < tiles; ++c) first[c + 1] += first[c];
+    std::vector<const Run*> by_tile(first[tiles]);
+    {
+      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      for (const auto& list : runs)
+        for (const Run& r : list) by_tile[at[r.tile]++] = &r;
     }
-    first[buckets] = m;
-    Buffer<Segment> records(m);
-    parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
-      for (std::size_t t = from; t < to; ++t) {
-        std::size_t* at = counts.data() + t * (buckets + 1);
-        auto s = static_cast<std::uint32_t>(cut_segment[t]);
-        for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
-          const Line& path = paths[k];
-          for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
-            auto a = static_cast<std::uint32_t>(ids(path[i])),
-                 b = static_cast<std::uint32_t>(ids(path[i + 1]));
-            if (a == b) continue;
-            if (a > b) std::swap(a, b);
-            records.data[at[a >> low_bits]++] = {a, b, s};
-          }
-        }
-      }
-    });
-    // Drops by bucket: each segment is in one bucket, so threads mark different bytes.
-    // Each bucket alone, in drawing order, through a table of the segments seen (open
-    // addressing, sized to the bucket: in the cache): a segment already there is a repeat.
+    // Each tile alone through a table of the segments seen (open addressing; 0 is an empty slot,
+    // and no segment's key is 0 since its ends differ): a segment already there is a repeat.
+    // Each segment is in one tile, so threads mark different bytes.
+    std::atomic<std::size_t> repeats = 0;
     auto find_repeats = [&](std::size_t from, std::size_t to) {
-      std::vector<u64> table;  // 0: an empty slot (a segment has lo < hi, so its key is not 0)
-      for (std::size_t k = from; k < to; ++k) {
-        const std::size_t size = first[k + 1] - first[k];
-        if (size < 2) continue;
-        const int bits = std::bit_width(2 * size - 1);
+      std::vector<u64> table;
+      std::size_t found = 0;
+      for (std::size_t c = from; c < to; ++c) {
+        if (segments[c] < 2) continue;
+        const int bits = std::bit_width(2 * segments[c] - 1);
         const std::size_t mask = (std::size_t{1} << bits) - 1;
         table.assign(mask + 1, 0);
-        const Segment* begin = records.begin() + first[k];
-        for (const Segment* g = begin; g != begin + size; ++g) {
-          const u64 key = u64{g->lo} << 32 | g->hi;
-          for (std::size_t h = (key * 0x9E3779B97F4A7C15u) >> (64 - bits);; h = (h + 1) & mask) {
-            if (table[h] == 0) {
-              table[h] = key;
-              break;
-            }
-            if (table[h] == key) {
-              fresh[g->s] = 0, ++dropped[k];
-              break;
+        for (std::uint32_t w = first[c]; w < first[c + 1]; ++w) {
+          if (w + 2 < first[c + 1]) {
+            // The points of a run ahead, which lie anywhere in the paths' memory.
+            const Run& ahead = *by_tile[w + 2];
+            __builtin_prefetch(paths[ahead.path].data() + ahead.first);
+          }
+          const Run& r = *by_tile[w];
+          const Line& path = paths[r.path];
+          u64 a = ids(path[r.first]);
+          for (std::uint32_t i = r.first; i < r.last; ++i) {
+            const u64 b = ids(path[i + 1]);
+            const u64 key = a < b ? a << 32 | b : b << 32 | a;
+            a = b;
+            for (std::size_t h = (key * 0x9E3779B97F4A7C15u) >> (64 - bits);; h = (h + 1) & mask) {
+              if (table[h] == 0) {
+                table[h] = key;
+                break;
+              }
+              if (table[h] == key) {
+                fresh[base[r.path] + i] = 0, ++found;
+                break;
+              }
             }
           }
         }
       }
+      repeats += found;
     };
-    parallel_for(buckets, buckets > 1 ? threads_for(2 * m) : 1, find_repeats);
-    for (std::size_t d : dropped) count -= d;
-
-    return count;
+    parallel_for(tiles, tiles > 1 ? parts : 1, find_repeats);
+    return count - repeats;
   }
   // Coordinates too far apart, or too many segments, for 32-bit ids: a comparison sort.
   struct Wide {
@@ -369,7 +415,9 @@ double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, Device
 void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out) {
   out.strokes.clear();
   out.starts.assign(1, 0);
-  const PointIds ids(paths);
+  std::size_t points = 0;
+  for (const Line& path : paths) points += path.size();
+  const PointIds ids(paths, points);
   std::vector<std::uint8_t> fresh;
   const std::size_t segments = mark_fresh(paths, ids, fresh);
   if (segments == 0) return;

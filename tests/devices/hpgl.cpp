@@ -108,6 +108,43 @@ TEST_CASE("HpglEncoder: labels are printable and end with ETX") {
   CHECK(out.take_text() == "IN;SP1;SI0.2,0.3;PU0,0;LBA;B??\x03PU;SP0;");
 }
 
+TEST_CASE("HpglEncoder::draw_order: the later half made on a second thread is the same plot") {
+  // Walks of every length (one segment, many), repeats dropped by the order, strokes reversed.
+  std::vector<DevicePath> paths;
+  for (int k = 0; k < 300; ++k) {
+    DevicePath p;
+    for (int i = 0; i <= k % 17 + 1; ++i)
+      p.push_back({(k * 37 + i * 11) % 500, (k * 13 + i * i) % 400});
+    paths.push_back(p);
+    if (k % 5 == 0) paths.push_back(DevicePath(p.rbegin(), p.rend()));
+  }
+  const std::vector<Line> lines(paths.begin(), paths.end());
+  PlotOrder order;
+  plot_order(lines, {0, 0}, order);
+  REQUIRE(order.size() > 100);
+  for (bool absolute : {false, true}) {
+    std::string bytes[2];
+    PlotStats stats[2];
+    for (unsigned threads : {1u, 2u}) {
+      StringOut out;
+      HpglEncoder h(hp7475a, absolute, out);
+      h.style({.pen = 2});
+      h.draw_order(order, lines, threads);
+      h.move({7, 7});
+      h.draw({9, 9});
+      h.finish();
+      bytes[threads - 1] = out.take_text();
+      stats[threads - 1] = h.stats();
+    }
+    CHECK(bytes[0] == bytes[1]);
+    CHECK(stats[0].vectors == stats[1].vectors);
+    CHECK(stats[0].pen_lifts == stats[1].pen_lifts);
+    CHECK(stats[0].pen_up_mm == doctest::Approx(stats[1].pen_up_mm).epsilon(1e-12));
+    CHECK(stats[0].bytes == stats[1].bytes);
+    CHECK(stats[0].pen_lifts == order.size() + 1);
+  }
+}
+
 TEST_CASE("plot_order: duplicates dropped, ends joined, nearest end first, reversed") {
   // A 2 x 2 patch wireframe drawn patch by patch: every inner edge twice.
   std::vector<DevicePath> patches;

@@ -118,10 +118,12 @@ TEST_CASE("plot_order: the same paths as the reference on grids and patch wirefr
   }
   check_same(grid_like(rng, 150, 120, false), {0, 0});
   check_same(grid_like(rng, 60, 70, true), {5, 5});
-  // More than 2^17 segments: the buckets are shared by the threads, and every inner edge of the
-  // wireframe is a repeat found in its bucket.
+  // More than 2^17 segments: the paths are cut into runs by two threads, the tiles shared by
+  // them, and every inner edge of the wireframe is a repeat found in its tile.
   check_same(grid_like(rng, 400, 380, false), {3, 3});
   check_same(grid_like(rng, 200, 190, true), {0, 0});
+  // More than 2^19 points: their box is found on two threads too.
+  check_same(grid_like(rng, 600, 560, false), {1, 1});
 }
 
 TEST_CASE("plot_order: the same paths as the reference at the edges") {
