@@ -1,13 +1,13 @@
 #include "devices/plot_order.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <utility>
 
 #include "workspace/kernels/large_array.h"
@@ -124,22 +124,23 @@ struct Piece {
   std::size_t path, first, last;
 };
 
-// fresh[s] for each segment s of the paths in drawing order: it has a length and was not drawn
-// before in either direction. Returns the number of fresh segments.
+// The segments of the paths, numbered in drawing order, that are not drawn: those without a
+// length, and those drawn before in either direction; in increasing order.
 //
 // A segment belongs to the tile (a square of the plane) of its lower end, so a segment and its
 // repeats share a tile. The paths, cut into runs of consecutive segments of one tile (a path
 // crosses a tile in one run, not segment by segment), are grouped by tile in drawing order; each
 // tile's segments then go through a table of those seen, sized to the tile (in the cache), on
 // as many threads as pay. Only the runs are moved, never the segments.
-std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
-                       std::vector<std::uint8_t>& fresh) {
+std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& ids) {
   std::size_t n = 0;
   for (const auto& path : paths) n += path.empty() ? 0 : path.size() - 1;
-  reserve_large(fresh, n);
-  fresh.assign(n, 1);
-  std::size_t count = n;
-  auto drop = [&](std::size_t s) { fresh[s] = 0, --count; };
+  std::vector<std::size_t> dropped;
+  std::mutex mutex;
+  auto add = [&](const std::vector<std::size_t>& found) {
+    const std::lock_guard lock(mutex);
+    dropped.insert(dropped.end(), found.begin(), found.end());
+  };
   if (ids.bits <= 32 && n <= std::numeric_limits<std::uint32_t>::max() &&
       paths.size() <= std::numeric_limits<std::uint32_t>::max()) {
     // Tiles of side 2^shift, about 16384 segments each where the segments are spread evenly (the
@@ -169,13 +170,12 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
     }
     while (cut.size() <= parts) cut.push_back(paths.size());
     std::vector<std::vector<Run>> runs(parts);
-    std::vector<std::size_t> dropped(parts, 0);
     parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
       for (std::size_t t = from; t < to; ++t) {
         // Made here, then moved to runs[t]: the threads' vectors share a cache line.
         std::vector<Run> out;
         out.reserve((base[cut[t + 1]] - base[cut[t]]) / 16 + 16);
-        std::size_t zero = 0;
+        std::vector<std::size_t> zero;
         for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
           const Line& path = paths[k];
           const auto p = static_cast<std::uint32_t>(k);
@@ -183,7 +183,7 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
           for (std::size_t i = 0; i + 1 < path.size(); ++i) {
             const DevicePoint a = path[i], b = path[i + 1];
             if (a == b) {
-              fresh[base[k] + i] = 0, ++zero, open = false;
+              zero.push_back(base[k] + i), open = false;
               continue;
             }
             const bool a_lower = a.x < b.x || (a.x == b.x && a.y < b.y);
@@ -198,10 +198,9 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
           }
         }
         runs[t] = std::move(out);
-        dropped[t] = zero;
+        add(zero);
       }
     });
-    for (std::size_t d : dropped) count -= d;
     // The runs by tile, in drawing order (slice by slice, each in order): a counting sort.
     std::vector<std::uint32_t> first(tiles + 1, 0);
     std::vector<std::size_t> segments(tiles, 0);
@@ -216,11 +215,9 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
     }
     // Each tile alone through a table of the segments seen (open addressing; 0 is an empty slot,
     // and no segment's key is 0 since its ends differ): a segment already there is a repeat.
-    // Each segment is in one tile, so threads mark different bytes.
-    std::atomic<std::size_t> repeats = 0;
     auto find_repeats = [&](std::size_t from, std::size_t to) {
       std::vector<u64> table;
-      std::size_t found = 0;
+      std::vector<std::size_t> found;
       for (std::size_t c = from; c < to; ++c) {
         if (segments[c] < 2) continue;
         const int bits = std::bit_width(2 * segments[c] - 1);
@@ -245,17 +242,18 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
                 break;
               }
               if (table[h] == key) {
-                fresh[base[r.path] + i] = 0, ++found;
+                found.push_back(base[r.path] + i);
                 break;
               }
             }
           }
         }
       }
-      repeats += found;
+      add(found);
     };
     parallel_for(tiles, tiles > 1 ? parts : 1, find_repeats);
-    return count - repeats;
+    std::sort(dropped.begin(), dropped.end());
+    return dropped;
   }
   // Coordinates too far apart, or too many segments, for 32-bit ids: a comparison sort.
   struct Wide {
@@ -268,7 +266,7 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
     for (std::size_t i = 0; i + 1 < path.size(); ++i, ++s) {
       u64 a = ids(path[i]), b = ids(path[i + 1]);
       if (a == b)
-        drop(s);
+        dropped.push_back(s);
       else
         wide.push_back({std::min(a, b), std::max(a, b), s});
     }
@@ -276,8 +274,9 @@ std::size_t mark_fresh(std::span<const Line> paths, const PointIds& ids,
     return a.lo != b.lo ? a.lo < b.lo : a.hi != b.hi ? a.hi < b.hi : a.s < b.s;
   });
   for (std::size_t k = 1; k < wide.size(); ++k)
-    if (wide[k].lo == wide[k - 1].lo && wide[k].hi == wide[k - 1].hi) drop(wide[k].s);
-  return count;
+    if (wide[k].lo == wide[k - 1].lo && wide[k].hi == wide[k - 1].hi) dropped.push_back(wide[k].s);
+  std::sort(dropped.begin(), dropped.end());
+  return dropped;
 }
 
 // The ends of the paths to order in a uniform grid of cells, stored flat, for nearest-end
@@ -418,25 +417,23 @@ void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out) 
   std::size_t points = 0;
   for (const Line& path : paths) points += path.size();
   const PointIds ids(paths, points);
-  std::vector<std::uint8_t> fresh;
-  const std::size_t segments = mark_fresh(paths, ids, fresh);
-  if (segments == 0) return;
+  const std::vector<std::size_t> dropped = not_drawn(paths, ids);
 
-  // The pieces: runs of fresh segments within a path.
+  // The pieces: runs of drawn segments within a path, cut where a segment is not drawn.
   std::vector<Piece> pieces;
-  std::size_t s = 0;
-  for (std::size_t k = 0; k < paths.size(); ++k) {
-    bool in_run = false;
-    for (std::size_t i = 0; i + 1 < paths[k].size(); ++i, ++s) {
-      if (!fresh[s])
-        in_run = false;
-      else if (in_run)
-        pieces.back().last = i + 1;
-      else
-        pieces.push_back({k, i, i + 1}), in_run = true;
+  auto next = dropped.begin();
+  for (std::size_t k = 0, s = 0; k < paths.size(); ++k) {
+    const std::size_t segments = paths[k].empty() ? 0 : paths[k].size() - 1;
+    std::size_t first = 0;
+    for (; next != dropped.end() && *next < s + segments; ++next) {
+      const std::size_t i = *next - s;
+      if (i > first) pieces.push_back({k, first, i});
+      first = i + 1;
     }
+    if (segments > first) pieces.push_back({k, first, segments});
+    s += segments;
   }
-  std::vector<std::uint8_t>().swap(fresh);
+  if (pieces.empty()) return;
   // End e of the pieces: the first point of piece e / 2 when e is even, its last when odd.
   auto end_point = [&](std::size_t e) {
     const Piece& p = pieces[e / 2];

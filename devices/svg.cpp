@@ -82,18 +82,22 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   while (i < points.size() && points[i] == at_) ++i;
   if (i == points.size()) return;
   if (!drawing_) start_polyline();
-  // At most 24 bytes a point, written in place.
-  const std::size_t size = body_.size();
-  body_.resize(size + 24 * (points.size() - i));
-  char* out = body_.data() + size;
+  // At most 24 bytes a point, formatted into a block on the stack and appended a block at a
+  // time (growing the document to the most a polyline could take would first fill it with
+  // zeros, many times what is written).
+  constexpr std::size_t most = 170;
+  char block[24 * most];
   DevicePoint at = at_;
-  for (; i < points.size(); ++i) {
-    const DevicePoint p = points[i];
-    if (p == at) continue;
-    out = put_point(out, true, p);
-    at = p;
+  while (i < points.size()) {
+    char* out = block;
+    for (const std::size_t end = std::min(points.size(), i + most); i < end; ++i) {
+      const DevicePoint p = points[i];
+      if (p == at) continue;
+      out = put_point(out, true, p);
+      at = p;
+    }
+    body_.append(block, out);
   }
-  body_.resize(static_cast<std::size_t>(out - body_.data()));
   at_ = at;
 }
 
