@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include "workspace/kernels/parallel.h"
 
@@ -14,6 +17,29 @@ namespace {
 double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
+
+// A text made in pieces of a megabyte, put into another TextOut once finished: the later half
+// of a large plot, made aside while the first half goes into the file (a string would be
+// copied each time it grew).
+class PiecesOut final : public TextOut {
+ public:
+  PiecesOut() { take(0); }
+  void put_into(TextOut& out) {
+    take(0);
+    for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
+  }
+
+ private:
+  static constexpr std::size_t piece = std::size_t{1} << 20;
+  void take(std::size_t) override {
+    if (at_ != begin_) done_.push_back({std::move(open_), static_cast<std::size_t>(at_ - begin_)});
+    if (!open_) open_ = std::make_unique_for_overwrite<char[]>(piece);
+    begin_ = at_ = open_.get();
+    end_ = begin_ + piece;
+  }
+  std::unique_ptr<char[]> open_;
+  std::vector<std::pair<std::unique_ptr<char[]>, std::size_t>> done_;
+};
 
 }  // namespace
 
@@ -152,7 +178,7 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
   }
   // Every stroke draws a vector (its segments have a length), so after the first part the pen
   // is down at the end of its last stroke, a PD list open: where the second part starts.
-  StringOut later_text;
+  PiecesOut later_text;
   HpglEncoder later(*this, order.strokes[order.starts[split] - 1].end(lines), later_text);
   parallel_for(2, 2, [&](std::size_t first, std::size_t last) {
     for (std::size_t part = first; part < last; ++part) {
@@ -162,7 +188,7 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
         later.draw_polylines(order, lines, split, order.size());
     }
   });
-  put(later_text.take_text());
+  later_text.put_into(*out_);
   join(later);
 }
 
