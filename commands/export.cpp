@@ -121,11 +121,15 @@ void run_export(Context& ctx, const Choice* option) {
   std::string_view holds;
   try {
     switch (code) {
-      case svg:
-      case tek: {
+      case svg: {
+        // Written while it is made: a document may be tens of megabytes.
         const Picture picture = picture_of(ws.image);
-        const std::string bytes =
-            code == svg ? svg_of(picture) : tek_stream(picture, ctx.options().tek);
+        size =
+            write_user_file(ctx.disk(), name, type, [&](TextOut& out) { write_svg(picture, out); });
+        break;
+      }
+      case tek: {
+        const std::string bytes = tek_stream(picture_of(ws.image), ctx.options().tek);
         write_user_file(ctx.disk(), name, type, bytes);
         size = bytes.size();
         break;

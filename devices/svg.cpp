@@ -21,38 +21,38 @@ char* put_point(char* out, bool blank, DevicePoint p) {
   return put_pair(out, p.x, flip(p.y));
 }
 
-void append_point(std::string& out, bool blank, DevicePoint p) {
-  char buffer[32];
-  out.append(buffer, put_point(buffer, blank, p));
+// The background: the whole screen white (`more`: attributes besides, inside the group).
+std::string background(std::string_view more = "") {
+  using namespace tek_screen;
+  return fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"white\"{}/>\n", width, height, more);
 }
 
 }  // namespace
 
-SvgWriter::SvgWriter() {
+SvgWriter::SvgWriter(TextOut& out) : out_(&out) {
   using namespace tek_screen;
-  body_ = fmt::format(
-      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
-      "viewBox=\"0 0 {0} {1}\">\n"
-      "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
-      "<g fill=\"none\" stroke=\"black\" stroke-width=\"1\" stroke-linejoin=\"round\" "
-      "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n",
-      width, height, line_height - 4);
-  head_ = body_.size();
+  out_->put(
+      fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                  "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+                  "viewBox=\"0 0 {0} {1}\">\n"
+                  "{3}"
+                  "<g fill=\"none\" stroke=\"black\" stroke-width=\"1\" stroke-linejoin=\"round\" "
+                  "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n",
+                  width, height, line_height - 4, background()));
 }
 
 void SvgWriter::start_polyline() {
-  body_ += "<polyline points=\"";
-  append_point(body_, false, at_);
+  out_->put("<polyline points=\"");
+  out_->commit(put_point(out_->room(32), false, at_));
   drawing_ = true;
 }
 
 // The attributes in force are those of the whole polyline: style() closes it before they change.
 void SvgWriter::close_polyline() {
   if (drawing_) {
-    body_ += '"';
-    body_ += attributes_;
-    body_ += "/>\n";
+    out_->put('"');
+    out_->put(attributes_);
+    out_->put("/>\n");
   }
   drawing_ = false;
 }
@@ -71,7 +71,7 @@ void SvgWriter::draw(DevicePoint p) {
   }
   if (at_ == p) return;
   if (!drawing_) start_polyline();
-  append_point(body_, true, p);
+  out_->commit(put_point(out_->room(32), true, p));
   at_ = p;
 }
 
@@ -82,21 +82,19 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   while (i < points.size() && points[i] == at_) ++i;
   if (i == points.size()) return;
   if (!drawing_) start_polyline();
-  // At most 24 bytes a point, formatted into a block on the stack and appended a block at a
-  // time (growing the document to the most a polyline could take would first fill it with
-  // zeros, many times what is written).
-  constexpr std::size_t most = 170;
-  char block[24 * most];
+  // At most 24 bytes a point, written in place, as many points at a time as the output has
+  // room for.
+  constexpr std::size_t most = TextOut::max_room / 24;
   DevicePoint at = at_;
   while (i < points.size()) {
-    char* out = block;
+    char* out = out_->room(24 * std::min(points.size() - i, most));
     for (const std::size_t end = std::min(points.size(), i + most); i < end; ++i) {
       const DevicePoint p = points[i];
       if (p == at) continue;
       out = put_point(out, true, p);
       at = p;
     }
-    body_.append(block, out);
+    out_->commit(out);
   }
   at_ = at;
 }
@@ -115,9 +113,8 @@ void SvgWriter::text(DevicePoint p, std::string_view line) {
     else
       escaped += (c >= 0x20 && c < 0x7F) ? c : '?';
   }
-  fmt::format_to(std::back_inserter(body_),
-                 "<text x=\"{}\" y=\"{}\" fill=\"black\" stroke=\"none\">{}</text>\n", p.x,
-                 flip(p.y), escaped);
+  out_->put(fmt::format("<text x=\"{}\" y=\"{}\" fill=\"black\" stroke=\"none\">{}</text>\n", p.x,
+                        flip(p.y), escaped));
 }
 
 void SvgWriter::style(const Style& style) {
@@ -148,20 +145,25 @@ void SvgWriter::style(const Style& style) {
 
 void SvgWriter::page() {
   close_polyline();
-  body_.resize(head_);
+  out_->put(background(" stroke=\"none\""));
   at_known_ = false;
 }
 
-std::string SvgWriter::document() {
+void SvgWriter::finish() {
   close_polyline();
-  body_ += "</g>\n</svg>\n";
-  return std::move(body_);
+  out_->put("</g>\n</svg>\n");
+}
+
+void write_svg(const Picture& picture, TextOut& out) {
+  SvgWriter svg(out);
+  draw_tek_display(picture, svg, 1);
+  svg.finish();
 }
 
 std::string svg_of(const Picture& picture) {
-  SvgWriter svg;
-  draw_tek_display(picture, svg, 1);
-  return svg.document();
+  StringOut out;
+  write_svg(picture, out);
+  return out.take_text();
 }
 
 }  // namespace igds

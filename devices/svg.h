@@ -7,32 +7,36 @@
 
 #include "devices/device.h"
 #include "workspace/drawing/drawing.h"
+#include "workspace/text_out.h"
 
 namespace igds {
 
 // A Device that writes SVG elements in the 1024 x 780 space of the 4013, y flipped: the 4013
-// point (x, y) is the SVG point (x, 779 - y). Polylines become <polyline>, text <text>.
+// point (x, y) is the SVG point (x, 779 - y). Polylines become <polyline>, text <text>. The
+// document goes into `out` as it is made (for EXPORT SVG the file being written): the head at
+// once, each element when it is complete, the end at finish().
 class SvgWriter : public Device {
  public:
-  SvgWriter();
+  explicit SvgWriter(TextOut& out);
   void move(DevicePoint p) override;
   void draw(DevicePoint p) override;
   // The points written straight into the element (the bulk of a document).
   void polyline(std::span<const DevicePoint> points) override;
   void text(DevicePoint p, std::string_view line) override;
+  // A new page erases the screen: what was drawn is painted over with the white background
+  // (the elements before it are already written).
   void page() override;
   // Pens as colours (1 black, 2 red, 3 green, 4 blue, 5 magenta, 6 cyan, ...), dashes as dash
   // arrays, weight 2 as a wider stroke; attributes only where they differ from the default.
   void style(const Style& style) override;
-  // The whole document; the writer is done with.
-  std::string document();
+  // Ends the document; the writer is done with.
+  void finish();
 
  private:
   void close_polyline();
   void start_polyline();  // its element, up to its first point (at_)
 
-  std::string body_;  // the document's head, then the elements so far
-  std::size_t head_;  // the head's length
+  TextOut* out_;
   DevicePoint at_;
   bool at_known_ = false;
   bool drawing_ = false;
@@ -40,7 +44,8 @@ class SvgWriter : public Device {
 };
 
 // A standalone SVG of a picture, laid out as on the Tek screen: viewBox in 4013 points,
-// polylines, the caption as text.
+// polylines, the caption as text; into `out` as it is made, or as a string.
+void write_svg(const Picture& picture, TextOut& out);
 std::string svg_of(const Picture& picture);
 
 }  // namespace igds

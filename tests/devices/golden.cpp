@@ -89,7 +89,8 @@ TEST_CASE("SVG: a polyline written at once is the element its moves and draws ma
                                       {{9, 9}, {9, 9}},    // a point: nothing drawn
                                       {{-5, 1000}, {1023, 0}, {-2147483647, 2147483647}}};
   const std::vector<Style> styles{{}, {}, {2}, {3, Dash::dashed, 2}};
-  SvgWriter at_once, by_point;
+  StringOut once_text, point_text;
+  SvgWriter at_once(once_text), by_point(point_text);
   PointByPoint points(by_point);
   for (int page = 0; page < 2; ++page) {
     for (std::size_t k = 0; k < paths.size(); ++k) {
@@ -102,8 +103,13 @@ TEST_CASE("SVG: a polyline written at once is the element its moves and draws ma
     by_point.text({3, 4}, "A<B");
     if (page == 0) at_once.page(), by_point.page();
   }
-  const std::string document = at_once.document();
-  CHECK(document == by_point.document());
+  at_once.finish();
+  by_point.finish();
+  const std::string document = once_text.take_text();
+  CHECK(document == point_text.take_text());
+  // The second page paints the first over, and draws again.
+  CHECK(document.find("<rect width=\"1024\" height=\"780\" fill=\"white\" stroke=\"none\"/>") !=
+        std::string::npos);
   CHECK(document.find("<polyline points=\"1,777 30,739 50,772 60,771\"/>") != std::string::npos);
   CHECK(document.find("-2147483647,") != std::string::npos);
 }
