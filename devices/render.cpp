@@ -49,15 +49,15 @@ class Sink {
 
 class ListSink final : public Sink {
  public:
-  explicit ListSink(Placed& out) : out_(out) {}
-  DevicePath& open() override { return out_.paths.points; }
+  ListSink(Placed& out, PathList& list) : out_(out), list_(list) {}
+  DevicePath& open() override { return list_.points; }
   void close(std::size_t start, const Style& style) override {
-    auto& points = out_.paths.points;
+    auto& points = list_.points;
     if (points.size() - start < 2) {
       points.resize(start);
       return;
     }
-    out_.paths.starts.push_back(points.size());
+    list_.starts.push_back(points.size());
     out_.styles.push_back(style);
   }
   void text(DevicePoint at, const std::string& text, const Style& style) override {
@@ -66,6 +66,7 @@ class ListSink final : public Sink {
 
  private:
   Placed& out_;
+  PathList& list_;
 };
 
 class DeviceSink final : public Sink {
@@ -483,7 +484,7 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
   const std::vector<std::size_t> before = polyline_points(drawing);
   const std::size_t items = drawing.size(), points = before.back();
   // A large drawing in two parts of about as many points, placed at once on two threads, the
-  // second part's paths then put after the first's.
+  // second part's paths after the first's (each part in a list of its own).
   const unsigned parts = placing_threads(points);
   const std::size_t cut =
       parts == 2 ? static_cast<std::size_t>(
@@ -493,22 +494,18 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
   parallel_for(2, parts, [&](std::size_t first, std::size_t last) {
     for (std::size_t part = first; part < last; ++part) {
       Placed& to = part == 0 ? out : second;
+      PathList& list = out.paths.parts[part];
       const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
-      // Room for every polyline point at once: a large drawing's list is not copied as it grows
-      // (the first part's for the second's too).
-      reserve_large(to.paths.points, part == 0 ? points : points - before[cut]);
-      ListSink sink(to);
+      // Room for every polyline point of the part at once: a large drawing's list is not copied
+      // as it grows.
+      reserve_large(list.points, before[until] - before[from]);
+      ListSink sink(to, list);
       place_lines(drawing, from, until, at, clip, rendering, sink);
       to.clipped = sink.clipped;
     }
   });
-  const std::size_t offset = out.paths.points.size();
-  out.paths.points.insert(out.paths.points.end(), second.paths.points.begin(),
-                          second.paths.points.end());
-  for (std::size_t k = 1; k < second.paths.starts.size(); ++k)
-    out.paths.starts.push_back(offset + second.paths.starts[k]);
   out.styles.insert(out.styles.end(), second.styles.begin(), second.styles.end());
-  ListSink sink(out);
+  ListSink sink(out, out.paths.parts[1]);
   sink.clipped = out.clipped || second.clipped;
   place_texts(drawing, at, clip, sink);
   out.clipped = sink.clipped;
