@@ -90,9 +90,7 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
     lines.clear();
     for (std::size_t k = 0; k < placed.paths.size(); ++k)
       if (placed.styles[k] == style) lines.push_back(placed.paths[k]);
-    // Every placed point lies on the paper.
-    const DeviceBox paper{{0, 0}, lim};
-    plot_order(lines, pen, order, &paper);
+    plot_order(lines, pen, order);
     hpgl.style(style);
     // Never more pen-up travel than the drawing order.
     if (pen_up_travel(order, lines, pen, origin) > pen_up_travel(lines, pen, origin)) {

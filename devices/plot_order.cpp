@@ -78,17 +78,13 @@ class RadixSort {
   std::vector<std::size_t> count_;
 };
 
-// Each point of the paths as its place in a box that holds them all, W * H ids, `bits` wide: the
-// box given, or theirs, found on as many threads as pay.
+// Each point of the paths as its place in their bounding box: W * H ids, `bits` wide; the box
+// found on as many threads as pay.
 struct PointIds {
   long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   u64 h = 1;
   int bits = 0;
 
-  explicit PointIds(const DeviceBox& box)
-      : x0(box.low.x), y0(box.low.y), x1(box.high.x), y1(box.high.y) {
-    set_bits();
-  }
   PointIds(std::span<const Line> paths, std::size_t points) {
     struct Box {
       long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
@@ -115,9 +111,6 @@ struct PointIds {
       x0 = std::min(x0, b.x0), x1 = std::max(x1, b.x1);
       y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
     }
-    set_bits();
-  }
-  void set_bits() {
     h = static_cast<u64>(y1 - y0) + 1;
     bits = std::bit_width(static_cast<u64>(x1 - x0) * h + static_cast<u64>(y1 - y0));
   }
@@ -418,13 +411,12 @@ double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, Device
   return travel + distance(at, to);
 }
 
-void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out,
-                const DeviceBox* within) {
+void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out) {
   out.strokes.clear();
   out.starts.assign(1, 0);
   std::size_t points = 0;
   for (const Line& path : paths) points += path.size();
-  const PointIds ids = within ? PointIds(*within) : PointIds(paths, points);
+  const PointIds ids(paths, points);
   const std::vector<std::size_t> dropped = not_drawn(paths, ids);
 
   // The pieces: runs of drawn segments within a path, cut where a segment is not drawn.

@@ -46,12 +46,7 @@ double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, Device
 // nearer; equal distances go to the earlier end); a path that starts where the last one ended
 // continues it without lifting the pen. Deterministic. Into `out`, whose buffers are reused;
 // O(n log n) in the number of segments, with no allocation per path; the points are not copied.
-// `within`, when given, holds every point (a plot's paper): their own box is then not looked for.
-struct DeviceBox {
-  DevicePoint low, high;
-};
-void plot_order(std::span<const Line> lines, DevicePoint start, PlotOrder& out,
-                const DeviceBox* within = nullptr);
+void plot_order(std::span<const Line> lines, DevicePoint start, PlotOrder& out);
 
 // The same order with its points, into `out`.
 void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& out);

@@ -32,26 +32,6 @@ void check_same(const Paths& paths, DevicePoint start) {
   plot_order(lines, start, order);
   CHECK(order.size() == expected.size());
   CHECK(pen_up_travel(order, lines, start, {0, 0}) == pen_up_travel(expected, start, {0, 0}));
-  // Given a box that holds the points (a plot's paper), larger than theirs: the same order.
-  DeviceBox box{{INT_MAX, INT_MAX}, {INT_MIN, INT_MIN}};
-  for (const auto& path : paths)
-    for (DevicePoint p : path)
-      box = {{std::min(box.low.x, p.x), std::min(box.low.y, p.y)},
-             {std::max(box.high.x, p.x), std::max(box.high.y, p.y)}};
-  if (box.low.x <= box.high.x && box.low.x > -100000 && box.high.x < 100000 &&
-      box.low.y > -100000 && box.high.y < 100000) {
-    box = {{box.low.x - 37, box.low.y - 5}, {box.high.x + 11, box.high.y + 1000}};
-    PlotOrder within;
-    plot_order(lines, start, within, &box);
-    CHECK(within.starts == order.starts);
-    CHECK(within.size() == expected.size());
-    REQUIRE(within.strokes.size() == order.strokes.size());
-    for (std::size_t k = 0; k < within.strokes.size(); ++k) {
-      const Stroke &a = within.strokes[k], &b = order.strokes[k];
-      CHECK(
-          (a.line == b.line && a.first == b.first && a.last == b.last && a.reversed == b.reversed));
-    }
-  }
 }
 
 // Polylines on a lattice of `side` x `side` points `step` apart: with few points, segments
