@@ -25,8 +25,8 @@ class PiecesOut final : public TextOut {
  public:
   PiecesOut() { take(0); }
   void put_into(TextOut& out) {
-    take(0);
     for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
+    out.put(std::string_view(begin_, static_cast<std::size_t>(at_ - begin_)));
   }
 
  private:

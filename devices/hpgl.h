@@ -57,7 +57,7 @@ class HpglEncoder : public Device {
   // bulk of a plot, without a call per point.
   void draw_run(std::span<const DevicePoint> points, bool reversed);
   // The strokes of `order` (lines' points), each polyline from a pen-up move, in the style set;
-  // with `threads` 2 and enough points, the later half of the polylines is written on a second
+  // with `threads` 2, the later half of the polylines (by their points) is written on a second
   // thread by an encoder that starts where this one will be, then put after the first half: the
   // same bytes and counts as on one thread.
   void draw_order(const PlotOrder& order, std::span<const Line> lines, unsigned threads);
