@@ -15,50 +15,58 @@ constexpr std::string_view high_minus = "\xC2\xAF";  // U+00AF in UTF-8
 }
 
 std::optional<double> parse_apl_number(std::string_view word) {
-  // Rewritten into from_chars's form as it is checked: high minus becomes '-', only one sign per
-  // mantissa and exponent, digits and at most one point before the exponent. A '+' of the
-  // mantissa is dropped (from_chars takes none); the longest valid word is its digits.
-  char small[64];
-  std::string large;
-  char* text = small;
-  if (word.size() > sizeof small) {
-    large.resize(word.size());
-    text = large.data();
-  }
-  std::size_t n = 0, i = 0;
-  auto sign = [&](bool keep_plus) {
+  // Checked first: only one sign per mantissa and exponent (high minus, '-' or '+'), digits and
+  // at most one point before the exponent.
+  std::size_t i = 0;
+  bool rewrite = false;  // a high minus, or a '+' before the mantissa (from_chars takes neither)
+  auto sign = [&](bool exponent) {
     if (word.substr(i).starts_with(high_minus)) {
-      text[n++] = '-';
       i += high_minus.size();
+      rewrite = true;
     } else if (i < word.size() && (word[i] == '-' || word[i] == '+')) {
-      if (word[i] == '-' || keep_plus) text[n++] = word[i];
+      rewrite = rewrite || (word[i] == '+' && !exponent);
       ++i;
     }
   };
   auto digits = [&] {
     const std::size_t start = i;
-    while (i < word.size() && word[i] >= '0' && word[i] <= '9') text[n++] = word[i++];
+    while (i < word.size() && word[i] >= '0' && word[i] <= '9') ++i;
     return i - start;
   };
   sign(false);
   std::size_t mantissa = digits();
   if (i < word.size() && word[i] == '.') {
-    text[n++] = word[i++];
+    ++i;
     mantissa += digits();
   }
   if (mantissa == 0) return std::nullopt;
   if (i < word.size() && (word[i] == 'E' || word[i] == 'e')) {
-    text[n++] = word[i++];
+    ++i;
     sign(true);
     if (digits() == 0) return std::nullopt;
   }
   if (i != word.size()) return std::nullopt;
+  // As other programs write it (the usual case), read in place; else in from_chars's form.
+  std::string text;
+  if (rewrite) {
+    text.reserve(word.size());
+    for (std::size_t k = 0; k < word.size();) {
+      if (word.substr(k).starts_with(high_minus)) {
+        text += '-';
+        k += high_minus.size();
+      } else {
+        if (!(k == 0 && word[k] == '+')) text += word[k];
+        ++k;
+      }
+    }
+    word = text;
+  }
   double value = 0;
-  const auto [end, error] = std::from_chars(text, text + n, value);
-  if (error == std::errc{} && end == text + n) return value;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  if (error == std::errc{} && end == word.data() + word.size()) return value;
   // Out of range: strtod's infinity or underflow, as before (an overflow is refused by the
   // caller with the point number).
-  const std::string copy(text, n);
+  const std::string copy(word);
   return std::strtod(copy.c_str(), nullptr);
 }
 
