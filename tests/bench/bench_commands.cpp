@@ -269,6 +269,9 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
   std::size_t peak = 0;
   {
     Igds igds(disk.dir());
+    // The work a start leaves behind READY (the saved surface made again) done first, not
+    // counted in BUILD's time: it is the start-up's, measured below as the first answer.
+    igds.command("HELP SHORT\n");
     for (const auto& step : steps) {
       // Each step three times (not timed: a DISPLAY before each STORE, UNDO and REDO, and an
       // UNDO before each REDO), the median; BUILD and the exchange files once.
@@ -295,14 +298,19 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
     fmt::print("{}_end_ms {:.1f}\n", prefix, 1000 * t.seconds);
   }
   fmt::print("{}_peak_rss_mb {:.1f}\n", prefix, peak / 1024.0);
-  std::vector<double> starts;
+  // To READY, and to the answer of a first command typed at once (which waits for the saved
+  // surface to be made again behind READY).
+  std::vector<double> starts, answers;
   for (int r = 0; r < 3; ++r) {
     Igds igds(disk.dir());
     starts.push_back(igds.startup_seconds());
+    answers.push_back(igds.startup_seconds() + igds.command("HELP SHORT\n").seconds);
     igds.command("END CMS\n");
   }
   std::sort(starts.begin(), starts.end());
+  std::sort(answers.begin(), answers.end());
   fmt::print("{}_startup_ms {:.1f}\n", prefix, 1000 * starts[1]);
+  fmt::print("{}_startup_first_answer_ms {:.1f}\n", prefix, 1000 * answers[1]);
   for (const auto& entry : fs::directory_iterator(disk.dir())) {
     const auto name = entry.path().filename().string();
     if (!name.ends_with(".IGDSDATA")) fs::remove_all(entry.path());
