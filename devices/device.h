@@ -36,6 +36,17 @@ struct PathList {
   }
 };
 
+// The paths of a placed drawing, as placed in (at most two) parts on as many threads: path k of
+// the whole is in the part that holds it, no part copied into another.
+struct PlacedPaths {
+  PathList parts[2];
+  std::size_t size() const { return parts[0].size() + parts[1].size(); }
+  std::span<const DevicePoint> operator[](std::size_t k) const {
+    const std::size_t first = parts[0].size();
+    return k < first ? parts[0][k] : parts[1][k - first];
+  }
+};
+
 // "x,y" at `out` (at most 23 characters), as std::to_chars writes the two integers; returns the
 // end. The coordinates of a vector are most of a plot or an SVG document: the small ones, the
 // commonest, digit by digit without a library call.
@@ -81,6 +92,14 @@ class Device {
     if (points.empty()) return;
     move(points.front());
     for (std::size_t i = 1; i < points.size(); ++i) draw(points[i]);
+  }
+  // The paths of a placed drawing in order, path k in styles[k]: style() then polyline() for
+  // each. A device may send a long list faster (on two threads: the same bytes).
+  virtual void paths(const PlacedPaths& paths, std::span<const Style> styles) {
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+      style(styles[k]);
+      polyline(paths[k]);
+    }
   }
 };
 

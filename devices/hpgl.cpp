@@ -4,9 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
-#include <utility>
-#include <vector>
 
 #include "workspace/kernels/parallel.h"
 
@@ -17,29 +14,6 @@ namespace {
 double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
-
-// A text made in pieces of a megabyte, put into another TextOut once finished: the later half
-// of a large plot, made aside while the first half goes into the file (a string would be
-// copied each time it grew).
-class PiecesOut final : public TextOut {
- public:
-  PiecesOut() { take(0); }
-  void put_into(TextOut& out) {
-    for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
-    out.put(std::string_view(begin_, static_cast<std::size_t>(at_ - begin_)));
-  }
-
- private:
-  static constexpr std::size_t piece = std::size_t{1} << 20;
-  void take(std::size_t) override {
-    if (at_ != begin_) done_.push_back({std::move(open_), static_cast<std::size_t>(at_ - begin_)});
-    if (!open_) open_ = std::make_unique_for_overwrite<char[]>(piece);
-    begin_ = at_ = open_.get();
-    end_ = begin_ + piece;
-  }
-  std::unique_ptr<char[]> open_;
-  std::vector<std::pair<std::unique_ptr<char[]>, std::size_t>> done_;
-};
 
 }  // namespace
 

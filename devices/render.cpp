@@ -517,10 +517,7 @@ bool render(const Drawing2& drawing, const Placement& at, const Box& clip,
   if (placing_threads(polyline_points(drawing).back()) > 1) {
     // Placed on two threads first, then drawn as the sink below draws.
     const Placed placed = place(drawing, at, clip, rendering);
-    for (std::size_t k = 0; k < placed.paths.size(); ++k) {
-      device.style(placed.styles[k]);
-      device.polyline(placed.paths[k]);
-    }
+    device.paths(placed.paths, placed.styles);
     for (const auto& t : placed.texts) {
       device.style(t.style);
       device.text(t.at, t.text);

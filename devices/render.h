@@ -48,17 +48,6 @@ struct PlacedText {
   std::string text;
   Style style;
 };
-// The paths of a placed drawing, as placed in (at most two) parts on as many threads: path k of
-// the whole is in the part that holds it, no part copied into another.
-struct PlacedPaths {
-  PathList parts[2];
-  std::size_t size() const { return parts[0].size() + parts[1].size(); }
-  std::span<const DevicePoint> operator[](std::size_t k) const {
-    const std::size_t first = parts[0].size();
-    return k < first ? parts[0][k] : parts[1][k - first];
-  }
-};
-
 // A drawing in integer device units.
 struct Placed {
   PlacedPaths paths;              // polylines, flattened curves and marks, in drawing order

@@ -5,6 +5,8 @@
 #include <algorithm>
 
 #include "devices/layout.h"
+#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -27,6 +29,31 @@ std::string background(std::string_view more = "") {
   return fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"white\"{}/>\n", width, height, more);
 }
 
+// The attributes of polylines in `style`: "" for pen 1, solid, weight 1.
+std::string attributes_of(const Style& style) {
+  static constexpr std::string_view colours[] = {"black",   "red",  "green",  "blue",
+                                                 "magenta", "cyan", "orange", "brown"};
+  std::string a;
+  if (style.pen != 1)
+    a += fmt::format(" stroke=\"{}\"",
+                     colours[static_cast<std::size_t>(std::max(style.pen, 1) - 1) % 8]);
+  switch (style.dash) {
+    case Dash::solid:
+      break;
+    case Dash::dashed:
+      a += " stroke-dasharray=\"8 4\"";
+      break;
+    case Dash::chain:
+      a += " stroke-dasharray=\"12 3 2 3\"";
+      break;
+    case Dash::dotted:
+      a += " stroke-dasharray=\"1 3\"";
+      break;
+  }
+  if (style.weight > 1) a += fmt::format(" stroke-width=\"{}\"", style.weight);
+  return a;
+}
+
 }  // namespace
 
 SvgWriter::SvgWriter(TextOut& out) : out_(&out) {
@@ -40,6 +67,9 @@ SvgWriter::SvgWriter(TextOut& out) : out_(&out) {
                   "stroke-linecap=\"round\" font-family=\"monospace\" font-size=\"{2}\">\n",
                   width, height, line_height - 4, background()));
 }
+
+SvgWriter::SvgWriter(TextOut& out, DevicePoint at, const Style& style)
+    : out_(&out), at_(at), at_known_(true), drawing_(true), attributes_(attributes_of(style)) {}
 
 void SvgWriter::start_polyline() {
   out_->put("<polyline points=\"");
@@ -99,6 +129,44 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   at_ = at;
 }
 
+void SvgWriter::paths(const PlacedPaths& paths, std::span<const Style> styles) {
+  // The path where about half the points are, after one of two points that differ (all but a
+  // dot mark, whose two points are one): after it this writer is at its last point, its
+  // element open, in its style.
+  std::size_t points = 0;
+  for (std::size_t k = 0; k < paths.size(); ++k) points += paths[k].size();
+  std::size_t split = 0;
+  for (std::size_t half = 0; split < paths.size() && 2 * half < points; ++split)
+    half += paths[split].size();
+  auto drawn = [&](std::size_t k) { return paths[k].size() >= 2 && paths[k][0] != paths[k][1]; };
+  while (split > 0 && split < paths.size() && !drawn(split - 1)) ++split;
+  if (threads_for(points) < 2 || split == 0 || split >= paths.size()) {
+    Device::paths(paths, styles);
+    return;
+  }
+  PiecesOut later_text;
+  SvgWriter later(later_text, paths[split - 1].back(), styles[split - 1]);
+  auto write = [&](SvgWriter& svg, std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k) {
+      svg.style(styles[k]);
+      svg.polyline(paths[k]);
+    }
+  };
+  parallel_for(2, 2, [&](std::size_t first, std::size_t last) {
+    for (std::size_t part = first; part < last; ++part) {
+      if (part == 0)
+        write(*this, 0, split);
+      else
+        write(later, split, paths.size());
+    }
+  });
+  later_text.put_into(*out_);
+  at_ = later.at_;
+  at_known_ = later.at_known_;
+  drawing_ = later.drawing_;
+  attributes_ = std::move(later.attributes_);
+}
+
 void SvgWriter::text(DevicePoint p, std::string_view line) {
   close_polyline();
   at_known_ = false;
@@ -118,26 +186,7 @@ void SvgWriter::text(DevicePoint p, std::string_view line) {
 }
 
 void SvgWriter::style(const Style& style) {
-  static constexpr std::string_view colours[] = {"black",   "red",  "green",  "blue",
-                                                 "magenta", "cyan", "orange", "brown"};
-  std::string a;
-  if (style.pen != 1)
-    a += fmt::format(" stroke=\"{}\"",
-                     colours[static_cast<std::size_t>(std::max(style.pen, 1) - 1) % 8]);
-  switch (style.dash) {
-    case Dash::solid:
-      break;
-    case Dash::dashed:
-      a += " stroke-dasharray=\"8 4\"";
-      break;
-    case Dash::chain:
-      a += " stroke-dasharray=\"12 3 2 3\"";
-      break;
-    case Dash::dotted:
-      a += " stroke-dasharray=\"1 3\"";
-      break;
-  }
-  if (style.weight > 1) a += fmt::format(" stroke-width=\"{}\"", style.weight);
+  std::string a = attributes_of(style);
   if (a == attributes_) return;
   close_polyline();
   attributes_ = std::move(a);

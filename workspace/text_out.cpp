@@ -63,4 +63,24 @@ std::string StringOut::take_text() {
   return std::move(text_);
 }
 
+namespace {
+constexpr std::size_t piece = std::size_t{1} << 20;
+}
+
+PiecesOut::PiecesOut() {
+  take(0);
+}
+
+void PiecesOut::put_into(TextOut& out) const {
+  for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
+  out.put(std::string_view(begin_, static_cast<std::size_t>(at_ - begin_)));
+}
+
+void PiecesOut::take(std::size_t) {
+  if (at_ != begin_) done_.push_back({std::move(open_), static_cast<std::size_t>(at_ - begin_)});
+  if (!open_) open_ = std::make_unique_for_overwrite<char[]>(piece);
+  begin_ = at_ = open_.get();
+  end_ = begin_ + piece;
+}
+
 }  // namespace igds

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "workspace/kernels/parallel.h"
@@ -79,6 +80,21 @@ class StringOut final : public TextOut {
   void take(std::size_t n) override;
   std::string text_;
   std::vector<char> buffer_;
+};
+
+// A text made aside in pieces of a megabyte, then put into another TextOut: the later half of a
+// large plot or document, made on a second thread while the first half goes into the file (a
+// string would be copied each time it grew). Written in order only (no seek).
+class PiecesOut final : public TextOut {
+ public:
+  PiecesOut();
+  // The text so far into `out`.
+  void put_into(TextOut& out) const;
+
+ private:
+  void take(std::size_t n) override;
+  std::unique_ptr<char[]> open_;
+  std::vector<std::pair<std::unique_ptr<char[]>, std::size_t>> done_;
 };
 
 // Room for put_each's items made aside, kept from one call to the next.
