@@ -271,6 +271,11 @@ std::size_t format_real(char* out, double value) {
   return static_cast<std::size_t>(o - out);
 }
 
+IntegerReals::IntegerReals(std::size_t n) : text_((n + 1) * slot), length_(n + 1) {
+  for (std::size_t k = 0; k <= n; ++k)
+    length_[k] = static_cast<std::uint8_t>(format_real(&text_[k * slot], double(k)));
+}
+
 void put_real(std::string& out, double value) {
   char buffer[32];
   out.append(buffer, format_real(buffer, value));
