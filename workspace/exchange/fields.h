@@ -43,7 +43,7 @@ void put_real(std::string& out, double value);
 std::size_t format_real(char* buffer, double value);
 
 // format_real of the integers 0 .. n, each made once: the knots and parameters of patches,
-// written again and again.
+// written again and again. Each text starts a slot of 32 readable bytes.
 class IntegerReals {
  public:
   explicit IntegerReals(std::size_t n);

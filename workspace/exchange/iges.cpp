@@ -49,6 +49,8 @@ std::string hollerith(std::string_view text) {
 // section's 64 and its pointer back to the directory (8 columns), then the section letter and
 // the sequence number.
 constexpr std::size_t record = 81;
+// The texts of numbers made ahead are kept in slots of 32 bytes (format_real's most).
+constexpr std::size_t slot = 32;
 
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
@@ -63,7 +65,7 @@ class Records {
         width_(width),
         sequence_(first_sequence),
         first_(first_sequence) {}
-  // Records at `w` (room for them all), numbered from `first_sequence`.
+  // Records at `w` (room for them all and `slot` bytes more), numbered from `first_sequence`.
   Records(char* w, char section, std::size_t width, std::size_t first_sequence)
       : section_(section),
         width_(width),
@@ -79,13 +81,22 @@ class Records {
   // A parameter and its delimiter (at most 71 characters together).
   void token(const char* text, std::size_t length, char delimiter) {
     if (used_ > 0 && used_ + length + 1 > width_) finish();
-    if (used_ == 0) line_ = out_ ? out_->room(record) : w_;
+    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
     std::memcpy(line_ + used_, text, length);
     line_[used_ + length] = delimiter;
     used_ += length + 1;
   }
   void token(std::string_view text, char delimiter = ',') {
     token(text.data(), text.size(), delimiter);
+  }
+  // The same for a text that starts a slot of `slot` readable bytes, copied whole (a record's
+  // room has that much to spare: the bytes after the parameter are written again later).
+  void slot_token(std::string_view text, char delimiter = ',') {
+    if (used_ > 0 && used_ + text.size() + 1 > width_) finish();
+    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
+    std::memcpy(line_ + used_, text.data(), slot);
+    line_[used_ + text.size()] = delimiter;
+    used_ += text.size() + 1;
   }
   void integer(std::int64_t v, char delimiter = ',') {
     char buffer[24];
@@ -175,7 +186,7 @@ void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size
     const std::size_t last = std::min(count, first + block);
     const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
     prepare(first, last);
-    std::size_t room = 0;
+    std::size_t room = slot;
     for (std::size_t k = half; k < last; ++k) room += most(k);
     if (half < last && aside.size < room) {
       aside.size = room;
@@ -254,10 +265,10 @@ char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
 // inner integer three times (the pieces join with C0 only, as the surface does), `last` four
 // times.
 void knots(Records& p, const IntegerReals& reals, std::size_t first, std::size_t last) {
-  for (int k = 0; k < 4; ++k) p.token(reals[first]);
+  for (int k = 0; k < 4; ++k) p.slot_token(reals[first]);
   for (std::size_t s = first + 1; s < last; ++s)
-    for (int k = 0; k < 3; ++k) p.token(reals[s]);
-  for (int k = 0; k < 4; ++k) p.token(reals[last]);
+    for (int k = 0; k < 3; ++k) p.slot_token(reals[s]);
+  for (int k = 0; k < 4; ++k) p.slot_token(reals[last]);
 }
 
 // Entity 126 of a curve or stringer (surface_curves.h: C2 in the running chord length).
@@ -324,7 +335,6 @@ class NetTexts {
   }
 
  private:
-  static constexpr std::size_t slot = 32;    // format_real's most
   static constexpr std::size_t window = 25;  // rows: eight rows of patches
   const BezierNet& net_;
   std::size_t lo_ = 0, hi_ = 0;
@@ -356,12 +366,12 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
   // Controls with the first index (u) varying fastest: along the net's rows.
   for (std::size_t r = row0; r < row0 + rows; ++r) {
     texts.rows(r, std::min(r + 3, row0 + rows - 1));
-    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.token(texts.at(r, k));
+    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.slot_token(texts.at(r, k));
   }
-  p.token(reals[u0]);
-  p.token(reals[u1]);
-  p.token(reals[v0]);
-  p.token(reals[v1], ';');
+  p.slot_token(reals[u0]);
+  p.slot_token(reals[u1]);
+  p.slot_token(reals[v0]);
+  p.slot_token(reals[v1], ';');
 }
 
 }  // namespace
