@@ -120,8 +120,7 @@ char* surface_line(char* w, std::size_t id, std::string_view name, const Surface
   put("),.UNSPECIFIED.,.F.,.F.,.F.,");
   const std::size_t u0 = f.col0 / 3, u1 = u0 + (f.cols - 1) / 3, v0 = f.row0 / 3,
                     v1 = v0 + (f.rows - 1) / 3;
-  // Knot multiplicities and values of Bézier spans on [first, last], one per unit: 4, 3, ..., 3,
-  // 4.
+  // Knot multiplicities (4, 3, ..., 3, 4) or values of Bézier spans on [first, last], one a unit.
   auto knots = [&](std::size_t first, std::size_t last, bool multiplicities) {
     *w++ = '(';
     for (std::size_t k = first; k <= last; ++k) {
@@ -306,10 +305,10 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   } else {
     // One instance per patch, made on two threads like the points.
     const std::size_t first_patch = s.next(), count = (nc - 1) * (ns - 1);
-    const std::size_t most = surface_most("PATCH 4294967295", {0, 4, 0, 4});
+    const std::size_t most = surface_most("PATCH 18446744073709551615", {0, 4, 0, 4});
     s.flush();
     put_each(text, count, most, threads, aside, block_bytes, [&](char* w, std::size_t k) {
-      char name[24] = "PATCH ";
+      char name[32] = "PATCH ";
       const std::size_t length =
           std::size_t(std::to_chars(name + 6, name + sizeof name, k + 1).ptr - name);
       return surface_line(w, first_patch + k, std::string_view(name, length),
