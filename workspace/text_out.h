@@ -111,8 +111,14 @@ struct Aside {
 template <class Make>
 void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned threads, Aside& aside,
               const Make& make) {
-  const std::size_t block =
-      threads > 1 ? std::max<std::size_t>(2, (std::size_t{8} << 20) / most) : count;
+  put_each(out, count, most, threads, aside, std::size_t{8} << 20, make);
+}
+
+// The same with blocks of about `block_bytes` of text (at least two items each).
+template <class Make>
+void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned threads, Aside& aside,
+              std::size_t block_bytes, const Make& make) {
+  const std::size_t block = threads > 1 ? std::max<std::size_t>(2, block_bytes / most) : count;
   for (std::size_t first = 0; first < count; first += block) {
     const std::size_t last = std::min(count, first + block);
     const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;

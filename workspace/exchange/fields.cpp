@@ -194,18 +194,74 @@ char* put_exponent(char* out, double value, int width, int digits) {
 
 namespace {
 
+// 10^k, k = 0..19: the powers of ten in 64 bits.
+constexpr std::uint64_t power_of_ten[20] = {1u,
+                                            10u,
+                                            100u,
+                                            1000u,
+                                            10000u,
+                                            100000u,
+                                            1000000u,
+                                            10000000u,
+                                            100000000u,
+                                            1000000000u,
+                                            10000000000u,
+                                            100000000000u,
+                                            1000000000000u,
+                                            10000000000000u,
+                                            100000000000000u,
+                                            1000000000000000u,
+                                            10000000000000000u,
+                                            100000000000000000u,
+                                            1000000000000000000u,
+                                            10000000000000000000u};
+
+// The number of decimal digits of v (v > 0).
+int digit_count(std::uint64_t v) {
+  const int t = (std::bit_width(v) * 1233) >> 12;  // floor(log10(v)) or one more
+  return t + 1 - (v < power_of_ten[t] ? 1 : 0);
+}
+
+// The eight digits of v (v < 10^8) at w, zeros first: four pairs made independently.
+void put_eight(char* w, std::uint32_t v) {
+  const std::uint32_t high = v / 10000, low = v % 10000;
+  std::memcpy(w, two_digits + 2 * (high / 100), 2);
+  std::memcpy(w + 2, two_digits + 2 * (high % 100), 2);
+  std::memcpy(w + 4, two_digits + 2 * (low / 100), 2);
+  std::memcpy(w + 6, two_digits + 2 * (low % 100), 2);
+}
+
+// The `count` digits of v (v < 10^count) at w, zeros first; returns w + count.
+char* put_digits(char* w, std::uint64_t v, int count) {
+  char* p = w + count;
+  for (; p - w >= 8; v /= 100000000) {
+    p -= 8;
+    put_eight(p, static_cast<std::uint32_t>(v % 100000000));
+  }
+  auto rest = static_cast<std::uint32_t>(v);
+  for (; p - w >= 2; rest /= 100) {
+    p -= 2;
+    std::memcpy(p, two_digits + 2 * (rest % 100), 2);
+  }
+  if (p > w) *--p = static_cast<char>('0' + rest);
+  return w + count;
+}
+
+// `count` zeros at w; returns w + count.
+char* put_zeros(char* w, int count) {
+  for (int k = 0; k < count; ++k) w[k] = '0';
+  return w + count;
+}
+
 // format_real of a finite non-zero value below 2^53 in magnitude, from its shortest digits
 // (fmt's Dragonbox, the digits std::to_chars chooses too, about three times as fast), laid out as
-// std::to_chars lays them out: fixed or scientific, whichever is shorter, fixed on a tie.
+// std::to_chars lays them out: fixed or scientific, whichever is shorter, fixed on a tie. The
+// digits are written where they go, two at a time.
 std::size_t format_real_fast(char* out, double value) {
   const auto decimal = fmt::detail::dragonbox::to_decimal(std::abs(value));
-  char digits[24];
-  char* end = digits + sizeof digits;
-  char* first = end;
-  for (std::uint64_t s = decimal.significand; s != 0; s /= 10)
-    *--first = static_cast<char>('0' + s % 10);
-  const int n = static_cast<int>(end - first), x = decimal.exponent;  // value = digits x 10^x
-  const int exponent = x + n - 1;                                     // d.ddd x 10^exponent
+  const std::uint64_t s = decimal.significand;
+  const int n = digit_count(s), x = decimal.exponent;  // value = s x 10^x, s of n digits
+  const int exponent = x + n - 1;                      // d.ddd x 10^exponent
   const int e_digits = std::abs(exponent) >= 100 ? 3 : 2;
   const int scientific = n + (n > 1 ? 1 : 0) + 2 + e_digits;
   const int fixed = x >= 0 ? n + x : (n > -x ? n + 1 : 2 - x);
@@ -214,31 +270,29 @@ std::size_t format_real_fast(char* out, double value) {
   if (fixed <= scientific) {
     if (x >= 0) {
       // An integer: its digits, its zeros, and the point.
-      o = std::copy(first, end, o);
-      o = std::fill_n(o, x, '0');
+      o = put_digits(o, s, n);
+      o = put_zeros(o, x);
       *o++ = '.';
     } else if (n > -x) {
-      o = std::copy(first, end + x, o);
+      const std::uint64_t scale = power_of_ten[-x];
+      o = put_digits(o, s / scale, n + x);
       *o++ = '.';
-      o = std::copy(end + x, end, o);
+      o = put_digits(o, s % scale, -x);
     } else {
       *o++ = '0';
       *o++ = '.';
-      o = std::fill_n(o, -x - n, '0');
-      o = std::copy(first, end, o);
+      o = put_zeros(o, -x - n);
+      o = put_digits(o, s, n);
     }
   } else {
-    *o++ = *first;
+    const std::uint64_t scale = power_of_ten[n - 1];
+    *o++ = static_cast<char>('0' + s / scale);
     *o++ = '.';
-    o = std::copy(first + 1, end, o);
+    o = put_digits(o, s % scale, n - 1);
     *o++ = 'E';
     if (exponent < 0) *o++ = '-';
-    char e[4];
-    char* e_end = e + sizeof e;
-    char* e_first = e_end;
-    for (int m = std::abs(exponent); m != 0 || e_first == e_end; m /= 10)
-      *--e_first = static_cast<char>('0' + m % 10);
-    o = std::copy(e_first, e_end, o);
+    const int m = std::abs(exponent);
+    o = put_digits(o, std::uint64_t(m), m >= 100 ? 3 : m >= 10 ? 2 : 1);
   }
   return static_cast<std::size_t>(o - out);
 }
@@ -269,6 +323,11 @@ std::size_t format_real(char* out, double value) {
     while (d < end) *o++ = *d++;
   }
   return static_cast<std::size_t>(o - out);
+}
+
+IntegerReals::IntegerReals(std::size_t n) : text_((n + 1) * slot), length_(n + 1) {
+  for (std::size_t k = 0; k <= n; ++k)
+    length_[k] = static_cast<std::uint8_t>(format_real(&text_[k * slot], double(k)));
 }
 
 void put_real(std::string& out, double value) {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace igds {
 
@@ -40,6 +41,21 @@ std::size_t format_exponent(char* buffer, double value, int digits);
 void put_real(std::string& out, double value);
 // The same into `buffer` (at least 32 characters); returns the length.
 std::size_t format_real(char* buffer, double value);
+
+// format_real of the integers 0 .. n, each made once: the knots and parameters of patches,
+// written again and again. Each text starts a slot of 32 readable bytes.
+class IntegerReals {
+ public:
+  explicit IntegerReals(std::size_t n);
+  std::string_view operator[](std::size_t k) const {
+    return {&text_[k * slot], std::size_t(length_[k])};
+  }
+
+ private:
+  static constexpr std::size_t slot = 32;
+  std::vector<char> text_;
+  std::vector<std::uint8_t> length_;
+};
 
 // A number read in FORTRAN's ways: an optional sign, digits with or without a point, and an
 // exponent written E, D (either case) or as a bare sign (0.1234567+100). nullopt for anything

@@ -4,6 +4,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -43,17 +45,33 @@ std::string hollerith(std::string_view text) {
   return fmt::format("{}H{}", s.size(), s);
 }
 
+// Every record is 80 columns and a newline: the S and G sections' 72 data columns, or the P
+// section's 64 and its pointer back to the directory (8 columns), then the section letter and
+// the sequence number.
+constexpr std::size_t record = 81;
+// The texts of numbers made ahead are kept in slots of 32 bytes (format_real's most).
+constexpr std::size_t slot = 32;
+
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
-// the pointer back to its directory entry). Each record is made in a buffer and appended whole.
+// the pointer back to its directory entry). Each record is made where it belongs, in the
+// TextOut's room or in memory.
 class Records {
  public:
+  // Records into `out`, numbered from `first_sequence`.
   Records(TextOut& out, char section, std::size_t width, std::size_t first_sequence)
-      : out_(out),
+      : out_(&out),
         section_(section),
         width_(width),
         sequence_(first_sequence),
         first_(first_sequence) {}
+  // Records at `w` (room for them all and `slot` bytes more), numbered from `first_sequence`.
+  Records(char* w, char section, std::size_t width, std::size_t first_sequence)
+      : section_(section),
+        width_(width),
+        sequence_(first_sequence),
+        first_(first_sequence),
+        w_(w) {}
 
   // Starts an entity's parameters (P section): records end with its DE pointer.
   void begin(std::size_t de) {
@@ -63,12 +81,22 @@ class Records {
   // A parameter and its delimiter (at most 71 characters together).
   void token(const char* text, std::size_t length, char delimiter) {
     if (used_ > 0 && used_ + length + 1 > width_) finish();
-    for (std::size_t k = 0; k < length; ++k) line_[used_ + k] = text[k];
+    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
+    std::memcpy(line_ + used_, text, length);
     line_[used_ + length] = delimiter;
     used_ += length + 1;
   }
   void token(std::string_view text, char delimiter = ',') {
     token(text.data(), text.size(), delimiter);
+  }
+  // The same for a text that starts a slot of `slot` readable bytes, copied whole (a record's
+  // room has that much to spare: the bytes after the parameter are written again later).
+  void slot_token(std::string_view text, char delimiter = ',') {
+    if (used_ > 0 && used_ + text.size() + 1 > width_) finish();
+    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
+    std::memcpy(line_ + used_, text.data(), slot);
+    line_[used_ + text.size()] = delimiter;
+    used_ += text.size() + 1;
   }
   void integer(std::int64_t v, char delimiter = ',') {
     char buffer[24];
@@ -83,7 +111,7 @@ class Records {
   std::size_t finish() {
     if (used_ == 0) return sequence_ - first_;
     if (sequence_ > max_sequence) too_many_lines(sequence_);
-    for (std::size_t k = used_; k < width_; ++k) line_[k] = ' ';
+    std::memset(line_ + used_, ' ', width_ - used_);
     std::size_t at = width_;
     if (section_ == 'P') {
       line_[at++] = ' ';
@@ -92,12 +120,19 @@ class Records {
     line_[at++] = section_;
     at = right_justified(at, sequence_++, 7);
     line_[at++] = '\n';
-    out_.put(std::string_view(line_, at));
+    if (out_)
+      out_->commit(line_ + at);
+    else
+      w_ = line_ + at;
     used_ = 0;
     return sequence_ - first_;
   }
   std::size_t next_sequence() const { return sequence_; }
   std::size_t first() const { return first_; }
+  // `lines` records made elsewhere follow those made here.
+  void advance(std::size_t lines) { sequence_ += lines; }
+  // Where the records made in memory end.
+  char* end() const { return w_; }
 
  private:
   std::size_t right_justified(std::size_t at, std::size_t value, std::size_t width) {
@@ -105,50 +140,135 @@ class Records {
       line_[at + k] = value > 0 || k == width - 1 ? char('0' + value % 10) : ' ';
     return at + width;
   }
-  TextOut& out_;
+  TextOut* out_ = nullptr;
   char section_;
   std::size_t width_, used_ = 0, sequence_, de_ = 0, first_;
-  char line_[96];
+  char* w_ = nullptr;
+  char* line_ = nullptr;
 };
+
+// Numbers the records at [begin, end) first, first + 1, ... (columns 74-80), in place.
+void number_records(char* begin, char* end, std::size_t first) {
+  char digits[7];
+  for (std::size_t k = 7, value = first; k-- > 0; value /= 10)
+    digits[k] = value > 0 || k == 6 ? char('0' + value % 10) : ' ';
+  for (char* line = begin; line < end; line += record) {
+    std::memcpy(line + 73, digits, 7);
+    int k = 6;
+    for (; k >= 0 && digits[k] == '9'; --k) digits[k] = '0';
+    if (k >= 0) digits[k] = digits[k] == ' ' ? '1' : char(digits[k] + 1);
+  }
+}
 
 struct Entity {
   int type = 0;
   std::size_t parameters = 0;  // first P line
   std::size_t lines = 0;       // P lines
-  std::string label;
+  std::string_view label;
   int subscript = 0;
 };
 
-// One directory entry: two records of nine 8-column fields (IGES 5.3, 2.2.4.4).
-void directory_entry(TextOut& out, const Entity& e, std::size_t sequence) {
-  std::string records;
-  put_integer(records, e.type, 8);
-  put_integer(records, std::int64_t(e.parameters), 8);
-  for (int k = 0; k < 6; ++k)
-    put_integer(records, 0, 8);  // structure, font, level, view, matrix, label
-  records += "00000000";         // status: visible, independent, geometry, hierarchy global
-  end_record(records, 'D', sequence);
-  put_integer(records, e.type, 8);
-  put_integer(records, 0, 8);  // line weight
-  put_integer(records, 0, 8);  // colour
-  put_integer(records, std::int64_t(e.lines), 8);
-  put_integer(records, 0, 8);  // form
-  records.append(16, ' ');     // reserved
-  records.append(8 - std::min<std::size_t>(8, e.label.size()), ' ');
-  records.append(e.label, 0, 8);
-  put_integer(records, e.subscript, 8);
-  end_record(records, 'D', sequence + 1);
-  out.put(records);
+// Puts into `p` the parameters of entities [0, count), the next ones of the file after `list`,
+// and adds them to `list`: entity k's written by write(p, k), which returns its type, label and
+// subscript, in at most most(k) bytes. With `threads` 2, block by block (`block` entities,
+// prepare(first, last) called first), the calling thread writes the first half of a block
+// straight into `out` while a second writes the rest into `aside`, numbered from 1; once the
+// first half's records are counted the rest are numbered on from them and put: the same
+// records, as put_each makes them (text_out.h).
+template <class Most, class Prepare, class Write>
+void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size_t count,
+                  std::size_t block, unsigned threads, Aside& aside, const Most& most,
+                  const Prepare& prepare, const Write& write) {
+  if (threads <= 1) block = count;
+  block = std::max<std::size_t>(block, 2);
+  std::vector<Entity> side;
+  for (std::size_t first = 0; first < count; first += block) {
+    const std::size_t last = std::min(count, first + block);
+    const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
+    prepare(first, last);
+    std::size_t room = slot;
+    for (std::size_t k = half; k < last; ++k) room += most(k);
+    if (half < last && aside.size < room) {
+      aside.size = room;
+      aside.bytes = std::make_unique_for_overwrite<char[]>(aside.size);
+    }
+    const std::size_t first_entity = list.size();
+    side.clear();
+    char* aside_end = aside.bytes.get();
+    parallel_for(2, half < last ? 2 : 1, [&](std::size_t from, std::size_t to) {
+      for (std::size_t part = from; part < to; ++part) {
+        if (part == 0) {
+          for (std::size_t k = first; k < half; ++k) {
+            p.begin(2 * list.size() + 1);
+            Entity e = write(p, k);
+            e.lines = p.finish();
+            e.parameters = p.first();
+            list.push_back(e);
+          }
+        } else {
+          Records q(aside.bytes.get(), 'P', 64, 1);
+          for (std::size_t k = half; k < last; ++k) {
+            q.begin(2 * (first_entity + k - first) + 1);
+            Entity e = write(q, k);
+            e.lines = q.finish();
+            e.parameters = q.first();
+            side.push_back(e);
+          }
+          aside_end = q.end();
+        }
+      }
+    });
+    const std::size_t lines = std::size_t(aside_end - aside.bytes.get()) / record;
+    if (lines == 0) continue;
+    const std::size_t base = p.next_sequence();
+    if (base + lines - 1 > max_sequence) too_many_lines(max_sequence + 1);
+    number_records(aside.bytes.get(), aside_end, base);
+    for (Entity& e : side) {
+      e.parameters += base - 1;
+      list.push_back(e);
+    }
+    p.advance(lines);
+    out.put(std::string_view(aside.bytes.get(), lines * record));
+  }
+}
+
+// One directory entry at w: two records of nine 8-column fields (IGES 5.3, 2.2.4.4); where it
+// ends (at most directory_most bytes).
+constexpr std::size_t directory_most = 512;
+char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
+  auto end_record = [&](std::size_t n) {
+    if (n > max_sequence) too_many_lines(n);
+    *w++ = 'D';
+    w = put_integer(w, std::int64_t(n), 7);
+    *w++ = '\n';
+  };
+  w = put_integer(w, e.type, 8);
+  w = put_integer(w, std::int64_t(e.parameters), 8);
+  // Structure, font, level, view, matrix, label.
+  for (int k = 0; k < 6; ++k) w = put_integer(w, 0, 8);
+  w = std::copy_n("00000000", 8, w);  // status: visible, independent, geometry, hierarchy global
+  end_record(sequence);
+  w = put_integer(w, e.type, 8);
+  w = put_integer(w, 0, 8);  // line weight
+  w = put_integer(w, 0, 8);  // colour
+  w = put_integer(w, std::int64_t(e.lines), 8);
+  w = put_integer(w, 0, 8);     // form
+  w = std::fill_n(w, 16, ' ');  // reserved
+  w = std::fill_n(w, 8 - std::min<std::size_t>(8, e.label.size()), ' ');
+  w = std::copy_n(e.label.data(), std::min<std::size_t>(8, e.label.size()), w);
+  w = put_integer(w, e.subscript, 8);
+  end_record(sequence + 1);
+  return w;
 }
 
 // Knots of Bézier spans of degree 3 on [first, last], one per unit: `first` four times, each
 // inner integer three times (the pieces join with C0 only, as the surface does), `last` four
 // times.
-void knots(Records& p, std::size_t first, std::size_t last) {
-  for (int k = 0; k < 4; ++k) p.real(double(first));
+void knots(Records& p, const IntegerReals& reals, std::size_t first, std::size_t last) {
+  for (int k = 0; k < 4; ++k) p.slot_token(reals[first]);
   for (std::size_t s = first + 1; s < last; ++s)
-    for (int k = 0; k < 3; ++k) p.real(double(s));
-  for (int k = 0; k < 4; ++k) p.real(double(last));
+    for (int k = 0; k < 3; ++k) p.slot_token(reals[s]);
+  for (int k = 0; k < 4; ++k) p.slot_token(reals[last]);
 }
 
 // Entity 126 of a curve or stringer (surface_curves.h: C2 in the running chord length).
@@ -161,8 +281,11 @@ void write_curve(Records& p, const CubicBspline& c) {
   p.integer(closed ? 1 : 0);                       // PROP2: closed
   p.integer(1);                                    // PROP3: polynomial
   p.integer(0);                                    // PROP4: not periodic
-  for (std::size_t k = 0; k < c.knots.size(); ++k)
-    for (int m = 0; m < c.multiplicities[k]; ++m) p.real(c.knots[k]);
+  for (std::size_t k = 0; k < c.knots.size(); ++k) {
+    char knot[32];
+    const std::size_t length = format_real(knot, c.knots[k]);
+    for (int m = 0; m < c.multiplicities[k]; ++m) p.token(knot, length, ',');
+  }
   for (std::size_t k = 0; k < c.controls.size(); ++k) p.token("1.", 2, ',');  // weights
   for (Vec3 v : c.controls) {
     p.real(v.x);
@@ -182,19 +305,27 @@ void write_curve(Records& p, const CubicBspline& c) {
 class NetTexts {
  public:
   explicit NetTexts(const BezierNet& net) : net_(net) {}
-  // Makes rows [first, last] ready (and some after them).
+  // Makes rows [first, last] ready (and some after them); rows already made are kept.
   void rows(std::size_t first, std::size_t last) {
     if (first >= lo_ && last < hi_) return;
-    lo_ = first;
-    hi_ = std::min(net_.rows, std::max(last + 1, first + window));
-    const std::size_t n = (hi_ - lo_) * net_.cols * 3;
-    text_.resize(n * slot);
-    length_.resize(n);
-    const double* v = &net_.xyz[3 * lo_ * net_.cols];
+    const std::size_t row = net_.cols * 3;
+    const std::size_t lo = first, hi = std::min(net_.rows, std::max(last + 1, first + window));
+    // Rows [first, hi_) are made: moved to the front, the others made after them.
+    const std::size_t kept = first >= lo_ && first < hi_ ? hi_ - first : 0;
+    if (kept > 0) {
+      std::memmove(text_.data(), &text_[(first - lo_) * row * slot], kept * row * slot);
+      std::memmove(length_.data(), &length_[(first - lo_) * row], kept * row);
+    }
+    text_.resize((hi - lo) * row * slot);
+    length_.resize((hi - lo) * row);
+    lo_ = lo;
+    hi_ = hi;
+    const std::size_t made = kept * row, n = (hi - lo) * row - made;
+    const double* v = &net_.xyz[lo * row + made];
     const unsigned threads = n >= 4096 ? std::min(2u, threads_for(std::size_t{1} << 20)) : 1;
     parallel_for(n, threads, [&](std::size_t from, std::size_t to) {
       for (std::size_t k = from; k < to; ++k)
-        length_[k] = static_cast<std::uint8_t>(format_real(&text_[k * slot], v[k]));
+        length_[made + k] = static_cast<std::uint8_t>(format_real(&text_[(made + k) * slot], v[k]));
     });
   }
   // Number `k` (3 per control, x y z) of row `row`, made ready by rows().
@@ -204,7 +335,6 @@ class NetTexts {
   }
 
  private:
-  static constexpr std::size_t slot = 32;    // format_real's most
   static constexpr std::size_t window = 25;  // rows: eight rows of patches
   const BezierNet& net_;
   std::size_t lo_ = 0, hi_ = 0;
@@ -213,9 +343,11 @@ class NetTexts {
 };
 
 // Entity 128 of the net's rows [row0, row0 + rows) and columns [col0, col0 + cols): the whole
-// surface, or one patch, on the parameters [u0, u1] x [v0, v1]; the net's numbers from `texts`.
-void write_surface(Records& p, NetTexts& texts, std::size_t row0, std::size_t rows,
-                   std::size_t col0, std::size_t cols) {
+// surface, or one patch, on the parameters [u0, u1] x [v0, v1]; the net's numbers from `texts`
+// (made ready here, unless they are: then `texts` is only read, by any thread), the knots and
+// parameters from `reals`.
+void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::size_t row0,
+                   std::size_t rows, std::size_t col0, std::size_t cols) {
   const std::size_t u0 = col0 / 3, u1 = u0 + (cols - 1) / 3, v0 = row0 / 3,
                     v1 = v0 + (rows - 1) / 3;
   p.integer(128);
@@ -228,30 +360,31 @@ void write_surface(Records& p, NetTexts& texts, std::size_t row0, std::size_t ro
   p.integer(1);  // PROP3: polynomial
   p.integer(0);  // PROP4, PROP5: not periodic
   p.integer(0);
-  knots(p, u0, u1);
-  knots(p, v0, v1);
+  knots(p, reals, u0, u1);
+  knots(p, reals, v0, v1);
   for (std::size_t k = 0; k < rows * cols; ++k) p.token("1.", 2, ',');
   // Controls with the first index (u) varying fastest: along the net's rows.
   for (std::size_t r = row0; r < row0 + rows; ++r) {
     texts.rows(r, std::min(r + 3, row0 + rows - 1));
-    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.token(texts.at(r, k));
+    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.slot_token(texts.at(r, k));
   }
-  p.real(double(u0));
-  p.real(double(u1));
-  p.real(double(v0));
-  p.real(double(v1), ';');
+  p.slot_token(reals[u0]);
+  p.slot_token(reals[u1]);
+  p.slot_token(reals[v0]);
+  p.slot_token(reals[v1], ';');
 }
 
 }  // namespace
 
 void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& out, SurfaceForm form) {
+                TextOut& out, SurfaceForm form, CadSplit split) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
-  for (double v : net.xyz) largest = std::max(largest, std::abs(v));
-  for (double v : net.xyz)
+  for (double v : net.xyz) {
     if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
+    largest = std::max(largest, std::abs(v));
+  }
 
   // Start section.
   std::size_t s_lines = 0;
@@ -300,46 +433,76 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::size_t g_lines = g.finish();
 
   // A curve or stringer whose input points all coincide (a pole) is a point: left out.
-  std::vector<std::pair<std::size_t, CubicBspline>> curves, stringers;
-  for (std::size_t i = 0; i < nc; ++i)
-    if (auto c = input_curve_bspline(net, i)) curves.emplace_back(i + 1, std::move(*c));
-  for (std::size_t j = 0; j < ns; ++j)
-    if (auto c = input_stringer_bspline(net, j)) stringers.emplace_back(j + 1, std::move(*c));
-  const std::size_t entities =
-      (form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1)) + curves.size() + stringers.size();
+  const unsigned threads =
+      split.threads > 0 ? split.threads : std::min(2u, threads_for(net.xyz.size()));
+  std::vector<std::optional<CubicBspline>> splines(nc + ns);
+  parallel_for(nc + ns, threads, [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k)
+      splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
+  });
+  std::vector<std::size_t> curves;  // the indices of splines kept
+  for (std::size_t k = 0; k < nc + ns; ++k)
+    if (splines[k]) curves.push_back(k);
+  const std::size_t patch_count = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
+  const std::size_t entities = patch_count + curves.size();
 
   // Directory section: 2 records of 81 characters per entity, written once the parameters are.
   const std::uint64_t d_at = out.offset();
   const std::size_t d_lines = 2 * entities;
-  out.skip(81 * d_lines);
+  out.skip(record * d_lines);
 
   // Parameter section.
+  const std::size_t block_bytes = split.block_bytes > 0 ? split.block_bytes : std::size_t{8} << 20;
   std::vector<Entity> list;
   list.reserve(entities);
   Records p(out, 'P', 64, 1);
-  auto entity = [&](int type, const char* label, std::size_t subscript, auto&& write) {
-    p.begin(2 * list.size() + 1);
-    write();
-    const std::size_t lines = p.finish();
-    list.push_back({type, p.first(), lines, label, int(subscript)});
-  };
+  Aside aside;
   NetTexts texts(net);
+  const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
-    entity(128, "SURFACE", 0, [&] { write_surface(p, texts, 0, net.rows, 0, net.cols); });
+    p.begin(1);
+    write_surface(p, texts, reals, 0, net.rows, 0, net.cols);
+    const std::size_t lines = p.finish();
+    list.push_back({128, p.first(), lines, "SURFACE", 0});
   } else {
-    for (std::size_t i = 0; i + 1 < nc; ++i)
-      for (std::size_t j = 0; j + 1 < ns; ++j)
-        entity(128, "PATCH", i * (ns - 1) + j + 1,
-               [&] { write_surface(p, texts, 3 * i, 4, 3 * j, 4); });
+    // A patch's 94 parameters, two or more to a record (none is longer than 25 characters).
+    const std::size_t patch_most = (94 / 2) * record;
+    put_entities(
+        out, p, list, patch_count, std::max<std::size_t>(1, block_bytes / patch_most), threads,
+        aside, [&](std::size_t) { return patch_most; },
+        [&](std::size_t first, std::size_t last) {
+          texts.rows(3 * (first / (ns - 1)), 3 * ((last - 1) / (ns - 1)) + 3);
+        },
+        [&](Records& q, std::size_t k) {
+          const std::size_t i = k / (ns - 1), j = k % (ns - 1);
+          write_surface(q, texts, reals, 3 * i, 4, 3 * j, 4);
+          return Entity{.type = 128, .label = "PATCH", .subscript = int(k + 1)};
+        });
   }
-  for (const auto& c : curves) entity(126, "CURVE", c.first, [&] { write_curve(p, c.second); });
-  for (const auto& c : stringers)
-    entity(126, "STRINGER", c.first, [&] { write_curve(p, c.second); });
+  auto curve_most = [&](std::size_t k) {
+    const CubicBspline& c = *splines[curves[k]];
+    std::size_t parameters = 7 + 4 * c.controls.size() + 5;
+    for (int m : c.multiplicities) parameters += std::size_t(m);
+    return (parameters / 2 + 1) * record;
+  };
+  put_entities(
+      out, p, list, curves.size(),
+      curves.empty() ? 1 : std::max<std::size_t>(1, block_bytes / curve_most(0)), threads, aside,
+      curve_most, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        const std::size_t index = curves[k];
+        write_curve(q, *splines[index]);
+        const bool curve = index < nc;
+        return Entity{.type = 126,
+                      .label = curve ? "CURVE" : "STRINGER",
+                      .subscript = int(curve ? index + 1 : index - nc + 1)};
+      });
   const std::size_t p_lines = p.next_sequence() - 1;
 
   const std::uint64_t end = out.offset();
   out.seek(d_at);
-  for (std::size_t e = 0; e < list.size(); ++e) directory_entry(out, list[e], 2 * e + 1);
+  put_each(out, list.size(), directory_most, threads, aside, block_bytes,
+           [&](char* w, std::size_t e) { return directory_entry(w, list[e], 2 * e + 1); });
   out.seek(end);
 
   // Terminate section.
@@ -356,9 +519,9 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
 }
 
 std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form) {
+                       SurfaceForm form, CadSplit split) {
   StringOut out;
-  write_iges(input, patches, header, out, form);
+  write_iges(input, patches, header, out, form, split);
   return out.take_text();
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -10,19 +11,20 @@
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
 namespace {
 
 // Entity instances of the exchange structure (ISO 10303-21), numbered in order, made in a string
-// that is handed on to `text` whenever it holds more than 64 KB.
+// that is handed on to `text` whenever it holds more than 64 KB (or kept, with no `text`).
 class Instances {
  public:
-  Instances(std::string& out, TextOut& text) : out_(out), text_(text) {}
+  Instances(std::string& out, TextOut* text) : out_(out), text_(text) {}
   // Starts instance #n = and returns n.
   std::size_t begin() {
-    if (out_.size() >= (std::size_t{1} << 16)) flush();
+    if (text_ && out_.size() >= (std::size_t{1} << 16)) flush();
     const std::size_t id = next_++;
     ref(id);
     out_ += '=';
@@ -58,13 +60,13 @@ class Instances {
   std::string& out() { return out_; }
   // Hands what is made on to `text`.
   void flush() {
-    text_.put(out_);
+    text_->put(out_);
     out_.clear();
   }
 
  private:
   std::string& out_;
-  TextOut& text_;
+  TextOut* text_;
   std::size_t next_ = 1;
 };
 
@@ -85,6 +87,62 @@ char* point_line(char* w, std::size_t id, const double xyz[3]) {
   return w;
 }
 
+// Instance #id = B_SPLINE_SURFACE_WITH_KNOTS('name',...) of the net's rows [row0, row0 + rows)
+// and columns [col0, col0 + cols) at w, the control point of row r and column c being instance
+// first_point + r * net_cols + c, listed by u (columns) outside, v (rows) inside; the knots from
+// `reals`. Returns where it ends (at most surface_most bytes after w).
+struct SurfaceOf {
+  std::size_t row0, rows, col0, cols;
+};
+std::size_t surface_most(std::string_view name, const SurfaceOf& f) {
+  const std::size_t knots = std::max(f.rows, f.cols) / 3 + 1;
+  return 128 + name.size() + f.cols * (8 + 22 * f.rows) + 4 * 34 * knots;
+}
+char* surface_line(char* w, std::size_t id, std::string_view name, const SurfaceOf& f,
+                   std::size_t first_point, std::size_t net_cols, const IntegerReals& reals) {
+  auto put = [&](std::string_view text) { w = std::copy(text.begin(), text.end(), w); };
+  auto ref = [&](std::size_t n) {
+    *w++ = '#';
+    w = std::to_chars(w, w + 24, n).ptr;
+  };
+  ref(id);
+  put("=B_SPLINE_SURFACE_WITH_KNOTS('");
+  put(name);
+  put("',3,3,(");
+  for (std::size_t c = f.col0; c < f.col0 + f.cols; ++c) {
+    put(c > f.col0 ? ",\n  (" : "(");
+    for (std::size_t r = f.row0; r < f.row0 + f.rows; ++r) {
+      if (r > f.row0) *w++ = ',';
+      ref(first_point + r * net_cols + c);
+    }
+    *w++ = ')';
+  }
+  put("),.UNSPECIFIED.,.F.,.F.,.F.,");
+  const std::size_t u0 = f.col0 / 3, u1 = u0 + (f.cols - 1) / 3, v0 = f.row0 / 3,
+                    v1 = v0 + (f.rows - 1) / 3;
+  // Knot multiplicities (4, 3, ..., 3, 4) or values of Bézier spans on [first, last], one a unit.
+  auto knots = [&](std::size_t first, std::size_t last, bool multiplicities) {
+    *w++ = '(';
+    for (std::size_t k = first; k <= last; ++k) {
+      if (k > first) *w++ = ',';
+      if (multiplicities)
+        *w++ = k == first || k == last ? '4' : '3';
+      else
+        w = std::copy(reals[k].begin(), reals[k].end(), w);
+    }
+    *w++ = ')';
+  };
+  knots(u0, u1, true);
+  *w++ = ',';
+  knots(v0, v1, true);
+  *w++ = ',';
+  knots(u0, u1, false);
+  *w++ = ',';
+  knots(v0, v1, false);
+  put(",.UNSPECIFIED.);\n");
+  return w;
+}
+
 // A list of references, a few to a line.
 void references(Instances& s, const std::vector<std::size_t>& ids) {
   s.out() += '(';
@@ -95,23 +153,44 @@ void references(Instances& s, const std::vector<std::size_t>& ids) {
   s.out() += ')';
 }
 
-// Knot multiplicities and values of Bézier spans on [first, last], one per unit: 4, 3, ..., 3, 4.
-void bezier_knots(Instances& s, std::size_t first, std::size_t last, bool multiplicities) {
-  s.out() += '(';
-  for (std::size_t k = first; k <= last; ++k) {
-    if (k > first) s.out() += ',';
-    if (multiplicities)
-      s.integer(k == first || k == last ? 4 : 3);
-    else
-      s.real(double(k));
+// A curve's control points, then the curve: instances numbered on from s.next().
+void curve_instances(Instances& s, const std::string& name, const CubicBspline& c) {
+  std::string& out = s.out();
+  std::vector<std::size_t> points;
+  for (Vec3 v : c.controls) {
+    points.push_back(s.begin());
+    out += "CARTESIAN_POINT('',(";
+    s.real(v.x);
+    out += ',';
+    s.real(v.y);
+    out += ',';
+    s.real(v.z);
+    out += "));\n";
   }
-  s.out() += ')';
+  s.begin();
+  out += "B_SPLINE_CURVE_WITH_KNOTS(";
+  s.string(name);
+  out += ",3,";
+  references(s, points);
+  out += ",.UNSPECIFIED.,";
+  out += c.controls.front() == c.controls.back() ? ".T." : ".F.";
+  out += ",.F.,(";
+  for (std::size_t k = 0; k < c.multiplicities.size(); ++k) {
+    if (k > 0) out += ',';
+    s.integer(c.multiplicities[k]);
+  }
+  out += "),(";
+  for (std::size_t k = 0; k < c.knots.size(); ++k) {
+    if (k > 0) out += ',';
+    s.real(c.knots[k]);
+  }
+  out += "),.UNSPECIFIED.);\n";
 }
 
 }  // namespace
 
 void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& text, SurfaceForm form) {
+                TextOut& text, SurfaceForm form, CadSplit split) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
@@ -122,7 +201,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
 
   std::string out;
   out.reserve(std::size_t{1} << 17);
-  Instances s(out, text);
+  Instances s(out, &text);
   out += "ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((";
   s.string("IGDS surface " + header.name);
   out += "),'2;1');\nFILE_NAME(";
@@ -205,86 +284,84 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   // The net's control points, row by row: the bulk of the file, made on two threads.
   const std::size_t first_point = s.next(), points = net.rows * net.cols;
   s.flush();
+  const unsigned threads = split.threads > 0 ? split.threads : threads_for(3 * points);
+  const std::size_t block_bytes = split.block_bytes > 0 ? split.block_bytes : std::size_t{8} << 20;
   Aside aside;
-  put_each(text, points, point_line_most, threads_for(3 * points), aside,
+  put_each(text, points, point_line_most, threads, aside, block_bytes,
            [&](char* w, std::size_t k) { return point_line(w, first_point + k, &net.xyz[3 * k]); });
   s.skip(points);
-  auto point_id = [&](std::size_t row, std::size_t col) {
-    return first_point + row * net.cols + col;
-  };
 
   std::vector<std::size_t> items;
-  // A surface of the net's rows [row0, row0 + rows) and columns [col0, col0 + cols): control
-  // points listed by u (columns) outside, v (rows) inside.
-  auto surface = [&](const std::string& name, std::size_t row0, std::size_t rows, std::size_t col0,
-                     std::size_t cols) {
-    items.push_back(s.begin());
-    out += "B_SPLINE_SURFACE_WITH_KNOTS(";
-    s.string(name);
-    out += ",3,3,(";
-    for (std::size_t c = col0; c < col0 + cols; ++c) {
-      out += c > col0 ? ",\n  (" : "(";
-      for (std::size_t r = row0; r < row0 + rows; ++r) {
-        if (r > row0) out += ',';
-        s.ref(point_id(r, c));
-      }
-      out += ')';
-    }
-    out += "),.UNSPECIFIED.,.F.,.F.,.F.,";
-    const std::size_t u0 = col0 / 3, u1 = u0 + (cols - 1) / 3, v0 = row0 / 3,
-                      v1 = v0 + (rows - 1) / 3;
-    bezier_knots(s, u0, u1, true);
-    out += ',';
-    bezier_knots(s, v0, v1, true);
-    out += ',';
-    bezier_knots(s, u0, u1, false);
-    out += ',';
-    bezier_knots(s, v0, v1, false);
-    out += ",.UNSPECIFIED.);\n";
-  };
+  const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
-    surface("SURFACE", 0, net.rows, 0, net.cols);
+    const SurfaceOf whole{0, net.rows, 0, net.cols};
+    const std::size_t size = out.size();
+    out.resize(size + surface_most("SURFACE", whole));
+    items.push_back(s.next());
+    s.skip(1);
+    out.resize(std::size_t(surface_line(out.data() + size, items.back(), "SURFACE", whole,
+                                        first_point, net.cols, reals) -
+                           out.data()));
   } else {
-    for (std::size_t i = 0; i + 1 < nc; ++i)
-      for (std::size_t j = 0; j + 1 < ns; ++j)
-        surface("PATCH " + std::to_string(i * (ns - 1) + j + 1), 3 * i, 4, 3 * j, 4);
+    // One instance per patch, made on two threads like the points.
+    const std::size_t first_patch = s.next(), count = (nc - 1) * (ns - 1);
+    const std::size_t most = surface_most("PATCH 18446744073709551615", {0, 4, 0, 4});
+    s.flush();
+    put_each(text, count, most, threads, aside, block_bytes, [&](char* w, std::size_t k) {
+      char name[32] = "PATCH ";
+      const std::size_t length =
+          std::size_t(std::to_chars(name + 6, name + sizeof name, k + 1).ptr - name);
+      return surface_line(w, first_patch + k, std::string_view(name, length),
+                          {3 * (k / (ns - 1)), 4, 3 * (k % (ns - 1)), 4}, first_point, net.cols,
+                          reals);
+    });
+    s.skip(count);
+    items.resize(count);
+    for (std::size_t k = 0; k < count; ++k) items[k] = first_patch + k;
   }
 
-  auto curve = [&](const std::string& name, const CubicBspline& c) {
-    std::vector<std::size_t> points;
-    for (Vec3 v : c.controls) {
-      points.push_back(s.begin());
-      out += "CARTESIAN_POINT('',(";
-      s.real(v.x);
-      out += ',';
-      s.real(v.y);
-      out += ',';
-      s.real(v.z);
-      out += "));\n";
-    }
-    items.push_back(s.begin());
-    out += "B_SPLINE_CURVE_WITH_KNOTS(";
-    s.string(name);
-    out += ",3,";
-    references(s, points);
-    out += ",.UNSPECIFIED.,";
-    out += c.controls.front() == c.controls.back() ? ".T." : ".F.";
-    out += ",.F.,(";
-    for (std::size_t k = 0; k < c.multiplicities.size(); ++k) {
-      if (k > 0) out += ',';
-      s.integer(c.multiplicities[k]);
-    }
-    out += "),(";
-    for (std::size_t k = 0; k < c.knots.size(); ++k) {
-      if (k > 0) out += ',';
-      s.real(c.knots[k]);
-    }
-    out += "),.UNSPECIFIED.);\n";
-  };
-  for (std::size_t i = 0; i < nc; ++i)
-    if (auto c = input_curve_bspline(net, i)) curve("CURVE " + std::to_string(i + 1), *c);
-  for (std::size_t j = 0; j < ns; ++j)
-    if (auto c = input_stringer_bspline(net, j)) curve("STRINGER " + std::to_string(j + 1), *c);
+  // The curves and stringers: their instances numbered ahead, made some curves at a time on two
+  // threads (each into a string of its own), then put in order.
+  std::vector<std::optional<CubicBspline>> splines(nc + ns);
+  parallel_for(nc + ns, std::min(2u, threads), [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to; ++k)
+      splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
+  });
+  std::vector<std::size_t> curves, first_ids;  // the splines kept, their first instances
+  std::size_t bytes = 0;                       // about the text of the curves
+  for (std::size_t k = 0; k < nc + ns; ++k) {
+    if (!splines[k]) continue;
+    curves.push_back(k);
+    first_ids.push_back(s.next());
+    s.skip(splines[k]->controls.size());
+    items.push_back(s.next());
+    s.skip(1);
+    bytes += 80 * splines[k]->controls.size();
+  }
+  s.flush();
+  const std::size_t block =
+      curves.empty() ? 1 : std::max<std::size_t>(2, block_bytes / (bytes / curves.size() + 1));
+  std::string texts[2];
+  for (std::size_t first = 0; first < curves.size(); first += block) {
+    const std::size_t last = std::min(curves.size(), first + block);
+    const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
+    parallel_for(2, half < last ? 2 : 1, [&](std::size_t from, std::size_t to) {
+      for (std::size_t part = from; part < to; ++part) {
+        texts[part].clear();
+        for (std::size_t k = part == 0 ? first : half; k < (part == 0 ? half : last); ++k) {
+          const std::size_t index = curves[k];
+          Instances c(texts[part], nullptr);
+          c.skip(first_ids[k] - 1);
+          curve_instances(c,
+                          index < nc ? "CURVE " + std::to_string(index + 1)
+                                     : "STRINGER " + std::to_string(index - nc + 1),
+                          *splines[index]);
+        }
+      }
+    });
+    text.put(texts[0]);
+    if (half < last) text.put(texts[1]);
+  }
 
   const std::size_t set = s.begin();
   out += "GEOMETRIC_SET('',";
@@ -324,9 +401,9 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
 }
 
 std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form) {
+                       SurfaceForm form, CadSplit split) {
   StringOut out;
-  write_step(input, patches, header, out, form);
+  write_step(input, patches, header, out, form, split);
   return out.take_text();
 }
 
