@@ -140,12 +140,12 @@ void HpglEncoder::draw_polylines(const PlotOrder& order, std::span<const Line> l
 void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines,
                              unsigned threads) {
   // The polyline where the strokes' points are about halved.
-  std::size_t points = 0;
-  for (const Stroke& stroke : order.strokes) points += stroke.last - stroke.first;
-  std::size_t split = 0;
-  for (std::size_t half = 0; split < order.size() && 2 * half < points; ++split)
-    for (std::size_t s = order.starts[split]; s < order.starts[split + 1]; ++s)
-      half += order.strokes[s].last - order.strokes[s].first;
+  const std::size_t split = halfway(order.size(), [&](std::size_t k) {
+    std::size_t points = 0;
+    for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s)
+      points += order.strokes[s].last - order.strokes[s].first;
+    return points;
+  });
   if (threads < 2 || split == 0 || split == order.size()) {
     draw_polylines(order, lines, 0, order.size());
     return;
@@ -154,14 +154,9 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
   // is down at the end of its last stroke, a PD list open: where the second part starts.
   PiecesOut later_text;
   HpglEncoder later(*this, order.strokes[order.starts[split] - 1].end(lines), later_text);
-  parallel_for(2, 2, [&](std::size_t first, std::size_t last) {
-    for (std::size_t part = first; part < last; ++part) {
-      if (part == 0)
-        draw_polylines(order, lines, 0, split);
-      else
-        later.draw_polylines(order, lines, split, order.size());
-    }
-  });
+  both(
+      true, [&] { draw_polylines(order, lines, 0, split); },
+      [&] { later.draw_polylines(order, lines, split, order.size()); });
   later_text.put_into(*out_);
   join(later);
 }

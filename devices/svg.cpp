@@ -135,9 +135,7 @@ void SvgWriter::paths(const PlacedPaths& paths, std::span<const Style> styles) {
   // element open, in its style.
   std::size_t points = 0;
   for (std::size_t k = 0; k < paths.size(); ++k) points += paths[k].size();
-  std::size_t split = 0;
-  for (std::size_t half = 0; split < paths.size() && 2 * half < points; ++split)
-    half += paths[split].size();
+  std::size_t split = halfway(paths.size(), [&](std::size_t k) { return paths[k].size(); });
   auto drawn = [&](std::size_t k) { return paths[k].size() >= 2 && paths[k][0] != paths[k][1]; };
   while (split > 0 && split < paths.size() && !drawn(split - 1)) ++split;
   if (threads_for(points) < 2 || split == 0 || split >= paths.size()) {
@@ -152,14 +150,8 @@ void SvgWriter::paths(const PlacedPaths& paths, std::span<const Style> styles) {
       svg.polyline(paths[k]);
     }
   };
-  parallel_for(2, 2, [&](std::size_t first, std::size_t last) {
-    for (std::size_t part = first; part < last; ++part) {
-      if (part == 0)
-        write(*this, 0, split);
-      else
-        write(later, split, paths.size());
-    }
-  });
+  both(
+      true, [&] { write(*this, 0, split); }, [&] { write(later, split, paths.size()); });
   later_text.put_into(*out_);
   at_ = later.at_;
   at_known_ = later.at_known_;

@@ -127,17 +127,16 @@ void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned thread
       aside.bytes = std::make_unique_for_overwrite<char[]>(aside.size);
     }
     char* aside_end = aside.bytes.get();
-    parallel_for(2, half < last ? 2 : 1, [&](std::size_t from, std::size_t to) {
-      for (std::size_t part = from; part < to; ++part) {
-        if (part == 0) {
+    both(
+        half < last,
+        [&] {
           for (std::size_t i = first; i < half; ++i) out.commit(make(out.room(most), i));
-        } else {
+        },
+        [&] {
           char* w = aside.bytes.get();
           for (std::size_t i = half; i < last; ++i) w = make(w, i);
           aside_end = w;
-        }
-      }
-    });
+        });
     out.put(std::string_view(aside.bytes.get(),
                              static_cast<std::size_t>(aside_end - aside.bytes.get())));
   }

@@ -5,6 +5,7 @@
 
 #include <atomic>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "workspace/kernels/large_array.h"
@@ -35,6 +36,48 @@ TEST_CASE("an exception in any slice reaches the caller after all threads have f
   CHECK(finished.load() == 1);
   CHECK_THROWS_AS(parallel_for(10, 1, [](std::size_t, std::size_t) { throw std::bad_alloc(); }),
                   std::bad_alloc);
+}
+
+TEST_CASE("both: two tasks at once on two threads, or in turn on this one") {
+  const auto here = std::this_thread::get_id();
+  for (bool together : {false, true}) {
+    std::vector<int> order;
+    std::thread::id first_on, second_on;
+    std::atomic<int> done{0};
+    both(
+        together,
+        [&] {
+          first_on = std::this_thread::get_id();
+          ++done;
+          if (!together) order.push_back(1);
+        },
+        [&] {
+          second_on = std::this_thread::get_id();
+          ++done;
+          if (!together) order.push_back(2);
+        });
+    CHECK(done.load() == 2);
+    CHECK(first_on == here);
+    CHECK((second_on == here) == !together);
+    if (!together) CHECK(order == std::vector<int>{1, 2});
+  }
+  std::atomic<bool> first_ran{false};
+  CHECK_THROWS_WITH_AS(
+      both(
+          true, [&] { first_ran = true; }, [] { throw std::runtime_error("second failed"); }),
+      "second failed", std::runtime_error);
+  CHECK(first_ran.load());
+}
+
+TEST_CASE("halfway: the items whose weights reach half of all") {
+  const std::vector<std::size_t> w{5, 1, 1, 1, 1, 1};  // 10 in all
+  auto weight = [&](std::size_t k) { return w[k]; };
+  CHECK(halfway(w.size(), weight) == 1);  // 5 of 10
+  const std::vector<std::size_t> even{1, 1, 1, 1};
+  CHECK(halfway(even.size(), [&](std::size_t k) { return even[k]; }) == 2);
+  const std::vector<std::size_t> late{1, 1, 1, 7};
+  CHECK(halfway(late.size(), [&](std::size_t k) { return late[k]; }) == 4);
+  CHECK(halfway(0, weight) == 0);
 }
 
 TEST_CASE("large_array gives a zero-filled array of the shape, small or large") {

@@ -195,9 +195,9 @@ void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size
     const std::size_t first_entity = list.size();
     side.clear();
     char* aside_end = aside.bytes.get();
-    parallel_for(2, half < last ? 2 : 1, [&](std::size_t from, std::size_t to) {
-      for (std::size_t part = from; part < to; ++part) {
-        if (part == 0) {
+    both(
+        half < last,
+        [&] {
           for (std::size_t k = first; k < half; ++k) {
             p.begin(2 * list.size() + 1);
             Entity e = write(p, k);
@@ -205,7 +205,8 @@ void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size
             e.parameters = p.first();
             list.push_back(e);
           }
-        } else {
+        },
+        [&] {
           Records q(aside.bytes.get(), 'P', 64, 1);
           for (std::size_t k = half; k < last; ++k) {
             q.begin(2 * (first_entity + k - first) + 1);
@@ -215,9 +216,7 @@ void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size
             side.push_back(e);
           }
           aside_end = q.end();
-        }
-      }
-    });
+        });
     const std::size_t lines = std::size_t(aside_end - aside.bytes.get()) / record;
     if (lines == 0) continue;
     const std::size_t base = p.next_sequence();

@@ -47,4 +47,30 @@ void parallel_for(std::size_t count, unsigned threads, const F& f) {
     if (e) std::rethrow_exception(e);
 }
 
+// Calls first() here and, at the same time, second() on a second thread when `together`; one
+// after the other, here, when not (or when no thread can be started). An exception thrown by
+// either is rethrown here once both have finished.
+template <class First, class Second>
+void both(bool together, const First& first, const Second& second) {
+  parallel_for(2, together ? 2 : 1, [&](std::size_t from, std::size_t to) {
+    for (std::size_t part = from; part < to; ++part) {
+      if (part == 0)
+        first();
+      else
+        second();
+    }
+  });
+}
+
+// The number of items, from the first, whose weights add up to half the weights of all `count`
+// items or just more: where a list is cut in two parts of about the same work.
+template <class Weight>
+std::size_t halfway(std::size_t count, const Weight& weight) {
+  std::size_t total = 0;
+  for (std::size_t k = 0; k < count; ++k) total += weight(k);
+  std::size_t k = 0;
+  for (std::size_t half = 0; k < count && 2 * half < total; ++k) half += weight(k);
+  return k;
+}
+
 }  // namespace igds
