@@ -1,6 +1,8 @@
 // SAVE/RESTORE (IGDSDATA), STORE FILE/DISPLAY FILE (IGDSIMAG): exact round trips, and every
 // kind of bad file or refusing disk gets a clear report and loses nothing.
 #include <doctest/doctest.h>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -413,6 +415,36 @@ TEST_CASE("a made text: pieces, a hole written later, the same in a string and i
   CHECK(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()) ==
         expected);
   CHECK(disk::folder_entries(s.dir.path()).size() == 1);
+}
+
+TEST_CASE(
+    "a large file's whole blocks go straight to the disk, the same bytes as through the cache") {
+  Scratch s;
+  // Whether this file system takes direct writes at all (tmpfs before Linux 6.6 does not).
+  const fs::path probe = s.dir.path() / "probe";
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_DIRECT | O_CLOEXEC, 0644);
+  const bool takes_direct = fd >= 0;
+  if (fd >= 0) ::close(fd);
+  fs::remove(probe);
+  StringOut text;
+  holed_text(text);
+  const std::string expected = text.take_text();
+  const std::size_t before = disk::bytes_direct_for_testing();
+  CHECK(write_user_file(s.disk, "TEXT", "IGS", holed_text) == expected.size());
+  CHECK(test::read_file(s.disk.path("TEXT", "IGS")) == expected);
+  const std::size_t direct = disk::bytes_direct_for_testing() - before;
+  CHECK(direct % 4096 == 0);
+  CHECK(direct <= expected.size());
+  // Every piece but the last (a hole or a piece's end can fall anywhere in a block: that block
+  // goes through the cache).
+  if (takes_direct) CHECK(direct >= expected.size() - (std::size_t{5} << 20));
+  // With a limit on the writes (a full disk), through the cache only.
+  disk::set_write_limit_for_testing(std::size_t{1} << 30);
+  const std::size_t limited = disk::bytes_direct_for_testing();
+  CHECK(write_user_file(s.disk, "AGAIN", "IGS", holed_text) == expected.size());
+  disk::set_write_limit_for_testing(std::nullopt);
+  CHECK(disk::bytes_direct_for_testing() == limited);
+  CHECK(test::read_file(s.disk.path("AGAIN", "IGS")) == expected);
 }
 
 }  // namespace igds

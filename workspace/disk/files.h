@@ -95,6 +95,8 @@ bool link_file(const std::filesystem::path& from, const std::filesystem::path& t
 void set_write_limit_for_testing(std::optional<std::size_t> limit);
 // The bytes this process's file writes have written so far (not the terminal's).
 std::size_t bytes_written_for_testing();
+// Of those, the bytes written straight from memory to the disk (O_DIRECT), not through the cache.
+std::size_t bytes_direct_for_testing();
 // write(2) that honours the limit above (the lock file writes through it too).
 long limited_write(int fd, const char* p, std::size_t n);
 
