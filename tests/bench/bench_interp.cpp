@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "interp/words.h"
 #include "tests/bench/bench.h"
+#include "workspace/apl.h"
 
 namespace igds::bench {
 
@@ -73,9 +75,28 @@ void write_build(const fs::path& file, int n, int density) {
   out << density << ' ' << density << "\nEND CMS\n";
 }
 
+// A typed line of 500 points (as in a BUILD of a 500 x 500 grid) split into words and read as
+// numbers, in memory: megabytes of typed text a second.
+void read_points() {
+  std::string line = "1";
+  for (int j = 0; j < 500; ++j)
+    line += fmt::format(" {} {} {:.6f}", 10.0 * j, 12.0 * 7, 20 * std::sin(0.05 * j));
+  double sum = 0;
+  const int lines = 500;
+  const double best = best_seconds(7, [&] {
+    for (int r = 0; r < lines; ++r) {
+      const auto words = split_words(line);
+      for (const auto& w : words) sum += parse_apl_number(w).value_or(0);
+    }
+  });
+  fmt::print("read_points_mb_s {:.0f}\n", double(line.size()) * lines / best / 1e6);
+  if (sum == 0) fmt::print(stderr, "bench_interp: the line read as zeros\n");
+}
+
 }  // namespace
 
 IGDS_BENCH("interp") {
+  read_points();
   ScratchDisk disk;
   const fs::path build100 = disk.dir / "build100.igds", end = disk.dir / "end.igds";
   write_build(build100, 100, 1);

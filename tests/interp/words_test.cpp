@@ -2,8 +2,12 @@
 #include "interp/words.h"
 
 #include <doctest/doctest.h>
+#include <fmt/format.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string>
 
@@ -83,6 +87,65 @@ TEST_CASE("APL numbers: the value strtod gives the same text, at the edges of do
   for (const char* text : {"9007199254740993", "0.1", "2.675", "1.7976931348623157E308",
                            "123456789012345678901234567890", "3.14159265358979323846"})
     CHECK(parse_apl_number(text) == std::strtod(text, nullptr));
+}
+
+TEST_CASE("APL numbers: the quick way for short numbers gives strtod's double, bit for bit") {
+  // Every shape a designer types: 1 to 20 digits, a point anywhere or none, a sign, an exponent
+  // near the quick way's limits (10^22, 2^53) and beyond, leading and trailing zeros.
+  auto same_bits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  std::uint64_t state = 12345;
+  auto next = [&state](int below) {
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return static_cast<int>((state >> 33) % static_cast<std::uint64_t>(below));
+  };
+  int checked = 0;
+  for (int r = 0; r < 20000; ++r) {
+    std::string c, apl;  // as strtod reads it, as typed in APL
+    const int sign = next(3);
+    c += sign == 1 ? "-" : "";
+    apl += sign == 1 ? "¯" : sign == 2 ? "-" : "";
+    if (sign == 2) c += "-";
+    const int count = 1 + next(20), point = next(count + 2);
+    std::string digits;
+    for (int d = 0; d <= count; ++d) {
+      if (d == point) digits += '.';
+      if (d < count) digits += static_cast<char>('0' + (d == 0 && next(4) == 0 ? 0 : next(10)));
+    }
+    if (digits == ".") digits = "0.";
+    c += digits;
+    apl += digits;
+    if (next(3) == 0) {
+      const int exponent = next(61) - 30;
+      c += fmt::format("E{}", exponent);
+      apl +=
+          fmt::format("{}{}{}", next(2) ? "e" : "E", exponent < 0 ? "¯" : "", std::abs(exponent));
+    }
+    const auto v = parse_apl_number(apl);
+    REQUIRE_MESSAGE(v, apl);
+    const double expected = std::strtod(c.c_str(), nullptr);
+    CHECK_MESSAGE(same_bits(*v, expected), apl, " ", c);
+    ++checked;
+  }
+  CHECK(checked == 20000);
+  CHECK(same_bits(*parse_apl_number("¯0"), -0.0));
+  CHECK(same_bits(*parse_apl_number("-0.000"), -0.0));
+  CHECK(same_bits(*parse_apl_number("9007199254740992"), 9007199254740992.0));
+  CHECK(same_bits(*parse_apl_number("9007199254740993"), 9007199254740992.0));
+  CHECK(same_bits(*parse_apl_number("1E22"), 1e22));
+  CHECK(same_bits(*parse_apl_number("1E23"), std::strtod("1E23", nullptr)));
+  CHECK(same_bits(*parse_apl_number("123456789E¯22"), std::strtod("123456789E-22", nullptr)));
+}
+
+TEST_CASE("a line of many points: every word, in order") {
+  std::string line = " 1";
+  Words expected{"1"};
+  for (int j = 0; j < 3000; ++j) {
+    const std::string word = fmt::format("{}{}", j * 37 % 1000, j % 3 ? ".5" : "");
+    line += fmt::format("{}{}", j % 7 ? " " : " ,\t", word);
+    expected.push_back(word);
+  }
+  CHECK(split_words(line + "  ") == expected);
+  CHECK(split_words(line + " ⍝ the end") == expected);
 }
 
 }  // namespace igds::test
