@@ -53,6 +53,15 @@ struct Scratch {
   Disk disk{dir.path()};
 };
 
+// Whether the file system of `dir` takes direct writes at all (tmpfs before Linux 6.6 does not).
+bool takes_direct_writes(const fs::path& dir) {
+  const fs::path probe = dir / "probe";
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_DIRECT | O_CLOEXEC, 0644);
+  if (fd >= 0) ::close(fd);
+  fs::remove(probe);
+  return fd >= 0;
+}
+
 }  // namespace
 
 TEST_CASE("SAVE then RESTORE gives every surface variable back bit for bit") {
@@ -74,6 +83,30 @@ TEST_CASE("SAVE then RESTORE gives every surface variable back bit for bit") {
   auto status = before.status;
   status[Workspace::status_twists] = status[Workspace::status_auto] = 0;
   CHECK(ws.status == status);
+}
+
+TEST_CASE(
+    "a large SAVE goes to the disk in whole blocks straight from memory, the same surface back") {
+  Scratch s;
+  Workspace saved = test::make_workspace(30, 30, 25, 25, false);  // INTPN alone: 13.7 MB
+  const std::size_t direct = disk::bytes_direct_for_testing();
+  save_surface(s.disk, "HULL", saved);
+  // Straight but for the first and last pieces' partial blocks, where the file system takes it.
+  const std::size_t size = fs::file_size(s.disk.path("HULL", "IGDSDATA"));
+  const std::size_t straight = disk::bytes_direct_for_testing() - direct;
+  CHECK(straight <= size);
+  if (takes_direct_writes(s.dir.path())) CHECK(straight >= size - (std::size_t{5} << 20));
+  Workspace ws;
+  restore_surface(s.disk, "HULL", ws);
+  test::check_same_surface(ws, saved);
+  // Under a write limit (a full disk) the same file, through the cache only.
+  disk::set_write_limit_for_testing(std::size_t{1} << 30);
+  const std::size_t limited = disk::bytes_direct_for_testing();
+  save_surface(s.disk, "AGAIN", saved);
+  disk::set_write_limit_for_testing(std::nullopt);
+  CHECK(disk::bytes_direct_for_testing() == limited);
+  CHECK(test::read_file(s.disk.path("AGAIN", "IGDSDATA")) ==
+        test::read_file(s.disk.path("HULL", "IGDSDATA")));
 }
 
 TEST_CASE("SAVE replaces a file of the same name") {
@@ -420,12 +453,7 @@ TEST_CASE("a made text: pieces, a hole written later, the same in a string and i
 TEST_CASE(
     "a large file's whole blocks go straight to the disk, the same bytes as through the cache") {
   Scratch s;
-  // Whether this file system takes direct writes at all (tmpfs before Linux 6.6 does not).
-  const fs::path probe = s.dir.path() / "probe";
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_DIRECT | O_CLOEXEC, 0644);
-  const bool takes_direct = fd >= 0;
-  if (fd >= 0) ::close(fd);
-  fs::remove(probe);
+  const bool takes_direct = takes_direct_writes(s.dir.path());
   StringOut text;
   holed_text(text);
   const std::string expected = text.take_text();

@@ -247,6 +247,22 @@ void write_filled(int fd, const Fill& fill) {
   out.finish();
 }
 
+// The runs into the file: a large one through FileOut, its whole blocks straight to the disk
+// from the buffers (the runs lie anywhere in memory; copying them costs less than the system's
+// copy into its cache, and the disk is not left with hundreds of megabytes to take at the
+// fsync); a small one by writev.
+void put_runs(int fd, const std::vector<std::string_view>& runs) {
+  std::size_t size = 0;
+  for (auto run : runs) size += run.size();
+  if (size < 2 * piece) {
+    write_runs(fd, runs);
+    return;
+  }
+  FileOut out(fd);
+  for (auto run : runs) out.put(run);
+  out.finish();
+}
+
 // Creates `path` (it must not exist; never through a link), writes by `write(fd)`, fsyncs;
 // removes it on failure.
 template <class Write>
@@ -268,7 +284,7 @@ void create_and_write(const std::filesystem::path& path, const Write& write) {
 }
 
 void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
-  create_and_write(path, [&](int fd) { write_runs(fd, bytes.runs()); });
+  create_and_write(path, [&](int fd) { put_runs(fd, bytes.runs()); });
 }
 
 // Clears the way for a temporary: a stale file or link there is removed (never followed), a
@@ -330,7 +346,7 @@ std::filesystem::path temporary_for(const std::filesystem::path& target) {
 
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace) {
   return write_in_place(
-      target, [&](int fd) { write_runs(fd, bytes.runs()); }, replace);
+      target, [&](int fd) { put_runs(fd, bytes.runs()); }, replace);
 }
 
 bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace) {
