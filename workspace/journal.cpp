@@ -373,8 +373,7 @@ std::optional<std::pair<std::uint64_t, Description>> Journal::recipe_of(
   if (!image) return std::nullopt;
   for (const Remembered& r : remembered_)
     if (image.is(r.image)) return std::pair{r.generation, r.desim};
-  if (image->drawn_from == 0) return std::nullopt;
-  return std::pair{image->drawn_from, image->desim};
+  return image.recipe();  // a deferred image is not made for it
 }
 
 }  // namespace igds

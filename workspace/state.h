@@ -82,8 +82,10 @@ class ImageRef {
   ImageRef() = default;
   ImageRef(std::nullptr_t) {}
   ImageRef(std::shared_ptr<const Image> image);  // NOLINT: an image is an ImageRef
-  // An image that `make` makes when it is first looked at.
-  static ImageRef deferred(std::function<Image()> make);
+  // An image that `make` makes when it is first looked at, drawn from the surface of generation
+  // `drawn_from` with `desim` (what make's image will say).
+  static ImageRef deferred(std::function<Image()> make, std::uint64_t drawn_from,
+                           const Description& desim);
 
   const Image& operator*() const { return get(); }
   // The image as a shared pointer (a drawing that reads its points keeps it alive).
@@ -96,6 +98,9 @@ class ImageRef {
   void reset() { cell_.reset(); }
   // False while a deferred image has not been made yet.
   bool made() const;
+  // The surface's generation and the DESIM it was drawn with, for an image drawn from a surface
+  // (Image::drawn_from not 0); known of a deferred image without making it.
+  std::optional<std::pair<std::uint64_t, Description>> recipe() const;
   // The same image (not only equal ones).
   friend bool operator==(const ImageRef& a, const ImageRef& b) { return a.cell_ == b.cell_; }
   // A weak hold on this image, for telling later whether an ImageRef is still it.
@@ -108,6 +113,8 @@ class ImageRef {
   struct Cell {
     mutable std::shared_ptr<const Image> image;
     mutable std::function<Image()> make;
+    std::uint64_t drawn_from = 0;  // of a deferred image
+    Description desim;
   };
   const Image& get() const;
   std::shared_ptr<const Cell> cell_;

@@ -64,17 +64,25 @@ std::optional<VariableProblem> not_finite(Variable v, const Array& a) {
 }  // namespace
 
 ImageRef::ImageRef(std::shared_ptr<const Image> image) {
-  if (image) cell_ = std::make_shared<const Cell>(Cell{std::move(image), {}});
+  if (image) cell_ = std::make_shared<const Cell>(Cell{std::move(image), {}, 0, {}});
 }
 
-ImageRef ImageRef::deferred(std::function<Image()> make) {
+ImageRef ImageRef::deferred(std::function<Image()> make, std::uint64_t drawn_from,
+                            const Description& desim) {
   ImageRef r;
-  r.cell_ = std::make_shared<const Cell>(Cell{nullptr, std::move(make)});
+  r.cell_ = std::make_shared<const Cell>(Cell{nullptr, std::move(make), drawn_from, desim});
   return r;
 }
 
 bool ImageRef::made() const {
   return cell_ && cell_->image;
+}
+
+std::optional<std::pair<std::uint64_t, Description>> ImageRef::recipe() const {
+  if (!cell_) return std::nullopt;
+  const std::uint64_t from = cell_->image ? cell_->image->drawn_from : cell_->drawn_from;
+  if (from == 0) return std::nullopt;
+  return std::pair{from, cell_->image ? cell_->image->desim : cell_->desim};
 }
 
 const Image& ImageRef::get() const {

@@ -285,6 +285,46 @@ TEST_CASE("the session keeps the journal: read back at start, a damaged one refu
   CHECK(j.undo_count() + j.redo_count() == 0);
 }
 
+TEST_CASE("an image the session keeps by its recipe is not made to be put in the journal") {
+  test::TempDir dir;
+  Disk disk(dir.path());
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  const Description desim{1, Projection::isometric, {3, 30, 0}};
+  {
+    Session session(disk);
+    Workspace loaded = session.load();
+    Journal j = session.take_journal(loaded);
+    ws.image = std::make_shared<const Image>(image_of(ws, desim));
+    CHECK(j.record(ws, "DISPLAY SURFACE"));
+    session.save(ws, &j);
+  }
+  Session session(disk);
+  Workspace loaded = session.load();
+  Journal j = session.take_journal(loaded);
+  // Read back as the recipe, made when first looked at: its recipe is known before.
+  REQUIRE(loaded.image);
+  const ImageRef before = loaded.image;
+  CHECK_FALSE(before.made());
+  REQUIRE(before.recipe());
+  CHECK(before.recipe()->second == desim);
+  CHECK(j.recipe_of(before) == before.recipe());
+  CHECK_FALSE(before.made());
+  // A CHANGE, then a DISPLAY replaces it: the step keeps it and the session is saved with the
+  // journal, all without making it (which means interpolating the surface it was drawn from
+  // again: at 4 M points, most of a second).
+  command(j, loaded, "CHANGE POINTS", [&] { change_point(loaded, 7, 4); });
+  session.save(loaded, &j);
+  command(j, loaded, "DISPLAY SURFACE",
+          [&] { loaded.image = std::make_shared<const Image>(image_of(loaded, desim)); });
+  session.save(loaded, &j);
+  CHECK_FALSE(before.made());
+  // UNDO gives it back, the same image as drawn before.
+  CHECK(j.undo(loaded) == "DISPLAY SURFACE");
+  CHECK(loaded.image == before);
+  CHECK(*loaded.image == *ws.image);
+  CHECK(before.made());
+}
+
 TEST_CASE("a journal damaged at random is refused or gives states the workspace accepts") {
   Workspace ws = test::make_interpolated(5, 4, 1, 2);
   saved(ws);

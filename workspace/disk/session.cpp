@@ -318,14 +318,16 @@ struct Session::State {
         inputs->changes.surface = r.generation;
         source = std::move(inputs);
       }
-      return ImageRef::deferred([source, desim = e.desim] {
-        if (desim.what == 0) return image_of(*source, desim);
-        Workspace from = *source;
-        Surface s = interpolate(surface_input(from));
-        from.patches = std::move(s.patches);
-        from.intpn = std::move(s.intpn);
-        return image_of(from, desim);
-      });
+      return ImageRef::deferred(
+          [source, desim = e.desim] {
+            if (desim.what == 0) return image_of(*source, desim);
+            Workspace from = *source;
+            Surface s = interpolate(surface_input(from));
+            from.patches = std::move(s.patches);
+            from.intpn = std::move(s.intpn);
+            return image_of(from, desim);
+          },
+          source->changes.surface, e.desim);
     }
     if (e.kind == ImageEntry::stored) {
       if (e.data.size() > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
@@ -714,12 +716,12 @@ void Session::save(Workspace& ws, const Journal* journal) {
         }
       }
       if (e.kind != ImageEntry::absent) continue;
-      if (now->drawn_from != 0) {
+      if (const auto recipe = now.recipe()) {  // a deferred image is not made for it
         for (const Record& r : next.records) {
-          if (r.generation == now->drawn_from) {
+          if (r.generation == recipe->first) {
             e.kind = ImageEntry::recipe;
             e.record = r.id;
-            e.desim = now->desim;
+            e.desim = recipe->second;
           }
         }
       }
