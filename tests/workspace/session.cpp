@@ -599,6 +599,32 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
       "IMAGE: TOO LARGE");
 }
 
+TEST_CASE("a session refused after its inputs are read leaves no surface being made behind it") {
+  // PATCHES and INTPN are made in the background as soon as the inputs are read, while the
+  // images and the journal are read: a session refused then must not fill the empty workspace.
+  Scratch s;
+  {
+    Session session(s.disk);
+    session.load();
+    Workspace ws = test::make_interpolated(6, 6, 2, 2);
+    session.save(ws);
+  }
+  auto table =
+      disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
+  REQUIRE(table.derived);
+  table.images[0].kind = disk::ImageEntry::recipe;
+  table.images[0].record = table.current;
+  table.images[0].desim.projection = static_cast<Projection>(9);
+  test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
+  Session session(s.disk);
+  Workspace loaded = session.load(true);
+  CHECK(loaded == Workspace{});
+  REQUIRE(session.notices().size() == 1);
+  CHECK(session.notices()[0].starts_with("SESSION FILE BINSAVE.IGDSCONT DAMAGED (IMAGE: "));
+  session.complete(loaded);
+  CHECK(loaded == Workspace{});
+}
+
 TEST_CASE("the session never saves a workspace that the next start would refuse") {
   Scratch s;
   Workspace odd = test::make_workspace(2, 2, 1, 1);

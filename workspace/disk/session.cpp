@@ -420,6 +420,21 @@ Workspace Session::State::read_session() {
   }
   ws.changes.surface = generation;
   ws.changes.derived = t.derived;
+  // PATCHES and INTPN, as soon as the inputs are read: the inputs were checked, so nothing the
+  // kernels refuse. The task has a copy of its own, and is made while the images and the undo
+  // journal are read (at 4 M points, tens of milliseconds of the start); if they are refused
+  // the task is waited for and dropped, so that it never fills another workspace.
+  if (t.current != 0 && t.derived)
+    deriving = std::async(
+        in_background ? std::launch::async : std::launch::deferred,
+        [in = std::make_shared<const Workspace>(ws)] { return interpolate(surface_input(*in)); });
+  struct Drop {
+    std::future<Surface>& task;
+    bool kept = false;
+    ~Drop() {
+      if (!kept && task.valid()) task = {};  // waits for it (std::async's future)
+    }
+  } drop{deriving};
   std::map<std::uint32_t, std::shared_ptr<const Workspace>> sources;
   for (std::size_t k = 0; k < 3; ++k) {
     ImageEntry& e = t.images[k];
@@ -448,12 +463,7 @@ Workspace Session::State::read_session() {
           fmt::format("UNDO JOURNAL IN {} DAMAGED (DATA): NOTHING TO UNDO", session_file()));
     }
   }
-  // PATCHES and INTPN, last: the inputs were checked, so nothing the kernels refuse. The task
-  // has a copy of its own.
-  if (t.current != 0 && t.derived)
-    deriving = std::async(
-        in_background ? std::launch::async : std::launch::deferred,
-        [in = std::make_shared<const Workspace>(ws)] { return interpolate(surface_input(*in)); });
+  drop.kept = true;
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
   saved_known = true;
