@@ -7,6 +7,7 @@
 #include "workspace/exchange/duct.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
+#include "workspace/kernels/surface.h"
 
 namespace igds {
 
@@ -119,6 +120,20 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 Image image_of(const Workspace& ws, const Description& desim) {
   const View view{desim.projection, desim.parameters};
   return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
+}
+
+ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Description& desim) {
+  const std::uint64_t generation = source->changes.surface;
+  return ImageRef::deferred(
+      [source = std::move(source), desim] {
+        if (desim.what == 0) return image_of(*source, desim);
+        Workspace from = *source;
+        Surface s = interpolate(surface_input(from));
+        from.patches = std::move(s.patches);
+        from.intpn = std::move(s.intpn);
+        return image_of(from, desim);
+      },
+      generation, desim);
 }
 
 Image copy_of(const Image& image) {

@@ -4,6 +4,7 @@
 // same function makes both, bit for bit.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "workspace/kernels/project.h"
@@ -29,6 +30,10 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 // The image `desim` describes (DESIM[1] 0 input, 1 surface) of the surface of `ws` (a picture
 // image, DESIM[1] 2, is made by picture_image from its text, not from a surface).
 Image image_of(const Workspace& ws, const Description& desim);
+// The same image of the surface whose inputs `source` holds (its generation in
+// changes.surface), made when it is first looked at (a surface image interpolates the inputs
+// then): an image the session or the undo journal kept by its recipe.
+ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Description& desim);
 
 // A copy of `image`, every member alike; its points in memory made ready for a large array
 // (kernels/large_array.h): ZOOM's copy of a 4 M-point image costs the copy, not its page faults.

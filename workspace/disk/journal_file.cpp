@@ -6,7 +6,6 @@
 #include "workspace/disk/frame.h"
 #include "workspace/images.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
 
 namespace igds::disk {
@@ -318,17 +317,7 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
     source->inptg = state.inptg;
     source->changes.surface = state.generation;
     if (!source->has_input()) throw Damage("JOURNAL: IMAGE OF NO SURFACE");
-    e.image = ImageRef::deferred(
-        [source = std::shared_ptr<const Workspace>(std::move(source)), desim = e.desim] {
-          if (desim.what == 0) return image_of(*source, desim);
-          Workspace from = *source;
-          Surface s = interpolate(
-              {from.nocur, from.nostr, from.intcu, from.intst, &from.inppn, &from.inptg});
-          from.patches = std::move(s.patches);
-          from.intpn = std::move(s.intpn);
-          return image_of(from, desim);
-        },
-        state.generation, e.desim);
+    e.image = image_by_recipe(std::move(source), e.desim);
     journal.remember(e.image, state.generation, e.desim);
   }
   std::span<JournalStep> filled = journal.steps_to_complete();

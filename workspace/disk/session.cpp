@@ -318,16 +318,7 @@ struct Session::State {
         inputs->changes.surface = r.generation;
         source = std::move(inputs);
       }
-      return ImageRef::deferred(
-          [source, desim = e.desim] {
-            if (desim.what == 0) return image_of(*source, desim);
-            Workspace from = *source;
-            Surface s = interpolate(surface_input(from));
-            from.patches = std::move(s.patches);
-            from.intpn = std::move(s.intpn);
-            return image_of(from, desim);
-          },
-          source->changes.surface, e.desim);
+      return image_by_recipe(source, e.desim);
     }
     if (e.kind == ImageEntry::stored) {
       if (e.data.size() > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
