@@ -475,6 +475,26 @@ TEST_CASE(
   CHECK(test::read_file(s.disk.path("AGAIN", "IGS")) == expected);
 }
 
+TEST_CASE("a disk that fills during a straight write: the report, and no file left") {
+  test::TempDir dir;
+  test::SmallDisk small(dir.path() / "disk", 6 * 1024);  // room for one piece and a half
+  IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
+  Disk disk(small.path());
+  const bool takes_direct = takes_direct_writes(small.path());
+  const std::size_t before = disk::bytes_direct_for_testing();
+  std::string report;
+  try {
+    write_user_file(disk, "TEXT", "IGS", holed_text);
+  } catch (const Report& r) {
+    report = r.what();
+  }
+  CHECK(report == "CANNOT WRITE TEXT.IGS (NO SPACE LEFT ON DEVICE); NO FILE CHANGED");
+  // The first piece went straight; the write that found the disk full was met again through
+  // the cache, which reported it.
+  if (takes_direct) CHECK(disk::bytes_direct_for_testing() > before);
+  CHECK(disk::folder_entries(small.path()).empty());
+}
+
 }  // namespace igds
 
 namespace igds {
