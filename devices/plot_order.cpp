@@ -213,38 +213,85 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
       for (const auto& list : runs)
         for (const Run& r : list) by_tile[at[r.tile]++] = &r;
     }
-    // Each tile alone through a table of the segments seen (open addressing; 0 is an empty slot,
-    // and no segment's key is 0 since its ends differ): a segment already there is a repeat.
+    // Each tile alone, its segments in drawing order. Their keys' hashes go through a bitset
+    // (in the cache): a hash met before marks a possible repeat, and most tiles have a few. Only
+    // the segments whose hash was met more than once then go, in drawing order, through a table
+    // of the keys seen (open addressing; 0 is an empty slot, and no segment's key is 0 since its
+    // ends differ): a key already there is a repeat.
     auto find_repeats = [&](std::size_t from, std::size_t to) {
-      std::vector<u64> table;
+      std::vector<u64> seen, twice, table;
+      std::vector<std::uint32_t> hashes, met, candidates;
       std::vector<std::size_t> found;
       for (std::size_t c = from; c < to; ++c) {
-        if (segments[c] < 2) continue;
-        const int bits = std::bit_width(2 * segments[c] - 1);
-        const std::size_t mask = (std::size_t{1} << bits) - 1;
-        table.assign(mask + 1, 0);
+        const std::size_t count = segments[c];
+        if (count < 2) continue;
+        // 16 bits a segment or more, at most 32 KB.
+        const int bits = std::min(static_cast<int>(std::bit_width(count)) + 4, 18);
+        seen.assign(std::size_t{1} << (bits - 6), 0);
+        twice.resize(seen.size(), 0);  // all clear, between tiles
+        hashes.resize(count);
+        met.resize(count + 1);
+        std::uint32_t* const hash = hashes.data();
+        std::uint32_t* const again = met.data();
+        std::size_t at = 0, n_again = 0;
         for (std::uint32_t w = first[c]; w < first[c + 1]; ++w) {
           if (w + 2 < first[c + 1]) {
-            // The points of a run ahead, which lie anywhere in the paths' memory.
+            // The points of a run ahead, each of their cache lines: they lie anywhere in the
+            // paths' memory.
             const Run& ahead = *by_tile[w + 2];
-            __builtin_prefetch(paths[ahead.path].data() + ahead.first);
+            const Line& points = paths[ahead.path];
+            const auto from = reinterpret_cast<std::uintptr_t>(points.data() + ahead.first);
+            const auto to = reinterpret_cast<std::uintptr_t>(points.data() + ahead.last + 1);
+            for (std::uintptr_t line = from & ~std::uintptr_t{63}; line < to; line += 64)
+              __builtin_prefetch(reinterpret_cast<const void*>(line));
           }
           const Run& r = *by_tile[w];
-          const Line& path = paths[r.path];
-          u64 a = ids(path[r.first]);
-          for (std::uint32_t i = r.first; i < r.last; ++i) {
-            const u64 b = ids(path[i + 1]);
-            const u64 key = a < b ? a << 32 | b : b << 32 | a;
+          const DevicePoint* p = paths[r.path].data();
+          u64 a = ids(p[r.first]);
+          for (std::uint32_t i = r.first; i < r.last; ++i, ++at) {
+            const u64 b = ids(p[i + 1]), key = a < b ? a << 32 | b : b << 32 | a;
             a = b;
-            for (std::size_t h = (key * 0x9E3779B97F4A7C15u) >> (64 - bits);; h = (h + 1) & mask) {
-              if (table[h] == 0) {
-                table[h] = key;
-                break;
-              }
-              if (table[h] == key) {
-                found.push_back(base[r.path] + i);
-                break;
-              }
+            const auto h = static_cast<std::uint32_t>((key * 0x9E3779B97F4A7C15u) >> (64 - bits));
+            const u64 bit = u64{1} << (h & 63), word = seen[h >> 6];
+            seen[h >> 6] = word | bit;
+            hash[at] = h;
+            again[n_again] = h;  // kept only when met before: no branch
+            n_again += (word & bit) != 0;
+          }
+        }
+        if (n_again == 0) continue;
+        for (std::size_t k = 0; k < n_again; ++k) twice[again[k] >> 6] |= u64{1} << (again[k] & 63);
+        // The segments whose hash was met more than once, by their place in the tile.
+        candidates.resize(count + 1);
+        std::size_t n_candidates = 0;
+        for (std::size_t k = 0; k < count; ++k) {
+          candidates[n_candidates] = static_cast<std::uint32_t>(k);
+          n_candidates += twice[hash[k] >> 6] >> (hash[k] & 63) & 1;
+        }
+        for (std::size_t k = 0; k < n_again; ++k) twice[again[k] >> 6] = 0;
+        const int table_bits = std::bit_width(2 * n_candidates - 1);
+        const std::size_t mask = (std::size_t{1} << table_bits) - 1;
+        table.assign(mask + 1, 0);
+        // Each candidate's key from its points, the tile's runs walked alongside.
+        std::uint32_t w = first[c];
+        std::size_t run_at = 0;  // the place in the tile of run w's first segment
+        for (std::size_t j = 0; j < n_candidates; ++j) {
+          const std::size_t k = candidates[j];
+          while (run_at + (by_tile[w]->last - by_tile[w]->first) <= k)
+            run_at += by_tile[w]->last - by_tile[w]->first, ++w;
+          const Run& r = *by_tile[w];
+          const std::size_t i = r.first + (k - run_at);
+          const u64 a = ids(paths[r.path][i]), b = ids(paths[r.path][i + 1]);
+          const u64 key = a < b ? a << 32 | b : b << 32 | a;
+          for (std::size_t h = (key * 0x9E3779B97F4A7C15u) >> (64 - table_bits);;
+               h = (h + 1) & mask) {
+            if (table[h] == 0) {
+              table[h] = key;
+              break;
+            }
+            if (table[h] == key) {
+              found.push_back(base[r.path] + i);
+              break;
             }
           }
         }

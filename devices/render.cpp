@@ -354,6 +354,36 @@ void place_texts(const Drawing2& drawing, const Placement& at, const Box& clip, 
   }
 }
 
+// The box of points read `stride` doubles apart, the points with a coordinate that is not finite
+// left out; with no branch a point, in two chains.
+struct Extent {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  double low[4] = {inf, inf, inf, inf}, high[4] = {-inf, -inf, -inf, -inf};
+
+  void add(const double* p, std::size_t stride, std::size_t count) {
+    std::size_t i = 0;
+    for (; i + 2 <= count; i += 2) {
+      take(0, p + i * stride);
+      take(2, p + (i + 1) * stride);
+    }
+    if (i < count) take(0, p + i * stride);
+  }
+  Box box() const {
+    return {std::min(low[0], low[2]), std::min(low[1], low[3]), std::max(high[0], high[2]),
+            std::max(high[1], high[3])};
+  }
+
+ private:
+  void take(int c, const double* p) {
+    constexpr double most = std::numeric_limits<double>::max();
+    const bool finite = std::abs(p[0]) <= most && std::abs(p[1]) <= most;
+    low[c] = std::min(low[c], finite ? p[0] : inf);
+    low[c + 1] = std::min(low[c + 1], finite ? p[1] : inf);
+    high[c] = std::max(high[c], finite ? p[0] : -inf);
+    high[c + 1] = std::max(high[c + 1], finite ? p[1] : -inf);
+  }
+};
+
 }  // namespace
 
 Box bounds(const Drawing2& drawing) {
@@ -387,20 +417,38 @@ Box bounds(const Drawing2& drawing) {
     return at->pool == item.pool && at->from <= item.first && last <= at->to;
   };
 
+  // The points to read, split between as many threads as pay (a grid's are tens of megabytes).
+  std::vector<std::pair<std::size_t, std::size_t>> read;  // item, its points before
+  std::size_t points = 0;
+  const auto items = drawing.items();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    const auto& item = items[k];
+    if (item.count == 0 || (item.pool != 0 && item.stride != n && covered(item))) continue;
+    read.push_back({k, points});
+    points += drawing.points(item).size();
+  }
   const double inf = std::numeric_limits<double>::infinity();
   Box b{inf, inf, -inf, -inf};
-  for (const auto& item : drawing.items()) {
-    if (item.count == 0 || (item.pool != 0 && item.stride != n && covered(item))) continue;
-    const auto points = drawing.points(item);
-    const double* base = points.data();
-    const std::size_t stride = points.stride();
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const double x = base[i * stride], y = base[i * stride + 1];
-      if (!(std::isfinite(x) && std::isfinite(y))) continue;
-      b.x0 = std::min(b.x0, x), b.x1 = std::max(b.x1, x);
-      b.y0 = std::min(b.y0, y), b.y1 = std::max(b.y1, y);
+  if (points == 0) return b;
+  const unsigned threads = threads_for(2 * points);
+  std::vector<Box> parts(threads);
+  parallel_for(threads, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t t = first; t < last; ++t) {
+      const std::size_t from = points * t / threads, to = points * (t + 1) / threads;
+      Extent e;  // here, not in parts: the threads' boxes share a cache line
+      auto r = std::upper_bound(read.begin(), read.end(), from,
+                                [](std::size_t p, const auto& item) { return p < item.second; });
+      for (--r; r != read.end() && r->second < to; ++r) {
+        const auto these = drawing.points(items[r->first]);
+        const std::size_t begin = std::max(from, r->second) - r->second;
+        const std::size_t end = std::min(to - r->second, these.size());
+        e.add(these.data() + begin * these.stride(), these.stride(), end - begin);
+      }
+      parts[t] = e.box();
     }
-  }
+  });
+  for (const Box& p : parts)
+    b = {std::min(b.x0, p.x0), std::min(b.y0, p.y0), std::max(b.x1, p.x1), std::max(b.y1, p.y1)};
   return b;
 }
 

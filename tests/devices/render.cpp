@@ -4,8 +4,10 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 
 #include "tests/devices/support.h"
 
@@ -136,6 +138,54 @@ TEST_CASE("render draws what place lists, in the same order, with the styles") {
   REQUIRE(r.texts.size() == 1);
   CHECK(r.texts[0].line == "7");
   CHECK(r.texts[0].at == DevicePoint{3, 3});
+}
+
+TEST_CASE("bounds: every finite point, read in parts on two threads in a large drawing") {
+  // The box of a drawing against every point of every item read one by one: a small drawing,
+  // then a grid shared as a surface image (its stringers not read again), with points that are
+  // not finite and the extremes in its last rows, then a curve's controls and a mark.
+  auto plain = [](const Drawing2& d) {
+    const double inf = std::numeric_limits<double>::infinity();
+    Box b{inf, inf, -inf, -inf};
+    for (const auto& item : d.items())
+      for (Point2 p : d.points(item))
+        if (std::isfinite(p.x) && std::isfinite(p.y))
+          b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+    return b;
+  };
+  auto same = [](const Box& a, const Box& b) {
+    return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+  };
+  CHECK(same(bounds(drawing({{{1, 2}, {std::nan(""), 9}, {3, -4}}, {{0.5, 7}}})),
+             Box{0.5, -4, 3, 7}));
+  CHECK(bounds(Drawing2{}).x0 > bounds(Drawing2{}).x1);  // nothing to hold
+  const std::size_t planes = 420, rows = 400;
+  for (int damage = 0; damage < 4; ++damage) {
+    CAPTURE(damage);
+    auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
+    for (std::size_t c = 0; c < planes; ++c)
+      for (std::size_t r = 0; r < rows; ++r) {
+        (*grid)[2 * (c * rows + r)] = 0.5 * r + 0.1 * c + 0.3 * std::sin(double(c * r));
+        (*grid)[2 * (c * rows + r) + 1] = 0.4 * c - 0.05 * r;
+      }
+    const double inf = std::numeric_limits<double>::infinity();
+    if (damage >= 1) (*grid)[2 * (419 * rows + 399)] = -inf;  // the last point
+    if (damage >= 2) (*grid)[2 * (300 * rows + 20) + 1] = std::nan("");
+    if (damage >= 3) (*grid)[2 * (211 * rows + 7)] = 1e300, (*grid)[2 * (417 * rows)] = -1e300;
+    Drawing2 d;
+    const auto pool = d.share(grid, grid->data(), grid->size());
+    for (std::size_t c = 0; c < planes; ++c)
+      d.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
+    for (std::size_t r = 0; r < rows; ++r)
+      d.add_polyline(pool, 2 * r, planes, 2 * rows, {}, {Role::stringer, int(r + 1)});
+    const double controls[] = {10, 10, 60, 1200, 110, 10};
+    d.add_curve(2, Point2View(controls, 3), {}, Style{2});
+    d.add_mark({-40, 40}, MarkShape::cross, 3, Style{3});
+    const Box got = bounds(d), want = plain(d);
+    CHECK(same(got, want));
+    CHECK(got.y1 == 1200);
+    CHECK(got.x0 == (damage >= 3 ? -1e300 : -40));
+  }
 }
 
 TEST_CASE("place: the stringers of a shared grid, placed side by side, are the paths one by one") {
