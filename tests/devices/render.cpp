@@ -8,6 +8,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <memory>
 
 #include "tests/devices/support.h"
 
@@ -30,6 +31,21 @@ Drawing2 drawing(std::initializer_list<std::vector<Point2>> lines, std::vector<P
 
 DevicePath path(const Placed& placed, std::size_t k) {
   return {placed.paths[k].begin(), placed.paths[k].end()};
+}
+
+// The points of a grid of `planes` curves of `rows` points, as a surface image holds them: point
+// r of curve c at xy(c, r).
+template <class XY>
+std::shared_ptr<std::vector<double>> grid_points(std::size_t planes, std::size_t rows,
+                                                 const XY& xy) {
+  auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
+  for (std::size_t c = 0; c < planes; ++c)
+    for (std::size_t r = 0; r < rows; ++r) {
+      const Point2 p = xy(static_cast<double>(c), static_cast<double>(r));
+      (*grid)[2 * (c * rows + r)] = p.x;
+      (*grid)[2 * (c * rows + r) + 1] = p.y;
+    }
+  return grid;
 }
 
 std::vector<DevicePath> paths(const Placed& placed) {
@@ -162,12 +178,9 @@ TEST_CASE("bounds: every finite point, read in parts on two threads in a large d
   const std::size_t planes = 420, rows = 400;
   for (int damage = 0; damage < 4; ++damage) {
     CAPTURE(damage);
-    auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
-    for (std::size_t c = 0; c < planes; ++c)
-      for (std::size_t r = 0; r < rows; ++r) {
-        (*grid)[2 * (c * rows + r)] = 0.5 * r + 0.1 * c + 0.3 * std::sin(double(c * r));
-        (*grid)[2 * (c * rows + r) + 1] = 0.4 * c - 0.05 * r;
-      }
+    auto grid = grid_points(planes, rows, [](double c, double r) {
+      return Point2{0.5 * r + 0.1 * c + 0.3 * std::sin(c * r), 0.4 * c - 0.05 * r};
+    });
     const double inf = std::numeric_limits<double>::infinity();
     if (damage >= 1) (*grid)[2 * (419 * rows + 399)] = -inf;  // the last point
     if (damage >= 2) (*grid)[2 * (300 * rows + 20) + 1] = std::nan("");
@@ -196,12 +209,9 @@ TEST_CASE("place: the stringers of a shared grid, placed side by side, are the p
   const std::size_t planes = 40, rows = 37;
   for (int damage = 0; damage < 3; ++damage) {
     CAPTURE(damage);
-    auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
-    for (std::size_t c = 0; c < planes; ++c)
-      for (std::size_t r = 0; r < rows; ++r) {
-        (*grid)[2 * (c * rows + r)] = 3.0 * r + 0.7 * c + 0.3 * std::sin(double(c * r));
-        (*grid)[2 * (c * rows + r) + 1] = 2.0 * c + 0.4 * r;
-      }
+    auto grid = grid_points(planes, rows, [](double c, double r) {
+      return Point2{3.0 * r + 0.7 * c + 0.3 * std::sin(c * r), 2.0 * c + 0.4 * r};
+    });
     if (damage == 1) (*grid)[2 * (11 * rows + 20)] = std::nan("");
     if (damage == 2) (*grid)[2 * (5 * rows + 19) + 1] = 1e4;
     Drawing2 shared, copied;
@@ -259,12 +269,9 @@ TEST_CASE("place: a large drawing placed in two parts at once is the drawing pla
   // and texts: more points than one thread places alone. The same items placed one by one, each
   // a drawing of its own, give the paths in order; render() draws them.
   const std::size_t planes = 420, rows = 400;
-  auto grid = std::make_shared<std::vector<double>>(2 * planes * rows);
-  for (std::size_t c = 0; c < planes; ++c)
-    for (std::size_t r = 0; r < rows; ++r) {
-      (*grid)[2 * (c * rows + r)] = 0.5 * r + 0.1 * c + 0.3 * std::sin(double(c * r));
-      (*grid)[2 * (c * rows + r) + 1] = 0.4 * c + 0.05 * r;
-    }
+  auto grid = grid_points(planes, rows, [](double c, double r) {
+    return Point2{0.5 * r + 0.1 * c + 0.3 * std::sin(c * r), 0.4 * c + 0.05 * r};
+  });
   (*grid)[2 * (300 * rows + 20)] = std::nan("");
   (*grid)[2 * (350 * rows + 19) + 1] = 1e4;
   Drawing2 d;
