@@ -130,8 +130,9 @@ struct Piece {
 // A segment belongs to the tile (a square of the plane) of its lower end, so a segment and its
 // repeats share a tile. The paths, cut into runs of consecutive segments of one tile (a path
 // crosses a tile in one run, not segment by segment), are grouped by tile in drawing order; each
-// tile's segments then go through a table of those seen, sized to the tile (in the cache), on
-// as many threads as pay. Only the runs are moved, never the segments.
+// tile's segments then go through a bitset of their hashes, in the cache, and the few whose hash
+// repeats through a table of those seen, on as many threads as pay. Only the runs are moved,
+// never the segments.
 std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& ids) {
   std::size_t n = 0;
   for (const auto& path : paths) n += path.empty() ? 0 : path.size() - 1;
