@@ -2,8 +2,10 @@
 // coordinates, and a device that remembers its own state so that it emits nothing redundant.
 #pragma once
 
+#include <algorithm>
 #include <charconv>
 #include <cstddef>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -19,6 +21,21 @@ struct DevicePoint {
 
 // A polyline in device coordinates: a move to the first point, vectors to the others.
 using DevicePath = std::vector<DevicePoint>;
+
+// The smallest box that holds some device points; empty (x0 > x1) until one is added.
+struct DeviceBox {
+  int x0 = std::numeric_limits<int>::max(), y0 = std::numeric_limits<int>::max();
+  int x1 = std::numeric_limits<int>::min(), y1 = std::numeric_limits<int>::min();
+
+  bool empty() const { return x0 > x1; }
+  // Two points at a time in two chains, with no branch: a path just written is measured while
+  // it is still in the cache.
+  void add(std::span<const DevicePoint> points);
+  void add(const DeviceBox& b) {
+    x0 = std::min(x0, b.x0), x1 = std::max(x1, b.x1);
+    y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
+  }
+};
 
 // Polylines stored one after another in one buffer: path k is points[starts[k]] up to, not
 // including, points[starts[k + 1]].

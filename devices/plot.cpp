@@ -90,7 +90,7 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
     lines.clear();
     for (std::size_t k = 0; k < placed.paths.size(); ++k)
       if (placed.styles[k] == style) lines.push_back(placed.paths[k]);
-    plot_order(lines, pen, order);
+    plot_order(lines, placed.box, pen, order);  // the box of every style's paths holds these
     hpgl.style(style);
     // Never more pen-up travel than the drawing order.
     if (pen_up_travel(order, lines, pen, origin) > pen_up_travel(lines, pen, origin)) {

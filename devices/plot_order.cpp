@@ -78,39 +78,14 @@ class RadixSort {
   std::vector<std::size_t> count_;
 };
 
-// Each point of the paths as its place in their bounding box: W * H ids, `bits` wide; the box
-// found on as many threads as pay.
+// Each point inside a box as its place in it: W * H ids, `bits` wide.
 struct PointIds {
   long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   u64 h = 1;
   int bits = 0;
 
-  PointIds(std::span<const Line> paths, std::size_t points) {
-    struct Box {
-      long long x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-      bool empty = true;
-    };
-    const unsigned parts = threads_for(points / 2);
-    std::vector<Box> boxes(parts);
-    parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
-      for (std::size_t t = from; t < to; ++t) {
-        Box b;  // here, not in boxes: the threads' boxes share a cache line
-        for (std::size_t k = paths.size() * t / parts; k < paths.size() * (t + 1) / parts; ++k)
-          for (DevicePoint p : paths[k]) {
-            if (b.empty) b = {p.x, p.y, p.x, p.y, false};
-            b.x0 = std::min<long long>(b.x0, p.x), b.x1 = std::max<long long>(b.x1, p.x);
-            b.y0 = std::min<long long>(b.y0, p.y), b.y1 = std::max<long long>(b.y1, p.y);
-          }
-        boxes[t] = b;
-      }
-    });
-    bool first = true;
-    for (const Box& b : boxes) {
-      if (b.empty) continue;
-      if (first) x0 = b.x0, y0 = b.y0, x1 = b.x1, y1 = b.y1, first = false;
-      x0 = std::min(x0, b.x0), x1 = std::max(x1, b.x1);
-      y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
-    }
+  explicit PointIds(const DeviceBox& box) {
+    if (!box.empty()) x0 = box.x0, y0 = box.y0, x1 = box.x1, y1 = box.y1;
     h = static_cast<u64>(y1 - y0) + 1;
     bits = std::bit_width(static_cast<u64>(x1 - x0) * h + static_cast<u64>(y1 - y0));
   }
@@ -118,6 +93,25 @@ struct PointIds {
     return static_cast<u64>(p.x - x0) * h + static_cast<u64>(p.y - y0);
   }
 };
+
+// The box of the paths' points, found on as many threads as pay.
+DeviceBox box_of(std::span<const Line> paths) {
+  std::size_t points = 0;
+  for (const Line& path : paths) points += path.size();
+  const unsigned parts = threads_for(points / 2);
+  std::vector<DeviceBox> boxes(parts);
+  parallel_for(parts, parts, [&](std::size_t from, std::size_t to) {
+    for (std::size_t t = from; t < to; ++t) {
+      DeviceBox b;  // here, not in boxes: the threads' boxes share a cache line
+      for (std::size_t k = paths.size() * t / parts; k < paths.size() * (t + 1) / parts; ++k)
+        b.add(paths[k]);
+      boxes[t] = b;
+    }
+  });
+  DeviceBox box;
+  for (const DeviceBox& b : boxes) box.add(b);
+  return box;
+}
 
 // A run of segments of one input path, points first..last, drawn for the first time.
 struct Piece {
@@ -127,12 +121,12 @@ struct Piece {
 // The segments of the paths, numbered in drawing order, that are not drawn: those without a
 // length, and those drawn before in either direction; in increasing order.
 //
-// A segment belongs to the tile (a square of the plane) of its lower end, so a segment and its
-// repeats share a tile. The paths, cut into runs of consecutive segments of one tile (a path
-// crosses a tile in one run, not segment by segment), are grouped by tile in drawing order; each
-// tile's segments then go through a bitset of their hashes, in the cache, and the few whose hash
-// repeats through a table of those seen, on as many threads as pay. Only the runs are moved,
-// never the segments.
+// A segment belongs to the first (by number) of its ends' tiles (squares of the plane), so a
+// segment and its repeats share a tile. The paths, cut into runs of consecutive segments of one
+// tile (a path crosses a tile in one run, not segment by segment), are grouped by tile in drawing
+// order; each tile's segments then go through a bitset of their hashes, in the cache, and the few
+// whose hash repeats through a table of those seen, on as many threads as pay. Only the runs are
+// moved, never the segments.
 std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& ids) {
   std::size_t n = 0;
   for (const auto& path : paths) n += path.empty() ? 0 : path.size() - 1;
@@ -155,10 +149,6 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
     auto tiles_at = [&](int s) { return ((width >> s) + 1) * ((height >> s) + 1); };
     while (shift < 31 && tiles_at(shift) > n / 2048 + 1) ++shift;
     const u64 tiles_y = (height >> shift) + 1, tiles = tiles_at(shift);
-    auto tile_of = [&](DevicePoint p) {
-      return static_cast<std::uint32_t>((static_cast<u64>(p.x - ids.x0) >> shift) * tiles_y +
-                                        (static_cast<u64>(p.y - ids.y0) >> shift));
-    };
     struct Run {
       std::uint32_t tile, path, first, last;  // segments first..last - 1 of the path
     };
@@ -177,26 +167,32 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
         std::vector<Run> out;
         out.reserve((base[cut[t + 1]] - base[cut[t]]) / 16 + 16);
         std::vector<std::size_t> zero;
+        auto tile_of = [x0 = ids.x0, y0 = ids.y0, s = shift, ty = tiles_y](DevicePoint p) {
+          return static_cast<std::uint32_t>((static_cast<u64>(p.x - x0) >> s) * ty +
+                                            (static_cast<u64>(p.y - y0) >> s));
+        };
         for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
-          const Line& path = paths[k];
+          const DevicePoint* q = paths[k].data();
+          const std::size_t segments = paths[k].empty() ? 0 : paths[k].size() - 1;
+          if (segments == 0) continue;
           const auto p = static_cast<std::uint32_t>(k);
+          // The run being made: its tile (none yet: `open` false) and first segment.
+          std::uint32_t tile = 0, first = 0;
           bool open = false;
-          for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-            const DevicePoint a = path[i], b = path[i + 1];
-            if (a == b) {
-              zero.push_back(base[k] + i), open = false;
+          DevicePoint a = q[0];
+          std::uint32_t tile_a = tile_of(a);
+          for (std::size_t i = 0; i < segments; ++i) {
+            const DevicePoint b = q[i + 1];
+            const std::uint32_t tile_b = tile_of(b), here = std::min(tile_a, tile_b);
+            const bool zero_length = a == b;
+            a = b, tile_a = tile_b;
+            if (open && here == tile && !zero_length) [[likely]]
               continue;
-            }
-            const bool a_lower = a.x < b.x || (a.x == b.x && a.y < b.y);
-            const std::uint32_t tile = tile_of(a_lower ? a : b);
-            if (open && out.back().tile == tile) {
-              ++out.back().last;
-            } else {
-              const auto first = static_cast<std::uint32_t>(i);
-              out.push_back({tile, p, first, first + 1});
-              open = true;
-            }
+            if (open) out.push_back({tile, p, first, static_cast<std::uint32_t>(i)});
+            tile = here, first = static_cast<std::uint32_t>(i), open = true;
+            if (zero_length) zero.push_back(base[k] + i), open = false;
           }
+          if (open) out.push_back({tile, p, first, static_cast<std::uint32_t>(segments)});
         }
         runs[t] = std::move(out);
         add(zero);
@@ -460,11 +456,14 @@ double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, Device
 }
 
 void plot_order(std::span<const Line> paths, DevicePoint start, PlotOrder& out) {
+  plot_order(paths, box_of(paths), start, out);
+}
+
+void plot_order(std::span<const Line> paths, const DeviceBox& box, DevicePoint start,
+                PlotOrder& out) {
   out.strokes.clear();
   out.starts.assign(1, 0);
-  std::size_t points = 0;
-  for (const Line& path : paths) points += path.size();
-  const PointIds ids(paths, points);
+  const PointIds ids(box);
   const std::vector<std::size_t> dropped = not_drawn(paths, ids);
 
   // The pieces: runs of drawn segments within a path, cut where a segment is not drawn.

@@ -47,6 +47,10 @@ double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, Device
 // continues it without lifting the pen. Deterministic. Into `out`, whose buffers are reused;
 // O(n log n) in the number of segments, with no allocation per path; the points are not copied.
 void plot_order(std::span<const Line> lines, DevicePoint start, PlotOrder& out);
+// The same for lines whose points all lie inside `box` (as a placement measures them while it
+// writes them): the lines are not read once more to find it.
+void plot_order(std::span<const Line> lines, const DeviceBox& box, DevicePoint start,
+                PlotOrder& out);
 
 // The same order with its points, into `out`.
 void plot_order(std::span<const DevicePath> paths, DevicePoint start, PathList& out);

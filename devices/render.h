@@ -54,6 +54,7 @@ struct Placed {
   std::vector<Style> styles;      // the style of each path
   std::vector<PlacedText> texts;  // texts whose place lies inside the clip box
   bool clipped = false;           // something lay outside the clip box
+  DeviceBox box;                  // of every path's points
 };
 
 // The drawing placed by `at` and clipped to `clip`, then rounded to the nearest unit (halves

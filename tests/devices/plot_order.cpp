@@ -4,6 +4,7 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <climits>
 #include <random>
 
@@ -32,6 +33,27 @@ void check_same(const Paths& paths, DevicePoint start) {
   plot_order(lines, start, order);
   CHECK(order.size() == expected.size());
   CHECK(pen_up_travel(order, lines, start, {0, 0}) == pen_up_travel(expected, start, {0, 0}));
+  // Given a box that holds the points, as PLOT gives the placement's (which may hold other
+  // styles' paths too): the same strokes.
+  DeviceBox box;
+  for (const Line& line : lines) box.add(line);
+  if (!box.empty()) {
+    auto wider = [](int v, int by) {
+      return static_cast<int>(
+          std::clamp<long long>(static_cast<long long>(v) + by, INT_MIN, INT_MAX));
+    };
+    const DevicePoint corners[] = {{wider(box.x0, -3), wider(box.y0, -70)},
+                                   {wider(box.x1, 12), wider(box.y1, 1)}};
+    box.add(corners);
+  }
+  PlotOrder within;
+  plot_order(lines, box, start, within);
+  CHECK(within.starts == order.starts);
+  REQUIRE(within.strokes.size() == order.strokes.size());
+  for (std::size_t k = 0; k < order.strokes.size(); ++k) {
+    const Stroke &a = within.strokes[k], &b = order.strokes[k];
+    CHECK((a.line == b.line && a.first == b.first && a.last == b.last && a.reversed == b.reversed));
+  }
 }
 
 // Polylines on a lattice of `side` x `side` points `step` apart: with few points, segments

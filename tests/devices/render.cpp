@@ -48,6 +48,21 @@ std::shared_ptr<std::vector<double>> grid_points(std::size_t planes, std::size_t
   return grid;
 }
 
+// The box of every point of the placed paths, read one by one.
+DeviceBox box_of_paths(const Placed& placed) {
+  DeviceBox b;
+  for (std::size_t k = 0; k < placed.paths.size(); ++k)
+    for (const DevicePoint p : placed.paths[k]) {
+      b.x0 = std::min(b.x0, p.x), b.x1 = std::max(b.x1, p.x);
+      b.y0 = std::min(b.y0, p.y), b.y1 = std::max(b.y1, p.y);
+    }
+  return b;
+}
+
+bool same_box(const DeviceBox& a, const DeviceBox& b) {
+  return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+}
+
 std::vector<DevicePath> paths(const Placed& placed) {
   std::vector<DevicePath> out;
   for (std::size_t k = 0; k < placed.paths.size(); ++k)
@@ -104,6 +119,10 @@ TEST_CASE("place: clipped before rounding, rounded to the nearest unit, split wh
                         {0, 0, 20, 20}, {});
   CHECK(!inside.clipped);
   CHECK(paths(inside) == std::vector<DevicePath>{{{2, 2}, {3, 1}}});
+  // Halves up below zero too: floor(v + 0.5).
+  Placed below = place(drawing({{{-1.5, -2.5}, {-0.5, 0.5}, {-2.51, -0.49}, {-7.5, -7.49}}}), {},
+                       {-20, -20, 20, 20}, {});
+  CHECK(paths(below) == std::vector<DevicePath>{{{-1, -2}, {0, 1}, {-3, 0}, {-7, -7}}});
 }
 
 TEST_CASE("place: marks are strokes of the given half side, never out of the clip box") {
@@ -201,6 +220,39 @@ TEST_CASE("bounds: every finite point, read in parts on two threads in a large d
   }
 }
 
+TEST_CASE("DeviceBox: the box of the points added, two at a time or one, and of boxes") {
+  DeviceBox empty;
+  CHECK(empty.empty());
+  empty.add(std::span<const DevicePoint>{});
+  CHECK(empty.empty());
+  // Every count up to a few blocks of four, the extremes anywhere among the points.
+  for (std::size_t n = 1; n < 19; ++n)
+    for (std::size_t at = 0; at < n; ++at) {
+      CAPTURE(n);
+      CAPTURE(at);
+      std::vector<DevicePoint> points;
+      for (std::size_t i = 0; i < n; ++i)
+        points.push_back({static_cast<int>(i * 7 % 5) - 2, static_cast<int>(i * 3 % 4)});
+      points[at] = {std::numeric_limits<int>::min(), std::numeric_limits<int>::max()};
+      if (n - 1 - at != at) points[n - 1 - at].x = 9;
+      DeviceBox b;
+      b.add(points);
+      int x1 = std::numeric_limits<int>::min(), y0 = std::numeric_limits<int>::max();
+      for (const DevicePoint p : points) x1 = std::max(x1, p.x), y0 = std::min(y0, p.y);
+      CHECK(!b.empty());
+      CHECK(b.x0 == std::numeric_limits<int>::min());
+      CHECK(b.y1 == std::numeric_limits<int>::max());
+      CHECK(b.x1 == x1);
+      CHECK(b.y0 == y0);
+    }
+  DeviceBox a, b;
+  a.add(std::vector<DevicePoint>{{1, 2}, {3, -4}});
+  b.add(std::vector<DevicePoint>{{-5, 0}});
+  a.add(b);
+  a.add(DeviceBox{});  // an empty box changes nothing
+  CHECK((a.x0 == -5 && a.y0 == -4 && a.x1 == 3 && a.y1 == 2));
+}
+
 TEST_CASE("place: the stringers of a shared grid, placed side by side, are the paths one by one") {
   // A grid of 40 curves of 37 points, shared by the drawing as a surface image is: its curves
   // one after another, its stringers a row apart (placed sixteen at a time). The same points
@@ -235,6 +287,7 @@ TEST_CASE("place: the stringers of a shared grid, placed side by side, are the p
     CHECK(a.clipped == b.clipped);
     CHECK(a.clipped == (damage == 2));
     CHECK(a.paths.size() == planes + rows + (damage == 0 ? 0 : 2));
+    CHECK(same_box(a.box, box_of_paths(a)));
   }
 }
 
@@ -310,6 +363,9 @@ TEST_CASE("place: a large drawing placed in two parts at once is the drawing pla
   CHECK(paths(placed) == one_by_one);
   CHECK(placed.styles == styles);
   CHECK(placed.paths.size() > planes + rows);
+  // The box of the paths, measured as each part placed them (the plot order is given it).
+  CHECK(!placed.box.empty());
+  CHECK(same_box(placed.box, box_of_paths(placed)));
   REQUIRE(placed.texts.size() == 1);
   CHECK(placed.texts[0].text == "INSIDE");
   PolylineRecorder r;
