@@ -4,12 +4,14 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <string>
 
 #include "devices/tek_screen.h"
 #include "devices/terminal.h"
 #include "tests/e2e/e2e_support.h"
 #include "tests/support/tek_decoder.h"
+#include "tests/workspace/live_igds.h"
 
 namespace igds::test {
 
@@ -21,7 +23,45 @@ std::size_t count(const std::string& text, std::string_view what) {
   return n;
 }
 
+// GLIBC_TUNABLES in the environment of an igds waiting at READY, started with `given` there
+// (none when null), as /proc shows it; "(none)" when it has none.
+std::string tunables_of_running_igds(const char* given) {
+  const char* saved = std::getenv("GLIBC_TUNABLES");
+  const std::string before = saved ? saved : "";
+  if (given)
+    ::setenv("GLIBC_TUNABLES", given, 1);
+  else
+    ::unsetenv("GLIBC_TUNABLES");
+  std::string found = "(none)";
+  {
+    TempDir disk;
+    LiveIgds igds(igds_binary(), {"--term", "none", "--disk", disk.path().string()}, true);
+    if (igds.wait_for("READY", 60)) {
+      const std::string environ = read_file(fmt::format("/proc/{}/environ", igds.pid()));
+      for (std::size_t at = 0; at < environ.size();) {
+        const std::size_t end = std::min(environ.find('\0', at), environ.size());
+        const std::string entry = environ.substr(at, end - at);
+        if (entry.starts_with("GLIBC_TUNABLES=")) found = entry.substr(15);
+        at = end + 1;
+      }
+    } else {
+      found = "(no READY)";
+    }
+  }
+  if (saved)
+    ::setenv("GLIBC_TUNABLES", before.c_str(), 1);
+  else
+    ::unsetenv("GLIBC_TUNABLES");
+  return found;
+}
+
 }  // namespace
+
+TEST_CASE("igds starts itself again once, its allocator told to ask for huge pages") {
+  CHECK(tunables_of_running_igds(nullptr) == "glibc.malloc.hugetlb=1");
+  // The user's own choice stands.
+  CHECK(tunables_of_running_igds("glibc.malloc.hugetlb=0") == "glibc.malloc.hugetlb=0");
+}
 
 TEST_CASE("a command file gives the transcript of the session") {
   TempDir disk;
