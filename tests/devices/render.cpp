@@ -63,6 +63,19 @@ bool same_box(const DeviceBox& a, const DeviceBox& b) {
   return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
 }
 
+// A drawing of `grid` shared as a surface image is: its curves one after another, then its
+// stringers a row apart.
+Drawing2 shared_grid(const std::shared_ptr<std::vector<double>>& grid, std::size_t planes,
+                     std::size_t rows) {
+  Drawing2 d;
+  const auto pool = d.share(grid, grid->data(), grid->size());
+  for (std::size_t c = 0; c < planes; ++c)
+    d.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
+  for (std::size_t r = 0; r < rows; ++r)
+    d.add_polyline(pool, 2 * r, planes, 2 * rows, {}, {Role::stringer, int(r + 1)});
+  return d;
+}
+
 std::vector<DevicePath> paths(const Placed& placed) {
   std::vector<DevicePath> out;
   for (std::size_t k = 0; k < placed.paths.size(); ++k)
@@ -204,12 +217,7 @@ TEST_CASE("bounds: every finite point, read in parts on two threads in a large d
     if (damage >= 1) (*grid)[2 * (419 * rows + 399)] = -inf;  // the last point
     if (damage >= 2) (*grid)[2 * (300 * rows + 20) + 1] = std::nan("");
     if (damage >= 3) (*grid)[2 * (211 * rows + 7)] = 1e300, (*grid)[2 * (417 * rows)] = -1e300;
-    Drawing2 d;
-    const auto pool = d.share(grid, grid->data(), grid->size());
-    for (std::size_t c = 0; c < planes; ++c)
-      d.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
-    for (std::size_t r = 0; r < rows; ++r)
-      d.add_polyline(pool, 2 * r, planes, 2 * rows, {}, {Role::stringer, int(r + 1)});
+    Drawing2 d = shared_grid(grid, planes, rows);
     const double controls[] = {10, 10, 60, 1200, 110, 10};
     d.add_curve(2, Point2View(controls, 3), {}, Style{2});
     d.add_mark({-40, 40}, MarkShape::cross, 3, Style{3});
@@ -382,12 +390,7 @@ TEST_CASE("place: the points' buffers of a large placement are kept for the next
   auto grid = grid_points(planes, rows, [](double c, double r) {
     return Point2{0.3 * r + 0.01 * c, 0.25 * c + 0.02 * r};
   });
-  Drawing2 d;
-  const auto pool = d.share(grid, grid->data(), grid->size());
-  for (std::size_t c = 0; c < planes; ++c)
-    d.add_polyline(pool, 2 * c * rows, rows, 2, {}, {Role::curve, int(c + 1)});
-  for (std::size_t r = 0; r < rows; ++r)
-    d.add_polyline(pool, 2 * r, planes, 2 * rows, {}, {Role::stringer, int(r + 1)});
+  const Drawing2 d = shared_grid(grid, planes, rows);
   const Box clip{0, 0, 400, 300};
   const Placement at{1, 2, 3};
   const std::vector<DevicePath> expected = paths(place(d, at, clip, {}));
