@@ -563,7 +563,7 @@ std::vector<std::size_t> placing_cost(const Drawing2& drawing) {
 
 // The points' buffers of the last large placement, kept for the next. Handed back to the heap,
 // their memory would be taken by the commands in between (SAVE, WRITE), and the next placement
-// of as many points would fault 50 MB of new pages in again (90 ms here).
+// of as many points would fault 50 MB of new pages in again (78 ms of placing instead of 17).
 constexpr std::size_t large_points = (std::size_t{4} << 20) / sizeof(DevicePoint);  // 4 MB
 std::mutex kept_mutex;
 std::vector<DevicePoint> kept[2];
