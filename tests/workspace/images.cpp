@@ -1,8 +1,13 @@
-// workspace/images.h: what a copy of an image keeps.
+// workspace/images.h and state.h: what a copy of an image keeps; a deferred image made once.
 #include "workspace/images.h"
 
 #include <doctest/doctest.h>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
 
 namespace igds {
@@ -38,6 +43,83 @@ TEST_CASE("large_copy copies large arrays and small ones alike") {
     const Array b = large_copy(a, 2);
     CHECK(b == a);
   }
+}
+
+TEST_CASE("a deferred image is made once, by whichever thread looks first; a failed make again") {
+  // The session makes the current image on a thread of its own while a command may look at it.
+  using namespace std::chrono_literals;
+  std::atomic<int> makes = 0;
+  std::atomic<bool> started = false;
+  const Description desim{1, Projection::isometric, {3, 30, 0}};
+  const ImageRef ref = ImageRef::deferred(
+      [&] {
+        const int k = ++makes;
+        if (k == 1) throw DataError(DataError::Problem::view_inside_box);
+        if (k == 2) {
+          // Long enough for the other look to come while this make runs.
+          started = true;
+          std::this_thread::sleep_for(100ms);
+        }
+        Image image;
+        image.desim = desim;
+        image.points = Array({2, 2, 2});
+        image.drawn_from = 5;
+        return image;
+      },
+      5, desim);
+  // A make that fails leaves the recipe: the next look tries again.
+  CHECK_THROWS_AS(static_cast<void>(*ref), DataError);
+  CHECK(!ref.made());
+  CHECK(ref.recipe() == std::pair{std::uint64_t{5}, desim});
+  const Image* seen[2] = {};
+  std::thread first([&] { seen[0] = &*ref; });
+  while (!started) std::this_thread::yield();
+  seen[1] = &*ref;  // waits for the make under way instead of making another
+  first.join();
+  CHECK(makes == 2);
+  CHECK(seen[0] == seen[1]);
+  CHECK(ref.made());
+  CHECK(ref.recipe() == std::pair{std::uint64_t{5}, desim});
+  ref.make_ahead();  // made already: nothing
+  CHECK(makes == 2);
+  CHECK(!ref.made_ahead());
+}
+
+TEST_CASE("an image made ahead is taken by its first look, or given up") {
+  std::atomic<int> makes = 0;
+  auto deferred = [&] {
+    return ImageRef::deferred(
+        [&] {
+          ++makes;
+          Image image;
+          image.points = Array({1, 1, 2});
+          image.points.ravel = {1, 2};
+          return image;
+        },
+        0, {});
+  };
+  const ImageRef taken = deferred();
+  taken.make_ahead();
+  CHECK(makes == 1);
+  CHECK(taken.made_ahead());
+  CHECK(!taken.made());
+  taken.make_ahead();  // once
+  CHECK(makes == 1);
+  CHECK(taken->points.ravel == std::vector<double>{1, 2});
+  CHECK(makes == 1);
+  CHECK(taken.made());
+  CHECK(!taken.made_ahead());
+
+  const ImageRef given_up = deferred();
+  given_up.make_ahead();
+  CHECK(makes == 2);
+  given_up.drop_ahead();
+  CHECK(!given_up.made_ahead());
+  given_up.make_ahead();  // given up for good: not made ahead again
+  CHECK(makes == 2);
+  CHECK(given_up->points.ravel == std::vector<double>{1, 2});
+  CHECK(makes == 3);
+  CHECK(given_up.made());
 }
 
 }  // namespace

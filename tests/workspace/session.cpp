@@ -15,6 +15,7 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <thread>
 
 #include <fmt/format.h>
 
@@ -597,6 +598,58 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
             disk::Piece{true, {}, {1, (std::uint64_t(1) << 40) + 32, 0}, std::uint64_t(1) << 40}};
       },
       "IMAGE: TOO LARGE");
+}
+
+TEST_CASE("a start makes the current image ahead while igds waits; the others when looked at") {
+  using namespace std::chrono_literals;
+  Scratch s;
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  ws.image =
+      std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+  ws.temp1 = std::make_shared<const Image>(image_of(ws, {1, Projection::isometric, {3, 30, 0}}));
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  {
+    // Loaded in the foreground (tests, tools): made only when looked at.
+    Session session(s.disk);
+    Workspace back = session.load();
+    CHECK(!back.image.made_ahead());
+    CHECK(!back.image.made());
+  }
+  // As igds starts: IMAGE is made although nothing looks at it (at once on an idle machine; a
+  // minute is allowed for the slowest), TEMP1 is left for its first look.
+  auto started = [&](Session& session) {
+    Workspace back = session.load(true);
+    for (int k = 0; k < 6000 && !back.image.made_ahead(); ++k) std::this_thread::sleep_for(10ms);
+    session.complete(back);
+    return back;
+  };
+  SUBCASE("looked at: taken, not made again") {
+    Session session(s.disk);
+    Workspace back = started(session);
+    CHECK(back.image.made_ahead());
+    CHECK(!back.image.made());  // nothing for the undo journal to count yet
+    CHECK(!back.temp1.made_ahead());
+    CHECK(*back.image == *ws.image);
+    CHECK(back.image.made());
+    CHECK(!back.image.made_ahead());
+    CHECK(*back.temp1 == *ws.temp1);
+    session.save(back);
+  }
+  SUBCASE("replaced before anyone looked: given up at the next save") {
+    Session session(s.disk);
+    Workspace back = started(session);
+    const ImageRef old = back.image;
+    CHECK(old.made_ahead());
+    back.image = back.temp1;  // as DISPLAY FIRST
+    session.save(back);
+    CHECK(!old.made_ahead());
+    CHECK(!old.made());
+    CHECK(*old == *ws.image);  // made again when looked at after all (UNDO)
+  }
 }
 
 TEST_CASE("a session refused after its inputs are read leaves no surface being made behind it") {

@@ -1,6 +1,7 @@
 #include "workspace/disk/session.h"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -35,6 +36,12 @@ using disk::Piece;
 using disk::Record;
 using disk::SessionTable;
 using disk::StoredArray;
+
+// This thread, and the threads it starts, at the lowest priority: on Linux a thread's nice value
+// is its own, and a new thread takes its creator's. Advice: a refusal changes nothing.
+void lowest_priority() {
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
+}
 
 constexpr std::string_view session_name = "BINSAVE";
 constexpr std::string_view session_type = "IGDSCONT";
@@ -88,6 +95,8 @@ struct Session::State {
   std::uint32_t next_number = 1;
   bool in_background = false;
   std::future<Surface> deriving;   // PATCHES and INTPN being made (load in the background)
+  ImageRef ahead;                  // the image made ahead until it is looked at or replaced
+  std::future<void> making;        // its make (load in the background)
   std::optional<Journal> journal;  // the undo journal read by the last load
   // During a load: the variable files read and checked so far, and their payloads.
   mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
@@ -455,6 +464,21 @@ Workspace Session::State::read_session() {
     }
   }
   drop.kept = true;
+  // The current image, when it is a recipe, is made ahead on a thread of its own while igds
+  // waits for the first command, at the lowest priority: a PLOT or STORE typed first finds it
+  // made, and a command typed at once is not slowed by it. A make that fails is tried again when
+  // the image is looked at, which reports it. Given up when a command replaces the image first
+  // (see save).
+  if (in_background && ws.image && !ws.image.made()) {
+    ahead = ws.image;
+    making = std::async(std::launch::async, [image = ws.image] {
+      lowest_priority();
+      try {
+        image.make_ahead();
+      } catch (...) {
+      }
+    });
+  }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
   saved_known = true;
@@ -624,6 +648,13 @@ Journal Session::take_journal(const Workspace& ws) {
 
 void Session::save(Workspace& ws, const Journal* journal) {
   State& s = *state_;
+  // The image made ahead at start and replaced before anyone looked at it: its memory goes, so
+  // that it never outlives its place in the workspace unseen.
+  if (s.ahead &&
+      (s.ahead.made() || !(ws.image == s.ahead || ws.temp1 == s.ahead || ws.temp2 == s.ahead))) {
+    s.ahead.drop_ahead();
+    s.ahead.reset();
+  }
   const SessionTable& old = s.saved;
   const Record* current = old.record(old.current);
   const bool surface_same =
