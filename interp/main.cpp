@@ -40,5 +40,9 @@ int main(int argc, char** argv) {
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest: blocks below it come from the heap
   mallopt(M_MMAP_MAX, 0);               // and the larger ones too (an image of 64 MB, INTPN)
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  // Every thread allocates from that one heap, in huge pages: glibc would give each new thread a
+  // heap of its own, in small pages, so that a command's second thread faulted its memory in
+  // 4 KB at a time, and the memory one thread freed was not there for another's next command.
+  mallopt(M_ARENA_MAX, 1);
   return igds::igds_main(argc, argv);
 }
