@@ -35,6 +35,7 @@ struct DeviceBox {
     x0 = std::min(x0, b.x0), x1 = std::max(x1, b.x1);
     y0 = std::min(y0, b.y0), y1 = std::max(y1, b.y1);
   }
+  friend bool operator==(const DeviceBox&, const DeviceBox&) = default;
 };
 
 // Polylines stored one after another in one buffer: path k is points[starts[k]] up to, not

@@ -132,7 +132,7 @@ bool ImageRef::made_ahead() const {
 
 void ImageRef::drop_ahead() const {
   if (!cell_) return;
-  std::shared_ptr<const Image> gone;
+  std::shared_ptr<const Image> gone;  // freed after the lock is let go
   const std::lock_guard kept(cell_->aside);
   cell_->dropped = true;
   gone = std::move(cell_->ahead);

@@ -59,10 +59,6 @@ DeviceBox box_of_paths(const Placed& placed) {
   return b;
 }
 
-bool same_box(const DeviceBox& a, const DeviceBox& b) {
-  return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
-}
-
 // A drawing of `grid` shared as a surface image is: its curves one after another, then its
 // stringers a row apart.
 Drawing2 shared_grid(const std::shared_ptr<std::vector<double>>& grid, std::size_t planes,
@@ -258,7 +254,7 @@ TEST_CASE("DeviceBox: the box of the points added, two at a time or one, and of 
   b.add(std::vector<DevicePoint>{{-5, 0}});
   a.add(b);
   a.add(DeviceBox{});  // an empty box changes nothing
-  CHECK((a.x0 == -5 && a.y0 == -4 && a.x1 == 3 && a.y1 == 2));
+  CHECK(a == DeviceBox{-5, -4, 3, 2});
 }
 
 TEST_CASE("place: the stringers of a shared grid, placed side by side, are the paths one by one") {
@@ -295,7 +291,7 @@ TEST_CASE("place: the stringers of a shared grid, placed side by side, are the p
     CHECK(a.clipped == b.clipped);
     CHECK(a.clipped == (damage == 2));
     CHECK(a.paths.size() == planes + rows + (damage == 0 ? 0 : 2));
-    CHECK(same_box(a.box, box_of_paths(a)));
+    CHECK(a.box == box_of_paths(a));
   }
 }
 
@@ -373,7 +369,7 @@ TEST_CASE("place: a large drawing placed in two parts at once is the drawing pla
   CHECK(placed.paths.size() > planes + rows);
   // The box of the paths, measured as each part placed them (the plot order is given it).
   CHECK(!placed.box.empty());
-  CHECK(same_box(placed.box, box_of_paths(placed)));
+  CHECK(placed.box == box_of_paths(placed));
   REQUIRE(placed.texts.size() == 1);
   CHECK(placed.texts[0].text == "INSIDE");
   PolylineRecorder r;

@@ -27,6 +27,7 @@
 #include "workspace/disk/frame.h"
 #include "workspace/disk/session_file.h"
 #include "workspace/error.h"
+#include "workspace/kernels/data_error.h"
 
 using namespace igds;
 namespace fs = std::filesystem;
@@ -650,6 +651,34 @@ TEST_CASE("a start makes the current image ahead while igds waits; the others wh
     CHECK(!old.made());
     CHECK(*old == *ws.image);  // made again when looked at after all (UNDO)
   }
+}
+
+TEST_CASE(
+    "an image made ahead that cannot be made: nothing said at start, the first look says why") {
+  Scratch s;
+  {
+    Session session(s.disk);
+    session.load();
+    Workspace ws = test::make_interpolated(6, 6, 2, 2);
+    ws.image =
+        std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+    session.save(ws);
+  }
+  auto table =
+      disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
+  REQUIRE(table.images[0].kind == disk::ImageEntry::recipe);
+  // A conic view from inside the surface's box (the surface spans 0..50, 0..35.5, -1..1), which
+  // DISPLAY refuses and a crafted file can say.
+  table.images[0].desim = {1, Projection::conic, {25, 17, 0}};
+  test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
+  Session session(s.disk);
+  Workspace back = session.load(true);
+  CHECK(session.notices().empty());
+  session.complete(back);
+  // Waits for the make under way (which failed, unseen), then makes it again: the same error.
+  CHECK_THROWS_AS(static_cast<void>(*back.image), DataError);
+  CHECK(!back.image.made());
+  CHECK(!back.image.made_ahead());
 }
 
 TEST_CASE("a session refused after its inputs are read leaves no surface being made behind it") {

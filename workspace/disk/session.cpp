@@ -466,17 +466,14 @@ Workspace Session::State::read_session() {
   drop.kept = true;
   // The current image, when it is a recipe, is made ahead on a thread of its own while igds
   // waits for the first command, at the lowest priority: a PLOT or STORE typed first finds it
-  // made, and a command typed at once is not slowed by it. A make that fails is tried again when
-  // the image is looked at, which reports it. Given up when a command replaces the image first
-  // (see save).
+  // made, and a command typed at once is not slowed by it. A make that fails leaves its error in
+  // the future, never looked at: the image is made again when looked at, which reports it. Given
+  // up when a command replaces the image first (see save).
   if (in_background && ws.image && !ws.image.made()) {
     ahead = ws.image;
     making = std::async(std::launch::async, [image = ws.image] {
       lowest_priority();
-      try {
-        image.make_ahead();
-      } catch (...) {
-      }
+      image.make_ahead();
     });
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
