@@ -5,7 +5,8 @@
 // the next READY (the autosave included) and the bytes igds wrote to files meanwhile; at the end
 // the session's peak resident memory. Also the start-up with that session saved (to READY; PATCHES
 // and INTPN are made while the first line is typed, and the first command waits for them if it
-// comes sooner), and the variables' own size for comparison.
+// comes sooner), a PLOT typed as the first command after a start, and the variables' own size
+// for comparison.
 //
 // Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes,
 // ..._<command>_peak_rss_mb (the session's peak once the command is done), ..._peak_rss_mb,
@@ -265,6 +266,9 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
       {"export_duct", "EXPORT DUCT DRAWING\n", 1},
       {"export_iges", "EXPORT IGES DRAWING\n", 1},
       {"export_step", "EXPORT STEP DRAWING\n", 1},
+      // Once: the first image made after the plots and files, where the memory they left may
+      // not hold it (the heap grows).
+      {"display_after_plots", "DISPLAY SURFACE ASSONOMETRIC 110 130 120\n", 1},
   };
   std::size_t peak = 0;
   {
@@ -311,6 +315,17 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
   std::sort(answers.begin(), answers.end());
   fmt::print("{}_startup_ms {:.1f}\n", prefix, 1000 * starts[1]);
   fmt::print("{}_startup_first_answer_ms {:.1f}\n", prefix, 1000 * answers[1]);
+  // A PLOT typed half a second after READY, as the first command of the session: the image is
+  // made while igds waits, the plot's memory is new to igds.
+  std::vector<double> plots;
+  for (int r = 0; r < 3; ++r) {
+    Igds igds(disk.dir());
+    ::usleep(500000);
+    plots.push_back(igds.command("PLOT SELECTRIC\n").seconds);
+    igds.command("END CMS\n");
+  }
+  std::sort(plots.begin(), plots.end());
+  fmt::print("{}_first_plot_after_start_ms {:.1f}\n", prefix, 1000 * plots[1]);
   for (const auto& entry : fs::directory_iterator(disk.dir())) {
     const auto name = entry.path().filename().string();
     if (!name.ends_with(".IGDSDATA")) fs::remove_all(entry.path());
