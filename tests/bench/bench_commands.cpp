@@ -1,12 +1,12 @@
 // Every command at the speed of its data: a real igds session (the binary, --term none, its
 // session on a scratch disk of the system's temporary folder, fsync included) on surfaces of about
 // 1 M and 4 M points from a 100 x 100 and a 500 x 500 input grid. For each command (run three
-// times, the median; BUILD and the exchange files once): the milliseconds from sending its lines to
-// the next READY (the autosave included) and the bytes igds wrote to files meanwhile; at the end
-// the session's peak resident memory. Also the start-up with that session saved (to READY; PATCHES
-// and INTPN are made while the first line is typed, and the first command waits for them if it
-// comes sooner), a PLOT typed as the first command after a start, and the variables' own size
-// for comparison.
+// times, the median; BUILD, the exchange files and the display after them once): the
+// milliseconds from sending its lines to the next READY (the autosave included) and the bytes
+// igds wrote to files meanwhile; at the end the session's peak resident memory. Also the start-up
+// with that session saved (to READY; PATCHES and INTPN are made while the first line is typed,
+// and the first command waits for them if it comes sooner), a PLOT typed as the first command
+// after a start, and the variables' own size for comparison.
 //
 // Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes,
 // ..._<command>_peak_rss_mb (the session's peak once the command is done), ..._peak_rss_mb,
