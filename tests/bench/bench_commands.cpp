@@ -288,6 +288,9 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
         if (key == "redo") igds.command("UNDO\n");
         runs.push_back(igds.command(step.lines));
       }
+      // The image it replaced back (not timed): the start-ups below measure the session they
+      // always measured, whose image was read from a file.
+      if (std::string_view(step.key) == "display_after_plots") igds.command("UNDO\n");
       std::sort(runs.begin(), runs.end(),
                 [](const auto& a, const auto& b) { return a.seconds < b.seconds; });
       const auto& median = runs[runs.size() / 2];

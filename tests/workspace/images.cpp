@@ -122,5 +122,34 @@ TEST_CASE("an image made ahead is taken by its first look, or given up") {
   CHECK(given_up.made());
 }
 
+TEST_CASE("an image given up while it is being made ahead is not kept when the make ends") {
+  // The session gives the image up (a command replaced it) while its thread still makes it: the
+  // give-up does not wait for the make, and what the make ends with goes.
+  std::atomic<int> makes = 0;
+  std::atomic<bool> started = false, go_on = false;
+  const ImageRef ref = ImageRef::deferred(
+      [&] {
+        if (++makes == 1) {
+          started = true;
+          while (!go_on) std::this_thread::yield();
+        }
+        Image image;
+        image.points = Array({1, 1, 2});
+        image.points.ravel = {3, 4};
+        return image;
+      },
+      0, {});
+  std::thread ahead([&] { ref.make_ahead(); });
+  while (!started) std::this_thread::yield();
+  ref.drop_ahead();  // while the make runs
+  go_on = true;
+  ahead.join();
+  CHECK(makes == 1);
+  CHECK(!ref.made_ahead());
+  CHECK(!ref.made());
+  CHECK(ref->points.ravel == std::vector<double>{3, 4});  // made again when looked at
+  CHECK(makes == 2);
+}
+
 }  // namespace
 }  // namespace igds

@@ -653,6 +653,28 @@ TEST_CASE("a start makes the current image ahead while igds waits; the others wh
   }
 }
 
+TEST_CASE("a session that ends before its image is begun being made ahead does not make it") {
+  Scratch s;
+  {
+    Session session(s.disk);
+    session.load();
+    Workspace ws = test::make_interpolated(6, 6, 2, 2);
+    ws.image =
+        std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+    session.save(ws);
+  }
+  ImageRef image;
+  {
+    Session session(s.disk);
+    session.set_make_ahead_delay_for_testing(std::chrono::hours(1));
+    Workspace back = session.load(true);
+    session.complete(back);
+    image = back.image;
+  }  // as END typed at once: not an hour
+  CHECK(!image.made_ahead());
+  CHECK(!image.made());
+}
+
 TEST_CASE(
     "an image made ahead that cannot be made: nothing said at start, the first look says why") {
   Scratch s;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <future>
 #include <map>
@@ -94,10 +95,12 @@ struct Session::State {
   std::set<std::string> obsolete;  // files of a version 1 session, removed after the next save
   std::uint32_t next_number = 1;
   bool in_background = false;
-  std::future<Surface> deriving;   // PATCHES and INTPN being made (load in the background)
-  ImageRef ahead;                  // the image made ahead until it is looked at or replaced
-  std::future<void> making;        // its make (load in the background)
-  std::optional<Journal> journal;  // the undo journal read by the last load
+  std::future<Surface> deriving;  // PATCHES and INTPN being made (load in the background)
+  ImageRef ahead;                 // the image made ahead until it is looked at or replaced
+  std::future<void> making;       // its make (load in the background)
+  std::promise<void> leaving;     // set when the session ends: a make not begun is not begun
+  std::chrono::milliseconds ahead_delay{150};  // from the load to the make
+  std::optional<Journal> journal;              // the undo journal read by the last load
   // During a load: the variable files read and checked so far, and their payloads.
   mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
 
@@ -466,15 +469,20 @@ Workspace Session::State::read_session() {
   drop.kept = true;
   // The current image, when it is a recipe, is made ahead on a thread of its own while igds
   // waits for the first command, at the lowest priority: a PLOT or STORE typed first finds it
-  // made, and a command typed at once is not slowed by it. A make that fails leaves its error in
-  // the future, never looked at: the image is made again when looked at, which reports it. Given
-  // up when a command replaces the image first (see save).
+  // made, and a command typed at once is not slowed by it. It begins a moment after READY
+  // (ahead_delay), so that a session ended at once (END typed first, a command file) does not
+  // wait for an image nobody looks at. A make that fails leaves its error in the future, never
+  // looked at: the image is made again when looked at, which reports it. Given up when a
+  // command replaces the image first (see save).
   if (in_background && ws.image && !ws.image.made()) {
     ahead = ws.image;
-    making = std::async(std::launch::async, [image = ws.image] {
-      lowest_priority();
-      image.make_ahead();
-    });
+    leaving = std::promise<void>();
+    making = std::async(std::launch::async,
+                        [image = ws.image, delay = ahead_delay, left = leaving.get_future()] {
+                          if (left.wait_for(delay) != std::future_status::timeout) return;
+                          lowest_priority();
+                          image.make_ahead();
+                        });
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
@@ -588,7 +596,14 @@ Session::Session(const Disk& disk) : state_(std::make_unique<State>(disk)) {
       s.next_number = n + 1;
 }
 
-Session::~Session() = default;
+Session::~Session() {
+  // An image not yet begun being made ahead is not made; one under way is waited for.
+  if (state_->making.valid()) state_->leaving.set_value();
+}
+
+void Session::set_make_ahead_delay_for_testing(std::chrono::milliseconds delay) {
+  state_->ahead_delay = delay;
+}
 
 Workspace Session::load(bool in_background) {
   State& s = *state_;

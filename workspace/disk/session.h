@@ -3,6 +3,7 @@
 // docs/disk.md.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,10 @@ class Session {
 
   // What load() and the lock had to tell the user, in IGDS style, to print before READY.
   const std::vector<std::string>& notices() const;
+
+  // How long after a load in the background the current image starts being made ahead (150 ms:
+  // a command typed at once, or END, meets no make under way). For tests.
+  void set_make_ahead_delay_for_testing(std::chrono::milliseconds delay);
 
  private:
   struct State;
