@@ -653,16 +653,23 @@ TEST_CASE("a start makes the current image ahead while igds waits; the others wh
   }
 }
 
+namespace {
+
+// A saved session whose current image is the surface's, kept as its recipe.
+void save_with_image(const Scratch& s) {
+  Session session(s.disk);
+  session.load();
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  ws.image =
+      std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+  session.save(ws);
+}
+
+}  // namespace
+
 TEST_CASE("a session that ends before its image is begun being made ahead does not make it") {
   Scratch s;
-  {
-    Session session(s.disk);
-    session.load();
-    Workspace ws = test::make_interpolated(6, 6, 2, 2);
-    ws.image =
-        std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
-    session.save(ws);
-  }
+  save_with_image(s);
   ImageRef image;
   {
     Session session(s.disk);
@@ -678,14 +685,7 @@ TEST_CASE("a session that ends before its image is begun being made ahead does n
 TEST_CASE(
     "an image made ahead that cannot be made: nothing said at start, the first look says why") {
   Scratch s;
-  {
-    Session session(s.disk);
-    session.load();
-    Workspace ws = test::make_interpolated(6, 6, 2, 2);
-    ws.image =
-        std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
-    session.save(ws);
-  }
+  save_with_image(s);
   auto table =
       disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
   REQUIRE(table.images[0].kind == disk::ImageEntry::recipe);
