@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <mutex>
 #include <numbers>
 
 #include "workspace/drawing/flatten.h"
@@ -548,47 +547,12 @@ std::vector<std::size_t> polyline_points(const Drawing2& drawing, std::size_t ne
   return before;
 }
 
-// The points' buffers of the last large placement, kept for the next. Handed back to the heap,
-// their memory would be taken by the commands in between (SAVE, WRITE), and the next placement
-// of as many points would fault 50 MB of new pages in again (78 ms of placing instead of 17).
-constexpr std::size_t large_points = (std::size_t{4} << 20) / sizeof(DevicePoint);  // 4 MB
-std::mutex kept_mutex;
-std::vector<DevicePoint> kept[2];
-
-// A buffer with room for `n` points: for a large placement the smallest kept one that has it,
-// else a new one.
-std::vector<DevicePoint> room_for_points(std::size_t n) {
-  std::vector<DevicePoint> room;
-  if (n >= large_points) {
-    const std::lock_guard lock(kept_mutex);
-    std::vector<DevicePoint>* best = nullptr;
-    for (auto& k : kept)
-      if (k.capacity() >= n && (!best || k.capacity() < best->capacity())) best = &k;
-    if (best) room = std::move(*best);
-  }
-  room.clear();
-  if (room.capacity() < n) reserve_large(room, n);
-  return room;
-}
-
-// Keeps a large buffer in place of the smaller of the two kept (a small one goes to the heap).
-void keep_points(std::vector<DevicePoint>&& points) {
-  if (points.capacity() < large_points) return;
-  const std::lock_guard lock(kept_mutex);
-  auto& smaller = kept[0].capacity() <= kept[1].capacity() ? kept[0] : kept[1];
-  if (points.capacity() > smaller.capacity()) smaller = std::move(points);
-}
-
 // The number of threads worth placing `points` on.
 unsigned placing_threads(std::size_t points) {
   return std::min(threads_for(2 * points), 2u);
 }
 
 }  // namespace
-
-Placed::~Placed() {
-  for (PathList& part : paths.parts) keep_points(std::move(part.points));
-}
 
 Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
              const Rendering& rendering) {
@@ -612,7 +576,7 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
       const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
       // Room for every polyline point of the part at once: a large drawing's list is not copied
       // as it grows.
-      list.points = room_for_points(before[until] - before[from]);
+      reserve_large(list.points, before[until] - before[from]);
       ListSink sink(to, list);
       place_lines(drawing, from, until, at, clip, rendering, sink);
       to.clipped = sink.clipped;

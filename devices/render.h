@@ -55,13 +55,6 @@ struct Placed {
   std::vector<PlacedText> texts;  // texts whose place lies inside the clip box
   bool clipped = false;           // something lay outside the clip box
   DeviceBox box;                  // of every path's points
-
-  Placed() = default;
-  Placed(Placed&&) = default;
-  Placed& operator=(Placed&&) = default;
-  // The points' buffers of a large drawing are kept for the next place() (a DISPLAY, then the
-  // PLOT of the same picture): their pages stay igds's, not the heap's.
-  ~Placed();
 };
 
 // The drawing placed by `at` and clipped to `clip`, then rounded to the nearest unit (halves

@@ -3,10 +3,12 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <new>
 #include <string>
 #include <string_view>
 
 #include "interp/start.h"
+#include "workspace/kernels/big_blocks.h"
 
 namespace {
 
@@ -32,13 +34,42 @@ void start_again_with_huge_pages([[maybe_unused]] char** argv) {
 
 }  // namespace
 
+// Large blocks (an image, INTPN, a plot's points) come from the kept memory of the blocks freed
+// before, whatever their sizes: the heap would leave them as holes a larger block does not fit,
+// and grow (docs/decisions.md, "Memory kept"). Under a sanitizer (IGDS_SANITIZED, set by
+// CMakeLists.txt), which watches every block, everything comes from the heap.
+#ifndef IGDS_SANITIZED
+void* operator new(std::size_t bytes) {
+  if (bytes >= igds::big_blocks::smallest)
+    if (void* p = igds::big_blocks::allocate(bytes)) return p;
+  for (;;) {
+    if (void* p = std::malloc(bytes == 0 ? 1 : bytes)) return p;
+    const std::new_handler handler = std::get_new_handler();
+    if (!handler) throw std::bad_alloc();
+    handler();
+  }
+}
+
+void operator delete(void* p) noexcept {
+  if (igds::big_blocks::owns(p))
+    igds::big_blocks::release(p);
+  else
+    std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept {
+  operator delete(p);
+}
+#endif
+
 int main(int argc, char** argv) {
   start_again_with_huge_pages(argv);
   // Memory a command frees stays in igds for the next command instead of going back to the
   // system: a DISPLAY, PLOT or EXPORT of 4 M points uses hundreds of megabytes of scratch, and
-  // every fresh page costs a fault and its clearing (docs/decisions.md, "Memory kept").
+  // every fresh page costs a fault and its clearing (docs/decisions.md, "Memory kept"). The large
+  // blocks keep theirs (above); the heap, where the smaller blocks come from, keeps its own.
   mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest: blocks below it come from the heap
-  mallopt(M_MMAP_MAX, 0);               // and the larger ones too (an image of 64 MB, INTPN)
+  mallopt(M_MMAP_MAX, 0);               // and the larger ones too (under a sanitizer)
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   // Every thread allocates from that one heap, in huge pages: glibc would give each new thread a
   // heap of its own, in small pages, so that a command's second thread faulted its memory in

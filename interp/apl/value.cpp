@@ -1,79 +1,30 @@
 #include "interp/apl/value.h"
 
-#include <sys/mman.h>
-
 #include <algorithm>
-#include <array>
-#include <cstdlib>
-#include <mutex>
 #include <utility>
 
 #include "interp/apl/text.h"
+#include "workspace/kernels/big_blocks.h"
 
 namespace igds::apl {
 
-namespace {
-
-constexpr std::size_t huge_page = std::size_t{2} << 20;
-
-// The last large blocks freed, kept for the next results of their size: a statement repeated
-// on workspace-sized arrays (X←INTPN×2) then writes into memory already mapped, instead of
-// waiting for the kernel to map and clear fresh pages each time. At most two blocks.
-class BlockCache {
- public:
-  void* take(std::size_t bytes) {
-    std::lock_guard lock(mutex_);
-    for (auto& b : blocks_) {
-      if (b.first && b.second == bytes) {
-        void* p = b.first;
-        b = {nullptr, 0};
-        return p;
-      }
-    }
-    return nullptr;
-  }
-  void give(void* p, std::size_t bytes) {
-    std::lock_guard lock(mutex_);
-    std::swap(blocks_[0], blocks_[1]);
-    if (blocks_[0].first) std::free(blocks_[0].first);
-    blocks_[0] = {p, bytes};
-  }
-
- private:
-  std::mutex mutex_;
-  std::array<std::pair<void*, std::size_t>, 2> blocks_{};
-};
-
-// Never destroyed: values may be freed during the program's exit, after any static's end.
-BlockCache& block_cache() {
-  static BlockCache* cache = new BlockCache;
-  return *cache;
-}
-
-std::size_t rounded(std::size_t bytes) {
-  return (bytes + huge_page - 1) / huge_page * huge_page;
-}
-
-}  // namespace
-
+// Large ravels are igds's large blocks (workspace/kernels/big_blocks.h): a statement repeated on
+// workspace-sized arrays (X←INTPN×2) writes into memory freed by the one before, instead of
+// waiting for the kernel to map and clear fresh pages each time. Under a sanitizer, which
+// watches every block, they are the heap's.
 void* allocate_ravel(std::size_t bytes) {
-  if (bytes < 2 * huge_page) return ::operator new(bytes);
-  const std::size_t size = rounded(bytes);
-  if (void* p = block_cache().take(size)) return p;
-  void* p = std::aligned_alloc(huge_page, size);
-  if (!p) throw std::bad_alloc();
-#ifdef MADV_HUGEPAGE
-  madvise(p, size, MADV_HUGEPAGE);  // advice only: without huge pages it works the same
+#ifndef IGDS_SANITIZED
+  if (bytes >= big_blocks::smallest)
+    if (void* p = big_blocks::allocate(bytes)) return p;
 #endif
-  return p;
+  return ::operator new(bytes);
 }
 
-void deallocate_ravel(void* p, std::size_t bytes) {
-  if (bytes < 2 * huge_page) {
+void deallocate_ravel(void* p, std::size_t) {
+  if (big_blocks::owns(p))
+    big_blocks::release(p);
+  else
     ::operator delete(p);
-  } else {
-    block_cache().give(p, rounded(bytes));
-  }
 }
 
 std::size_t element_count(const Shape& shape) {

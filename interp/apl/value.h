@@ -21,8 +21,8 @@ using Shape = std::vector<std::size_t>;
 // Elements of a shape multiplied (1 for a scalar).
 std::size_t element_count(const Shape& shape);
 
-// Memory for ravels: large blocks aligned on 2 MiB and offered to the kernel for huge pages, so
-// that filling a new workspace-sized result does not spend its time in page faults.
+// Memory for ravels: large ones are igds's large blocks (2 MiB-aligned huge pages, kept when
+// freed), so that filling a new workspace-sized result does not spend its time in page faults.
 void* allocate_ravel(std::size_t bytes);
 void deallocate_ravel(void* p, std::size_t bytes);
 

@@ -379,37 +379,4 @@ TEST_CASE("place: a large drawing placed in two parts at once is the drawing pla
   REQUIRE(r.texts.size() == 1);
   CHECK(placed.texts[0].at == r.texts[0].first);
 }
-
-TEST_CASE("place: the points' buffers of a large placement are kept for the next one") {
-  // A grid of 1000 x 800 points, curves and stringers: each part's points take more than 4 MB.
-  const std::size_t planes = 1000, rows = 800;
-  auto grid = grid_points(planes, rows, [](double c, double r) {
-    return Point2{0.3 * r + 0.01 * c, 0.25 * c + 0.02 * r};
-  });
-  const Drawing2 d = shared_grid(grid, planes, rows);
-  const Box clip{0, 0, 400, 300};
-  const Placement at{1, 2, 3};
-  const std::vector<DevicePath> expected = paths(place(d, at, clip, {}));
-  const DevicePoint* buffers[2];
-  std::size_t sizes[2];
-  {
-    const Placed first = place(d, at, clip, {});
-    for (int k = 0; k < 2; ++k) {
-      buffers[k] = first.paths.parts[k].points.data();
-      sizes[k] = first.paths.parts[k].points.capacity() * sizeof(DevicePoint);
-    }
-  }
-  // Memory taken meanwhile, as much as the two buffers (on the heap it would be theirs), and a
-  // small drawing placed: neither takes them.
-  const std::vector<char> other[] = {std::vector<char>(sizes[0], 1),
-                                     std::vector<char>(sizes[1], 2)};
-  const Placed small = place(drawing({{{1, 1}, {2, 2}}}), at, clip, {});
-  CHECK(paths(small) == std::vector<DevicePath>{{{3, 4}, {4, 5}}});
-  const Placed next = place(d, at, clip, {});
-  for (const PathList& part : next.paths.parts)
-    CHECK((part.points.data() == buffers[0] || part.points.data() == buffers[1]));
-  CHECK(next.paths.parts[0].points.data() != next.paths.parts[1].points.data());
-  CHECK(paths(next) == expected);
-}
-
 }  // namespace igds::test::devices

@@ -1,0 +1,205 @@
+// The memory of large blocks, kept and given again (big_blocks.h).
+#include "workspace/kernels/big_blocks.h"
+
+#include <doctest/doctest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <thread>
+#include <vector>
+
+#ifdef __linux__
+#include <malloc.h>
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
+
+using namespace igds;
+
+namespace {
+
+constexpr std::size_t MB = std::size_t(1) << 20;
+
+// Whether every page of [p, p + bytes) is present in memory.
+bool present([[maybe_unused]] const void* p, [[maybe_unused]] std::size_t bytes) {
+#ifdef __linux__
+  const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+  const auto at = reinterpret_cast<std::uintptr_t>(p);
+  const std::uintptr_t from = at & ~(page - 1), to = (at + bytes + page - 1) & ~(page - 1);
+  std::vector<unsigned char> in((to - from) / page);
+  if (mincore(reinterpret_cast<void*>(from), to - from, in.data()) != 0) return false;
+  for (unsigned char c : in)
+    if (!(c & 1)) return false;
+  return true;
+#else
+  return false;
+#endif
+}
+
+bool all(const void* p, std::size_t bytes, unsigned char value) {
+  const auto* c = static_cast<const unsigned char*>(p);
+  for (std::size_t k = 0; k < bytes; ++k)
+    if (c[k] != value) return false;
+  return true;
+}
+
+}  // namespace
+
+#ifdef __linux__
+
+TEST_CASE("a large block freed is given again, where it is, to the next block it holds") {
+  void* a = big_blocks::allocate(8 * MB);
+  REQUIRE(a != nullptr);
+  CHECK(reinterpret_cast<std::uintptr_t>(a) % (2 * MB) == 0);
+  CHECK(big_blocks::owns(a));
+  std::memset(a, 7, 8 * MB);
+  const auto before = big_blocks::figures();
+  big_blocks::release(a);
+  CHECK(big_blocks::figures().kept == before.kept + 8 * MB);
+  void* b = big_blocks::allocate(6 * MB + 1);  // 8 MB in whole huge pages
+  CHECK(b == a);
+  const auto after = big_blocks::figures();
+  CHECK(after.fresh == before.fresh);
+  CHECK(after.used == before.used);
+  CHECK(all(b, 6 * MB, 7));  // the same pages: not cleared
+  big_blocks::release(b);
+}
+
+TEST_CASE("blocks freed side by side make a larger block where they are") {
+  std::vector<void*> others;
+  if (const std::size_t left = big_blocks::figures().kept; left > 0)
+    others.push_back(big_blocks::allocate(left));
+  auto* a = static_cast<char*>(big_blocks::allocate(8 * MB));
+  auto* b = static_cast<char*>(big_blocks::allocate(8 * MB));
+  REQUIRE((a && b));
+  REQUIRE(b == a + 8 * MB);  // fresh addresses, one after the other
+  std::memset(a, 1, 8 * MB);
+  std::memset(b, 2, 8 * MB);
+  big_blocks::release(a);
+  big_blocks::release(b);
+  const auto before = big_blocks::figures();
+  auto* c = static_cast<char*>(big_blocks::allocate(16 * MB));
+  CHECK(c == a);
+  const auto after = big_blocks::figures();
+  CHECK(after.moved == before.moved);
+  CHECK(after.fresh == before.fresh);
+  CHECK((all(c, 8 * MB, 1) && all(c + 8 * MB, 8 * MB, 2)));
+  // Freed again, it is one run of kept memory however it was made.
+  big_blocks::release(c);
+  CHECK(big_blocks::allocate(16 * MB) == c);
+  big_blocks::release(c);
+  for (void* p : others) big_blocks::release(p);
+}
+
+TEST_CASE("blocks freed apart make a larger block: their pages are moved, not asked for again") {
+  // What earlier tests left kept is taken first, so that only the two blocks below are kept.
+  std::vector<void*> others;
+  if (const std::size_t left = big_blocks::figures().kept; left > 0)
+    others.push_back(big_blocks::allocate(left));
+  void* a = big_blocks::allocate(8 * MB);
+  void* between = big_blocks::allocate(8 * MB);
+  void* b = big_blocks::allocate(8 * MB);
+  REQUIRE((a && between && b));
+  std::memset(a, 1, 8 * MB);
+  std::memset(b, 2, 8 * MB);
+  big_blocks::release(a);
+  big_blocks::release(b);
+  const auto kept = big_blocks::figures();
+  REQUIRE(kept.kept == 16 * MB);
+
+  auto* c = static_cast<unsigned char*>(big_blocks::allocate(16 * MB));
+  REQUIRE(c != nullptr);
+  const auto after = big_blocks::figures();
+  CHECK(after.fresh == kept.fresh);
+  CHECK(after.moved == kept.moved + 16 * MB);
+  CHECK(after.kept == 0);
+  CHECK(present(c, 16 * MB));
+  // Each half is one of the blocks freed, its bytes as they were.
+  CHECK(((all(c, 8 * MB, 1) && all(c + 8 * MB, 8 * MB, 2)) ||
+         (all(c, 8 * MB, 2) && all(c + 8 * MB, 8 * MB, 1))));
+  std::memset(c, 3, 16 * MB);  // and writable
+
+  // A block larger than what is kept: the kept memory first, fresh memory after it.
+  big_blocks::release(c);
+  void* d = big_blocks::allocate(24 * MB);
+  REQUIRE(d != nullptr);
+  const auto last = big_blocks::figures();
+  CHECK(last.moved == after.moved + 16 * MB);
+  CHECK(last.fresh == after.fresh + 8 * MB);
+  CHECK(all(d, 16 * MB, 3));
+  CHECK(all(static_cast<unsigned char*>(d) + 16 * MB, 8 * MB, 0));
+  big_blocks::release(d);
+  big_blocks::release(between);
+  for (void* p : others) big_blocks::release(p);
+}
+
+TEST_CASE("kept memory beyond the limit goes back to the system") {
+  big_blocks::set_keep_limit(8 * MB);
+  CHECK(big_blocks::figures().kept <= 8 * MB);
+  void* a = big_blocks::allocate(8 * MB);
+  void* b = big_blocks::allocate(8 * MB);
+  REQUIRE((a && b));
+  std::memset(a, 1, 8 * MB);
+  std::memset(b, 1, 8 * MB);
+  big_blocks::release(a);
+  big_blocks::release(b);
+  CHECK(big_blocks::figures().kept == 8 * MB);
+  // The memory given back is gone from the process; its addresses serve again.
+  CHECK((!present(a, 8 * MB) || !present(b, 8 * MB)));
+  big_blocks::set_keep_limit(big_blocks::keep_limit);
+  void* c = big_blocks::allocate(16 * MB);
+  REQUIRE(c != nullptr);
+  std::memset(c, 2, 16 * MB);
+  big_blocks::release(c);
+}
+
+TEST_CASE("only the blocks' own addresses are theirs; nothing is given for nothing") {
+  CHECK(big_blocks::allocate(0) == nullptr);
+  void* heap = std::malloc(16);
+  CHECK_FALSE(big_blocks::owns(heap));
+  CHECK_FALSE(big_blocks::owns(nullptr));
+  big_blocks::release(heap);  // not a block: nothing happens
+  std::free(heap);
+  std::vector<char> local(8 * MB);
+  CHECK_FALSE(big_blocks::owns(local.data()));
+}
+
+TEST_CASE("the heap warmed ahead gives present memory to the next smaller blocks") {
+  // The heap as igds sets it (interp/main.cpp): every block from it, nothing given back.
+  mallopt(M_MMAP_MAX, 0);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  big_blocks::warm_heap(8 * MB);
+  void* p = std::malloc(6 * MB);
+  REQUIRE(p != nullptr);
+  CHECK(present(p, 6 * MB));  // before anything is written to it
+  std::free(p);
+  mallopt(M_MMAP_MAX, 65536);  // glibc's defaults again
+  mallopt(M_TRIM_THRESHOLD, 128 * 1024);
+}
+
+TEST_CASE("threads take and free blocks at once, each block its own") {
+  const auto before = big_blocks::figures();
+  std::vector<std::thread> threads;
+  std::vector<int> wrong(4, 0);
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([t, &wrong] {
+      for (int round = 0; round < 20; ++round) {
+        const std::size_t bytes = (4 + (t + round) % 5) * MB;
+        auto* p = static_cast<unsigned char*>(big_blocks::allocate(bytes));
+        if (!p) {
+          ++wrong[t];
+          continue;
+        }
+        std::memset(p, t + 1, bytes);
+        std::this_thread::yield();
+        if (!all(p, bytes, static_cast<unsigned char>(t + 1))) ++wrong[t];
+        big_blocks::release(p);
+      }
+    });
+  for (auto& th : threads) th.join();
+  CHECK(wrong == std::vector<int>(4, 0));
+  CHECK(big_blocks::figures().used == before.used);
+}
+
+#endif

@@ -1,0 +1,276 @@
+#include "workspace/kernels/big_blocks.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <vector>
+
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
+namespace igds::big_blocks {
+
+#ifdef __linux__
+
+namespace {
+
+constexpr std::size_t huge_page = std::size_t(2) << 20;
+// Addresses only (nothing is made present): far more than a session at the limit holds.
+constexpr std::size_t reserved = std::size_t(64) << 30;
+
+// Part of one mapping (mremap moves only within one).
+struct Piece {
+  char* at;
+  std::size_t bytes;
+};
+
+// The blocks' addresses are reserved once, as one range no page of which is present; a block is
+// mapped inside it, made of pieces of kept memory moved there and fresh memory after them.
+struct Pool {
+  std::mutex mutex;
+  bool tried = false;
+  std::atomic<char*> base{nullptr};
+  std::map<char*, std::size_t> unused;  // reserved addresses not mapped, runs merged
+  std::vector<Piece> kept;
+  std::map<char*, std::vector<Piece>> blocks;  // given, by address: their pieces
+  std::size_t keep_limit = big_blocks::keep_limit;
+  Figures figures;
+
+  bool reserve() {
+    if (tried) return base.load() != nullptr;
+    tried = true;
+    void* p = mmap(nullptr, reserved + huge_page, PROT_NONE,
+                   MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+    if (p == MAP_FAILED) return false;
+    auto* at = reinterpret_cast<char*>((reinterpret_cast<std::uintptr_t>(p) + huge_page - 1) &
+                                       ~std::uintptr_t(huge_page - 1));
+    unused.emplace(at, reserved);
+    base.store(at);
+    return true;
+  }
+
+  // Addresses for `bytes` (a multiple of huge_page), the first run long enough; nullptr if none.
+  char* take_addresses(std::size_t bytes) {
+    for (auto it = unused.begin(); it != unused.end(); ++it) {
+      if (it->second < bytes) continue;
+      char* at = it->first;
+      const std::size_t rest = it->second - bytes;
+      unused.erase(it);
+      if (rest > 0) unused.emplace(at + bytes, rest);
+      return at;
+    }
+    return nullptr;
+  }
+
+  void give_addresses(char* at, std::size_t bytes) {
+    auto next = unused.lower_bound(at);
+    if (next != unused.end() && at + bytes == next->first) {
+      bytes += next->second;
+      next = unused.erase(next);
+    }
+    if (next != unused.begin()) {
+      auto before = std::prev(next);
+      if (before->first + before->second == at) {
+        before->second += bytes;
+        return;
+      }
+    }
+    unused.emplace(at, bytes);
+  }
+
+  // The memory of `piece` back to the system, its addresses reserved again.
+  void unmap(Piece piece) {
+    if (mmap(piece.at, piece.bytes, PROT_NONE,
+             MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED, -1, 0) == piece.at)
+      give_addresses(piece.at, piece.bytes);
+  }
+
+  // After a piece's pages were moved away its addresses are free to anyone: reserved again
+  // unless another mapping took them meanwhile (then they are no longer the blocks').
+  void reserve_again(char* at, std::size_t bytes) {
+    void* p = mmap(at, bytes, PROT_NONE,
+                   MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED_NOREPLACE, -1, 0);
+    if (p == at) {
+      give_addresses(at, bytes);
+    } else if (p != MAP_FAILED) {
+      munmap(p, bytes);  // a kernel that took the flag for a hint
+    }
+  }
+
+  void* allocate(std::size_t bytes) {
+    const std::size_t size = (bytes + huge_page - 1) & ~(huge_page - 1);
+    const std::lock_guard lock(mutex);
+    if (!reserve()) return nullptr;
+    // The smallest run of kept pieces side by side that holds the block, used where it is (a
+    // block may span mappings; only a move must stay within one).
+    std::sort(kept.begin(), kept.end(), [](const Piece& a, const Piece& b) { return a.at < b.at; });
+    std::size_t best = kept.size(), best_bytes = 0;
+    for (std::size_t first = 0, last = 0; first < kept.size(); first = last) {
+      std::size_t run = kept[first].bytes;
+      for (last = first + 1;
+           last < kept.size() && kept[last - 1].at + kept[last - 1].bytes == kept[last].at; ++last)
+        run += kept[last].bytes;
+      if (run >= size && (best == kept.size() || run < best_bytes)) {
+        best = first;
+        best_bytes = run;
+      }
+    }
+    if (best < kept.size()) {
+      char* at = kept[best].at;
+      std::vector<Piece> pieces;
+      std::size_t filled = 0, k = best;
+      while (filled < size) {
+        Piece& from = kept[k];
+        const std::size_t n = std::min(from.bytes, size - filled);
+        pieces.push_back({from.at, n});
+        from.at += n;
+        from.bytes -= n;
+        filled += n;
+        ++k;
+      }
+      std::erase_if(kept, [](const Piece& piece) { return piece.bytes == 0; });
+      figures.kept -= size;
+      figures.used += size;
+      blocks.emplace(at, std::move(pieces));
+      return at;
+    }
+    char* at = take_addresses(size);
+    if (!at) return nullptr;
+    std::vector<Piece> pieces;
+    std::size_t filled = 0;
+    // The largest kept pieces first: fewer moves, fewer mappings.
+    std::sort(kept.begin(), kept.end(),
+              [](const Piece& a, const Piece& b) { return a.bytes < b.bytes; });
+    while (filled < size && !kept.empty()) {
+      Piece& from = kept.back();
+      const std::size_t n = std::min(from.bytes, size - filled);
+      if (mremap(from.at, n, n, MREMAP_MAYMOVE | MREMAP_FIXED, at + filled) == MAP_FAILED) break;
+      reserve_again(from.at, n);
+      from.at += n;
+      from.bytes -= n;
+      if (from.bytes == 0) kept.pop_back();
+      pieces.push_back({at + filled, n});
+      filled += n;
+      figures.kept -= n;
+      figures.moved += n;
+    }
+    if (filled < size) {
+      char* rest = at + filled;
+      const std::size_t n = size - filled;
+      if (mmap(rest, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
+          rest) {
+        // No memory: what was moved stays kept, where it now is.
+        for (const Piece& piece : pieces) kept.push_back(piece);
+        figures.kept += filled;
+        give_addresses(rest, n);
+        return nullptr;
+      }
+      madvise(rest, n, MADV_HUGEPAGE);  // advice: refused, the pages are small
+      pieces.push_back({rest, n});
+      figures.fresh += n;
+    }
+    figures.used += size;
+    blocks.emplace(at, std::move(pieces));
+    return at;
+  }
+
+  void release(void* p) {
+    const std::lock_guard lock(mutex);
+    auto it = blocks.find(static_cast<char*>(p));
+    if (it == blocks.end()) return;
+    for (const Piece& piece : it->second) {
+      kept.push_back(piece);
+      figures.kept += piece.bytes;
+      figures.used -= piece.bytes;
+    }
+    blocks.erase(it);
+    trim();
+  }
+
+  // Kept memory beyond the limit back to the system, the smallest pieces first.
+  void trim() {
+    if (figures.kept <= keep_limit) return;
+    std::sort(kept.begin(), kept.end(),
+              [](const Piece& a, const Piece& b) { return a.bytes > b.bytes; });
+    while (figures.kept > keep_limit && !kept.empty()) {
+      figures.kept -= kept.back().bytes;
+      unmap(kept.back());
+      kept.pop_back();
+    }
+  }
+};
+
+// Never destroyed: blocks may be released by the destructors of other static objects.
+Pool& pool() {
+  static Pool* const p = new Pool;
+  return *p;
+}
+
+}  // namespace
+
+void* allocate(std::size_t bytes) {
+  if (bytes == 0 || bytes > reserved) return nullptr;
+  return pool().allocate(bytes);
+}
+
+bool owns(const void* p) {
+  const char* base = pool().base.load(std::memory_order_relaxed);
+  const auto* c = static_cast<const char*>(p);
+  return base && c >= base && c < base + reserved;
+}
+
+void release(void* p) {
+  pool().release(p);
+}
+
+void warm_heap(std::size_t bytes) {
+  void* p = std::malloc(bytes);
+  if (!p) return;
+  const std::uintptr_t page = 4096;
+  const auto from = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
+  const auto to = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23  // Linux 5.14
+#endif
+  // Older kernels refuse the advice: the pages are then written.
+  if (to > from && madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE) != 0)
+    std::memset(p, 0, bytes);
+  std::free(p);
+}
+
+void set_keep_limit(std::size_t bytes) {
+  Pool& p = pool();
+  const std::lock_guard lock(p.mutex);
+  p.keep_limit = bytes;
+  p.trim();
+}
+
+Figures figures() {
+  Pool& p = pool();
+  const std::lock_guard lock(p.mutex);
+  return p.figures;
+}
+
+#else
+
+void* allocate(std::size_t) {
+  return nullptr;
+}
+void warm_heap(std::size_t) {}
+bool owns(const void*) {
+  return false;
+}
+void release(void*) {}
+void set_keep_limit(std::size_t) {}
+Figures figures() {
+  return {};
+}
+
+#endif
+
+}  // namespace igds::big_blocks
