@@ -2,6 +2,7 @@
 #include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <new>
 #include <string>
@@ -58,6 +59,28 @@ void operator delete(void* p) noexcept {
 }
 
 void operator delete(void* p, std::size_t) noexcept {
+  operator delete(p);
+}
+
+// The same for blocks that must begin on a boundary (a file's buffers, for writes straight to the
+// disk): the large blocks begin on 2 MB.
+void* operator new(std::size_t bytes, std::align_val_t align) {
+  const auto boundary = std::max(static_cast<std::size_t>(align), sizeof(void*));
+  if (bytes >= igds::big_blocks::smallest && boundary <= igds::big_blocks::boundary)
+    if (void* p = igds::big_blocks::allocate(bytes)) return p;
+  const std::size_t rounded = (std::max<std::size_t>(bytes, 1) + boundary - 1) & ~(boundary - 1);
+  for (;;) {
+    if (void* p = std::aligned_alloc(boundary, rounded)) return p;
+    const std::new_handler handler = std::get_new_handler();
+    if (!handler) throw std::bad_alloc();
+    handler();
+  }
+}
+
+void operator delete(void* p, std::align_val_t) noexcept {
+  operator delete(p);
+}
+void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
   operator delete(p);
 }
 #endif

@@ -64,9 +64,8 @@ std::string StringOut::take_text() {
 }
 
 namespace {
-// Large blocks, whose memory is what blocks freed before kept (workspace/kernels/big_blocks.h).
-constexpr std::size_t piece = std::size_t{2} << 20;
-}  // namespace
+constexpr std::size_t piece = std::size_t{1} << 20;
+}
 
 PiecesOut::PiecesOut() {
   take(0);

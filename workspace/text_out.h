@@ -82,7 +82,7 @@ class StringOut final : public TextOut {
   std::vector<char> buffer_;
 };
 
-// A text made aside in pieces of two megabytes, then put into another TextOut: the later half of a
+// A text made aside in pieces of a megabyte, then put into another TextOut: the later half of a
 // large plot or document, made on a second thread while the first half goes into the file (a
 // string would be copied each time it grew). Written in order only (no seek).
 class PiecesOut final : public TextOut {

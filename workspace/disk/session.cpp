@@ -477,8 +477,8 @@ Workspace Session::State::read_session() {
   // wait for an image nobody looks at. A make that fails leaves its error in the future, never
   // looked at: the image is made again when looked at, which reports it. Given up when a
   // command replaces the image first (see save). Then the heap's room for the first command's
-  // smaller blocks is made present (heap_ahead: what a PLOT of 4 M points grows it by, 12 MB,
-  // with room to spare; docs/decisions.md, "Memory kept").
+  // smaller blocks is made present (heap_ahead: about half of what the first PLOT of 4 M points
+  // grows it by; docs/decisions.md, "Memory kept").
   if (in_background && ws.image && !ws.image.made()) {
     ahead = ws.image;
     leaving = std::promise<void>();

@@ -10,6 +10,8 @@ namespace igds::big_blocks {
 
 // Blocks of this many bytes or more are worth it (interp/main.cpp sends them here).
 inline constexpr std::size_t smallest = std::size_t(2) << 20;
+// Every block begins on a multiple of this.
+inline constexpr std::size_t boundary = std::size_t(2) << 20;
 
 // Memory for `bytes` bytes, aligned to 2 MB, its pages present where kept memory was moved in;
 // nullptr when the system gives no room (the caller falls back to the heap). Thread-safe.
