@@ -44,11 +44,28 @@ bool all(const void* p, std::size_t bytes, unsigned char value) {
   return true;
 }
 
+// The memory earlier tests left kept, held until the end of a test (so that a test's blocks
+// are the only ones kept).
+struct Held {
+  void* block = nullptr;
+  explicit Held(void* p) : block(p) {}
+  Held(const Held&) = delete;
+  ~Held() {
+    if (block) big_blocks::release(block);
+  }
+};
+
+Held hold_kept() {
+  const std::size_t left = big_blocks::figures().kept;
+  return Held(left > 0 ? big_blocks::allocate(left) : nullptr);
+}
+
 }  // namespace
 
 #ifdef __linux__
 
 TEST_CASE("a large block freed is given again, where it is, to the next block it holds") {
+  const Held others = hold_kept();
   void* a = big_blocks::allocate(8 * MB);
   REQUIRE(a != nullptr);
   CHECK(reinterpret_cast<std::uintptr_t>(a) % (2 * MB) == 0);
@@ -67,9 +84,7 @@ TEST_CASE("a large block freed is given again, where it is, to the next block it
 }
 
 TEST_CASE("blocks freed side by side make a larger block where they are") {
-  std::vector<void*> others;
-  if (const std::size_t left = big_blocks::figures().kept; left > 0)
-    others.push_back(big_blocks::allocate(left));
+  const Held others = hold_kept();
   auto* a = static_cast<char*>(big_blocks::allocate(8 * MB));
   auto* b = static_cast<char*>(big_blocks::allocate(8 * MB));
   REQUIRE((a && b));
@@ -89,14 +104,11 @@ TEST_CASE("blocks freed side by side make a larger block where they are") {
   big_blocks::release(c);
   CHECK(big_blocks::allocate(16 * MB) == c);
   big_blocks::release(c);
-  for (void* p : others) big_blocks::release(p);
 }
 
 TEST_CASE("blocks freed apart make a larger block: their pages are moved, not asked for again") {
-  // What earlier tests left kept is taken first, so that only the two blocks below are kept.
-  std::vector<void*> others;
-  if (const std::size_t left = big_blocks::figures().kept; left > 0)
-    others.push_back(big_blocks::allocate(left));
+  // Only the two blocks below are kept.
+  const Held others = hold_kept();
   void* a = big_blocks::allocate(8 * MB);
   void* between = big_blocks::allocate(8 * MB);
   void* b = big_blocks::allocate(8 * MB);
@@ -131,7 +143,6 @@ TEST_CASE("blocks freed apart make a larger block: their pages are moved, not as
   CHECK(all(static_cast<unsigned char*>(d) + 16 * MB, 8 * MB, 0));
   big_blocks::release(d);
   big_blocks::release(between);
-  for (void* p : others) big_blocks::release(p);
 }
 
 TEST_CASE("kept memory beyond the limit goes back to the system") {

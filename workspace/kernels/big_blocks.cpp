@@ -11,6 +11,9 @@
 
 #ifdef __linux__
 #include <sys/mman.h>
+#ifndef MADV_POPULATE_WRITE
+#define MADV_POPULATE_WRITE 23  // Linux 5.14
+#endif
 #endif
 
 namespace igds::big_blocks {
@@ -91,7 +94,8 @@ struct Pool {
   }
 
   // After a piece's pages were moved away its addresses are free to anyone: reserved again
-  // unless another mapping took them meanwhile (then they are no longer the blocks').
+  // unless another mapping took them meanwhile (then they are no longer the blocks'; nor when
+  // they are still mapped, which only a failed mapping leaves).
   void reserve_again(char* at, std::size_t bytes) {
     void* p = mmap(at, bytes, PROT_NONE,
                    MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE | MAP_FIXED_NOREPLACE, -1, 0);
@@ -164,10 +168,11 @@ struct Pool {
       const std::size_t n = size - filled;
       if (mmap(rest, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
           rest) {
-        // No memory: what was moved stays kept, where it now is.
+        // No memory: what was moved stays kept, where it now is. A failed fixed mapping may
+        // have left the rest's addresses unmapped: they are the blocks' only if reserved again.
         for (const Piece& piece : pieces) kept.push_back(piece);
         figures.kept += filled;
-        give_addresses(rest, n);
+        reserve_again(rest, n);
         return nullptr;
       }
       madvise(rest, n, MADV_HUGEPAGE);  // advice: refused, the pages are small
@@ -234,9 +239,6 @@ void warm_heap(std::size_t bytes) {
   const std::uintptr_t page = 4096;
   const auto from = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
   const auto to = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
-#ifndef MADV_POPULATE_WRITE
-#define MADV_POPULATE_WRITE 23  // Linux 5.14
-#endif
   // Older kernels refuse the advice: the pages are then written.
   if (to > from && madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE) != 0)
     std::memset(p, 0, bytes);
