@@ -176,6 +176,8 @@ TEST_CASE("only the blocks' own addresses are theirs; nothing is given for nothi
   CHECK_FALSE(big_blocks::owns(local.data()));
 }
 
+// The C library's heap (not a sanitizer's allocator, which keeps its own).
+#ifndef IGDS_SANITIZED
 TEST_CASE("the heap warmed ahead gives present memory to the next smaller blocks") {
   // The heap as igds sets it (interp/main.cpp): every block from it, nothing given back.
   mallopt(M_MMAP_MAX, 0);
@@ -188,6 +190,7 @@ TEST_CASE("the heap warmed ahead gives present memory to the next smaller blocks
   mallopt(M_MMAP_MAX, 65536);  // glibc's defaults again
   mallopt(M_TRIM_THRESHOLD, 128 * 1024);
 }
+#endif
 
 TEST_CASE("threads take and free blocks at once, each block its own") {
   const auto before = big_blocks::figures();
