@@ -167,6 +167,7 @@ TEST_CASE("kept memory beyond the limit goes back to the system") {
 
 TEST_CASE("only the blocks' own addresses are theirs; nothing is given for nothing") {
   CHECK(big_blocks::allocate(0) == nullptr);
+  CHECK(big_blocks::allocate(std::size_t(1) << 40) == nullptr);  // beyond the addresses reserved
   void* heap = std::malloc(16);
   CHECK_FALSE(big_blocks::owns(heap));
   CHECK_FALSE(big_blocks::owns(nullptr));

@@ -487,7 +487,9 @@ Workspace Session::State::read_session() {
                           if (left.wait_for(delay) != std::future_status::timeout) return;
                           lowest_priority();
                           image.make_ahead();
-                          big_blocks::warm_heap(heap_ahead);
+                          // Not when the session is ending: END would wait for it.
+                          if (left.wait_for(std::chrono::seconds(0)) == std::future_status::timeout)
+                            big_blocks::warm_heap(heap_ahead);
                         });
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);

@@ -26,6 +26,10 @@ constexpr std::size_t huge_page = std::size_t(2) << 20;
 // Addresses only (nothing is made present): far more than a session at the limit holds.
 constexpr std::size_t reserved = std::size_t(64) << 30;
 
+// Where the reserved addresses begin, once reserved: read by every delete of the program
+// (owns), so a plain atomic, not a member of the pool behind its first-use guard.
+constinit std::atomic<char*> base{nullptr};
+
 // Part of one mapping (mremap moves only within one).
 struct Piece {
   char* at;
@@ -37,7 +41,6 @@ struct Piece {
 struct Pool {
   std::mutex mutex;
   bool tried = false;
-  std::atomic<char*> base{nullptr};
   std::map<char*, std::size_t> unused;  // reserved addresses not mapped, runs merged
   std::vector<Piece> kept;
   std::map<char*, std::vector<Piece>> blocks;  // given, by address: their pieces
@@ -224,9 +227,9 @@ void* allocate(std::size_t bytes) {
 }
 
 bool owns(const void* p) {
-  const char* base = pool().base.load(std::memory_order_relaxed);
+  const char* from = base.load(std::memory_order_relaxed);
   const auto* c = static_cast<const char*>(p);
-  return base && c >= base && c < base + reserved;
+  return from && c >= from && c < from + reserved;
 }
 
 void release(void* p) {
