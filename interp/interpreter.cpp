@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <new>
 #include <utility>
@@ -93,6 +94,7 @@ std::optional<Interpreter::Outcome> Interpreter::after_command(int errors_before
     return options_.strict && terminal_.command_file() && errors_ > errors_before;
   };
   save();
+  prepare_memory();
   ready_due_ = true;
   if (terminal_.output_failed()) return Outcome::ended;
   if (strict_stop()) return Outcome::strict_stop;
@@ -272,6 +274,18 @@ void Interpreter::save() {
     if (r.what() != save_failure_) report(r.what());
     save_failure_ = r.what();
   }
+}
+
+// While igds waits for the next line, the memory the next command's largest blocks will want is
+// made ready (docs/decisions.md, "Memory made ready while igds waits for a line"): as large blocks,
+// an image of the surface or the current image, whichever is larger (16 bytes a point; the placed
+// points of a PLOT or EXPORT take as much); on the heap, 3/8 of that, the part of a plot's HP-GL
+// made aside.
+void Interpreter::prepare_memory() {
+  std::size_t image = ws_.intpn.size() / 3 * 2 * sizeof(double);
+  if (ws_.image && ws_.image.made())
+    image = std::max(image, (ws_.image->points.size() + ws_.image->arrows.size()) * sizeof(double));
+  memory_ahead_.want(image / 8 * 3, image);
 }
 
 Interpreter::Outcome Interpreter::apl_environment() {

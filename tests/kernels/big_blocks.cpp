@@ -3,6 +3,7 @@
 
 #include <doctest/doctest.h>
 
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -192,6 +193,45 @@ TEST_CASE("the heap warmed ahead gives present memory to the next smaller blocks
   mallopt(M_TRIM_THRESHOLD, 128 * 1024);
 }
 #endif
+
+TEST_CASE("memory kept ahead is present, and the next block takes it instead of fresh memory") {
+  const Held others = hold_kept();
+  const std::atomic<bool> go{false}, stop{true};
+  CHECK(big_blocks::keep_ahead(8 * MB, stop) == 0);  // stopped before the first step
+  CHECK(big_blocks::figures().kept == 0);
+  CHECK(big_blocks::keep_ahead(7 * MB, go) == 8 * MB);  // in whole huge pages
+  const auto before = big_blocks::figures();
+  CHECK(before.kept == 8 * MB);
+  CHECK(big_blocks::keep_ahead(8 * MB, go) == 0);  // kept already
+  void* p = big_blocks::allocate(8 * MB);
+  REQUIRE(p != nullptr);
+  CHECK(present(p, 8 * MB));  // before anything is written to it
+  const auto after = big_blocks::figures();
+  CHECK(after.fresh == before.fresh);
+  CHECK(after.kept == 0);
+  big_blocks::release(p);
+}
+
+TEST_CASE("memory is made ready on a thread of its own, to the last wish") {
+  const Held others = hold_kept();
+  {
+    big_blocks::Ahead ahead;
+    ahead.want(0, 4 * MB);
+    ahead.want(0, 12 * MB);  // replaces the first, or follows it
+    ahead.wait_idle();
+    CHECK(big_blocks::figures().kept == 12 * MB);
+    ahead.want(0, 6 * MB);  // kept already: nothing more
+    ahead.wait_idle();
+    CHECK(big_blocks::figures().kept == 12 * MB);
+    ahead.want(0, 256 * MB);  // the destructor stops it between two steps
+  }
+  const auto left = big_blocks::figures();
+  CHECK(left.kept >= 12 * MB);
+  CHECK(left.kept <= 256 * MB);
+  // What it made goes to the next blocks.
+  const Held made = hold_kept();
+  CHECK(big_blocks::figures().kept == 0);
+}
 
 TEST_CASE("threads take and free blocks at once, each block its own") {
   const auto before = big_blocks::figures();

@@ -1,7 +1,6 @@
 #include "workspace/disk/session.h"
 
 #include <fcntl.h>
-#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -24,6 +23,7 @@
 #include "workspace/images.h"
 #include "workspace/kernels/big_blocks.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
 
@@ -38,12 +38,6 @@ using disk::Piece;
 using disk::Record;
 using disk::SessionTable;
 using disk::StoredArray;
-
-// This thread, and the threads it starts, at the lowest priority: on Linux a thread's nice value
-// is its own, and a new thread takes its creator's. Advice: a refusal changes nothing.
-void lowest_priority() {
-  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
-}
 
 constexpr std::string_view session_name = "BINSAVE";
 constexpr std::string_view session_type = "IGDSCONT";

@@ -7,9 +7,13 @@
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <system_error>
 #include <vector>
 
+#include "workspace/kernels/parallel.h"
+
 #ifdef __linux__
+#include <malloc.h>
 #include <sys/mman.h>
 #ifndef MADV_POPULATE_WRITE
 #define MADV_POPULATE_WRITE 23  // Linux 5.14
@@ -211,6 +215,34 @@ struct Pool {
       kept.pop_back();
     }
   }
+
+  // See keep_ahead.
+  std::size_t grow_kept(std::size_t bytes, const std::atomic<bool>& stop) {
+    std::size_t added = 0;
+    while (!stop.load(std::memory_order_relaxed)) {
+      char* at;
+      {
+        const std::lock_guard lock(mutex);
+        if (figures.kept >= std::min(bytes, keep_limit) || !reserve()) break;
+        at = take_addresses(huge_page);
+        if (!at) break;
+      }
+      if (mmap(at, huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1,
+               0) != at) {
+        const std::lock_guard lock(mutex);
+        reserve_again(at, huge_page);
+        break;
+      }
+      madvise(at, huge_page, MADV_HUGEPAGE);  // advice: refused, the pages are small
+      if (madvise(at, huge_page, MADV_POPULATE_WRITE) != 0) std::memset(at, 0, huge_page);
+      const std::lock_guard lock(mutex);
+      kept.push_back({at, huge_page});
+      figures.kept += huge_page;
+      figures.fresh += huge_page;
+      added += huge_page;
+    }
+    return added;
+  }
 };
 
 // Never destroyed: blocks may be released by the destructors of other static objects.
@@ -236,16 +268,25 @@ void release(void* p) {
   pool().release(p);
 }
 
-void warm_heap(std::size_t bytes) {
+void warm_heap(std::size_t bytes, const std::atomic<bool>* stop) {
   void* p = std::malloc(bytes);
   if (!p) return;
   const std::uintptr_t page = 4096;
   const auto from = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
   const auto to = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
-  // Older kernels refuse the advice: the pages are then written.
-  if (to > from && madvise(reinterpret_cast<void*>(from), to - from, MADV_POPULATE_WRITE) != 0)
-    std::memset(p, 0, bytes);
+  // 2 MB at a time, so that a stop is not kept waiting. Older kernels refuse the advice: the
+  // pages are then written.
+  for (std::uintptr_t at = from; at < to && !(stop && stop->load(std::memory_order_relaxed));
+       at += huge_page) {
+    const std::size_t n = std::min<std::uintptr_t>(huge_page, to - at);
+    if (madvise(reinterpret_cast<void*>(at), n, MADV_POPULATE_WRITE) != 0)
+      std::memset(reinterpret_cast<void*>(at), 0, n);
+  }
   std::free(p);
+}
+
+std::size_t keep_ahead(std::size_t bytes, const std::atomic<bool>& stop) {
+  return pool().grow_kept(bytes, stop);
 }
 
 void set_keep_limit(std::size_t bytes) {
@@ -266,7 +307,10 @@ Figures figures() {
 void* allocate(std::size_t) {
   return nullptr;
 }
-void warm_heap(std::size_t) {}
+void warm_heap(std::size_t, const std::atomic<bool>*) {}
+std::size_t keep_ahead(std::size_t, const std::atomic<bool>&) {
+  return 0;
+}
 bool owns(const void*) {
   return false;
 }
@@ -277,5 +321,61 @@ Figures figures() {
 }
 
 #endif
+
+Ahead::~Ahead() {
+  {
+    const std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  wake_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+void Ahead::want(std::size_t heap, std::size_t blocks) {
+  {
+    const std::lock_guard lock(mutex_);
+    if (heap == 0 && blocks == 0 && !thread_.joinable()) return;  // nothing yet, no thread
+    heap_ = heap;
+    blocks_ = blocks;
+    wished_ = true;
+    if (!thread_.joinable()) {
+      try {
+        thread_ = std::thread([this] { work(); });
+      } catch (const std::system_error&) {
+        wished_ = false;  // no thread: the memory comes when a command asks for it
+        return;
+      }
+    }
+  }
+  wake_.notify_all();
+}
+
+void Ahead::wait_idle() {
+  std::unique_lock lock(mutex_);
+  idle_.wait(lock, [&] { return !wished_ && !busy_; });
+}
+
+void Ahead::work() {
+  lowest_priority();
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [&] { return wished_ || stop_; });
+    if (stop_) break;
+    const std::size_t heap = heap_, blocks = blocks_;
+    wished_ = false;
+    busy_ = true;
+    lock.unlock();
+#ifdef __GLIBC__
+    if (mallinfo2().fordblks < heap) warm_heap(heap, &stop_);
+#endif
+    keep_ahead(blocks, stop_);
+    lock.lock();
+    busy_ = false;
+    idle_.notify_all();
+  }
+  busy_ = false;
+  wished_ = false;
+  idle_.notify_all();
+}
 
 }  // namespace igds::big_blocks

@@ -8,7 +8,21 @@
 #include <thread>
 #include <vector>
 
+#ifdef __linux__
+#include <sys/resource.h>
+#include <unistd.h>
+#endif
+
 namespace igds {
+
+// This thread, and the threads it starts, at the lowest priority, for work done while igds
+// waits: on Linux a thread's nice value is its own, and a new thread takes its creator's.
+// Advice: a refusal changes nothing.
+inline void lowest_priority() {
+#ifdef __linux__
+  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
+#endif
+}
 
 // Calls f(first, last) on `threads` contiguous slices of [0, count), one per thread, the first
 // slice on the calling thread. If a thread cannot be started its slice runs here; an exception
