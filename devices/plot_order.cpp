@@ -210,11 +210,18 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
       for (const auto& list : runs)
         for (const Run& r : list) by_tile[at[r.tile]++] = &r;
     }
-    // Each tile alone, its segments in drawing order. Their keys' hashes go through a bitset
-    // (in the cache): a hash met before marks a possible repeat, and most tiles have a few. Only
-    // the segments whose hash was met more than once then go, in drawing order, through a table
-    // of the keys seen (open addressing; 0 is an empty slot, and no segment's key is 0 since its
-    // ends differ): a key already there is a repeat.
+    // Each tile alone, its segments in drawing order. Their hashes go through a bitset (in the
+    // cache): a hash met before marks a possible repeat, and most tiles have a few. A segment's
+    // hash is of the sum of its ends' coordinates (each point as one number, bits_of): the same
+    // whichever way it is drawn, without ordering its ends. Only the segments whose hash was met
+    // more than once then go, in drawing order, through a table of their keys (open addressing;
+    // 0 is an empty slot, and no segment's key is 0 since its ends differ): a key already there
+    // is a repeat. Segments that only share a midpoint share a hash, and the table tells them
+    // apart.
+    auto bits_of = [](DevicePoint q) {
+      return static_cast<u64>(static_cast<std::uint32_t>(q.x)) << 32 |
+             static_cast<std::uint32_t>(q.y);
+    };
     auto find_repeats = [&](std::size_t from, std::size_t to) {
       std::vector<u64> seen, twice, table;
       std::vector<std::uint32_t> hashes, met, candidates;
@@ -244,11 +251,12 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
           }
           const Run& r = *by_tile[w];
           const DevicePoint* p = paths[r.path].data();
-          u64 a = ids(p[r.first]);
+          u64 a = bits_of(p[r.first]);
           for (std::uint32_t i = r.first; i < r.last; ++i, ++at) {
-            const u64 b = ids(p[i + 1]), key = a < b ? a << 32 | b : b << 32 | a;
+            const u64 b = bits_of(p[i + 1]);
+            const auto h =
+                static_cast<std::uint32_t>(((a + b) * 0x9E3779B97F4A7C15u) >> (64 - bits));
             a = b;
-            const auto h = static_cast<std::uint32_t>((key * 0x9E3779B97F4A7C15u) >> (64 - bits));
             const u64 bit = u64{1} << (h & 63), word = seen[h >> 6];
             seen[h >> 6] = word | bit;
             hash[at] = h;

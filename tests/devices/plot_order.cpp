@@ -158,6 +158,12 @@ TEST_CASE("plot_order: the same paths as the reference at the edges") {
              {10, 0});
   check_same({{{0, 0}, {5, 5}}, {{10, 0}, {5, 5}}, {{5, 5}, {5, 10}}, {{0, 10}, {5, 5}}}, {5, 5});
   check_same({{{-1, 0}, {-2, 0}}, {{1, 0}, {2, 0}}, {{0, 1}, {0, 2}}, {{0, -1}, {0, -2}}}, {0, 0});
+  // Segments that share only their midpoint (their hashes are the same) are all drawn; a repeat
+  // among them is not.
+  const Paths midpoints{{{0, 0}, {4, 4}},  {{0, 4}, {4, 0}}, {{1, 2}, {3, 2}},
+                        {{-2, 2}, {6, 2}}, {{4, 0}, {0, 4}}, {{2, -1}, {2, 5}}};
+  check_same(midpoints, {0, 0});
+  CHECK(plot_order(midpoints, {0, 0}).size() == 5);
   // Forty segments at one point, each drawn twice, the second time the other way round.
   Paths star;
   for (int k = 0; k < 40; ++k) star.push_back({{0, 0}, {k % 7 + 1, k / 7 - 3}});
