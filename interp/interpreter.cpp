@@ -16,6 +16,7 @@
 #include "workspace/apl.h"
 #include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/limits.h"
 
 namespace igds {
 
@@ -56,7 +57,11 @@ Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace
       session_(session),
       ws_(std::move(ws)),
       terminal_(terminal),
-      journal_(session.take_journal(ws_)) {}
+      journal_(session.take_journal(ws_)) {
+  // At start, once the start's own work has begun (the session's delay before it makes the
+  // image ahead): a command typed at once is not slowed.
+  prepare_memory(session_.make_ahead_delay());
+}
 
 Interpreter::Outcome Interpreter::converse() {
   input_ended_ = false;
@@ -281,11 +286,14 @@ void Interpreter::save() {
 // an image of the surface or the current image, whichever is larger (16 bytes a point; the placed
 // points of a PLOT or EXPORT take as much); on the heap, 3/8 of that, the part of a plot's HP-GL
 // made aside.
-void Interpreter::prepare_memory() {
-  std::size_t image = ws_.intpn.size() / 3 * 2 * sizeof(double);
+void Interpreter::prepare_memory(std::chrono::milliseconds after) {
+  std::size_t image = 0;
+  if (ws_.nocur > 0 && ws_.nostr > 0)  // INTPN's points, though made again behind READY
+    image = static_cast<std::size_t>(grid_points(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) * 2 *
+            sizeof(double);
   if (ws_.image && ws_.image.made())
     image = std::max(image, (ws_.image->points.size() + ws_.image->arrows.size()) * sizeof(double));
-  memory_ahead_.want(image / 8 * 3, image);
+  memory_ahead_.want(image / 8 * 3, image, after);
 }
 
 Interpreter::Outcome Interpreter::apl_environment() {

@@ -4,6 +4,7 @@
 // particular command: everything comes from the commands' declarations (commands/command.h).
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -86,7 +87,7 @@ class Interpreter final : public Context {
   // HELP, HELP SHORT or HELP LONG typed at a question: answered, true.
   bool answer_help(const std::vector<std::string>& words, const Prompt& prompt);
   Outcome apl_environment();
-  void prepare_memory();
+  void prepare_memory(std::chrono::milliseconds after = std::chrono::milliseconds(0));
 
   Options options_;
   Disk disk_;

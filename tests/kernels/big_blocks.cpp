@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -231,6 +232,18 @@ TEST_CASE("memory is made ready on a thread of its own, to the last wish") {
   // What it made goes to the next blocks.
   const Held made = hold_kept();
   CHECK(big_blocks::figures().kept == 0);
+  {
+    big_blocks::Ahead ahead;
+    ahead.want(0, 16 * MB, std::chrono::hours(1));
+    ahead.want(0, 6 * MB);  // comes first: the wish waiting its hour is replaced
+    ahead.wait_idle();
+    CHECK(big_blocks::figures().kept == 6 * MB);
+    ahead.want(0, 10 * MB, std::chrono::milliseconds(20));  // met once its time has come
+    ahead.wait_idle();
+    CHECK(big_blocks::figures().kept == 10 * MB);
+    ahead.want(0, 64 * MB, std::chrono::hours(1));  // the destructor does not wait for it
+  }
+  CHECK(big_blocks::figures().kept == 10 * MB);
 }
 
 TEST_CASE("threads take and free blocks at once, each block its own") {

@@ -607,6 +607,10 @@ void Session::set_make_ahead_delay_for_testing(std::chrono::milliseconds delay) 
   state_->ahead_delay = delay;
 }
 
+std::chrono::milliseconds Session::make_ahead_delay() const {
+  return state_->ahead_delay;
+}
+
 Workspace Session::load(bool in_background) {
   State& s = *state_;
   s.in_background = in_background;

@@ -51,6 +51,8 @@ class Session {
   // How long after a load in the background the current image starts being made ahead (150 ms:
   // a command typed at once, or END, meets no make under way). For tests.
   void set_make_ahead_delay_for_testing(std::chrono::milliseconds delay);
+  // How long after the load the start's work behind READY begins.
+  std::chrono::milliseconds make_ahead_delay() const;
 
  private:
   struct State;

@@ -331,12 +331,13 @@ Ahead::~Ahead() {
   if (thread_.joinable()) thread_.join();
 }
 
-void Ahead::want(std::size_t heap, std::size_t blocks) {
+void Ahead::want(std::size_t heap, std::size_t blocks, std::chrono::milliseconds after) {
   {
     const std::lock_guard lock(mutex_);
     if (heap == 0 && blocks == 0 && !thread_.joinable()) return;  // nothing yet, no thread
     heap_ = heap;
     blocks_ = blocks;
+    after_ = after;
     wished_ = true;
     if (!thread_.joinable()) {
       try {
@@ -364,6 +365,10 @@ void Ahead::work() {
     const std::size_t heap = heap_, blocks = blocks_;
     wished_ = false;
     busy_ = true;
+    if (after_.count() > 0 && wake_.wait_for(lock, after_, [&] { return wished_ || stop_; })) {
+      busy_ = false;
+      continue;  // stopped, or another wish
+    }
     lock.unlock();
 #ifdef __GLIBC__
     if (mallinfo2().fordblks < heap) warm_heap(heap, &stop_);

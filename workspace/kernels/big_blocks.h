@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <mutex>
@@ -55,7 +56,9 @@ class Ahead {
   Ahead(const Ahead&) = delete;
   Ahead& operator=(const Ahead&) = delete;
   ~Ahead();
-  void want(std::size_t heap, std::size_t blocks);
+  // `after` this long, unless another wish comes first (which replaces it).
+  void want(std::size_t heap, std::size_t blocks,
+            std::chrono::milliseconds after = std::chrono::milliseconds(0));
   // Waits until every wish made so far is met (tests).
   void wait_idle();
 
@@ -64,6 +67,7 @@ class Ahead {
   std::mutex mutex_;
   std::condition_variable wake_, idle_;
   std::size_t heap_ = 0, blocks_ = 0;
+  std::chrono::milliseconds after_{0};
   bool wished_ = false, busy_ = false;
   std::atomic<bool> stop_{false};
   std::thread thread_;
