@@ -291,8 +291,7 @@ void Interpreter::prepare_memory(std::chrono::milliseconds after) {
   if (ws_.nocur > 0 && ws_.nostr > 0)  // INTPN's points, though made again behind READY
     image = static_cast<std::size_t>(grid_points(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) * 2 *
             sizeof(double);
-  if (ws_.image && ws_.image.made())
-    image = std::max(image, (ws_.image->points.size() + ws_.image->arrows.size()) * sizeof(double));
+  if (ws_.image && ws_.image.made()) image = std::max(image, ws_.image->bytes());
   memory_ahead_.want(image / 8 * 3, image, after);
 }
 

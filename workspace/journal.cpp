@@ -211,7 +211,7 @@ std::size_t Journal::held_image_bytes() const {
       for (const ImageRef& image : *images) {
         // An image not made yet (a recipe read from the disk) holds nothing.
         if (!image || !image.made() || !seen.insert(image.watch().lock().get()).second) continue;
-        bytes += (image->points.size() + image->arrows.size()) * sizeof(double);
+        bytes += image->bytes();
       }
     }
   }

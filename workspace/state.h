@@ -66,6 +66,8 @@ struct Image {
   std::optional<std::array<double, 4>> window;
   // An input image of a surface whose border tangents were set by AUTO: its description says so.
   bool auto_tangents = false;
+  // The memory its points and arrows hold.
+  std::size_t bytes() const { return (points.size() + arrows.size()) * sizeof(double); }
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
     const bool same_picture =
