@@ -21,7 +21,6 @@
 #include "workspace/disk/session_file.h"
 #include "workspace/error.h"
 #include "workspace/images.h"
-#include "workspace/kernels/big_blocks.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/surface.h"
@@ -46,8 +45,6 @@ constexpr std::string_view variable_magic = "IGDSVARS";
 constexpr std::string_view pieces_type = "IGDSVARS";
 constexpr std::string_view linked_type = "IGDSVIMG";
 constexpr std::size_t max_session_bytes = 16u << 20;
-// The heap made present after the image made ahead (see load).
-constexpr std::size_t heap_ahead = 24u << 20;
 // A variable file is a piece of an input (2 MB) or a whole variable: never more than the largest
 // legal surface file.
 const std::size_t max_piece_file_bytes = max_surface_file_bytes();
@@ -470,9 +467,9 @@ Workspace Session::State::read_session() {
   // (ahead_delay), so that a session ended at once (END typed first, a command file) does not
   // wait for an image nobody looks at. A make that fails leaves its error in the future, never
   // looked at: the image is made again when looked at, which reports it. Given up when a
-  // command replaces the image first (see save). Then the heap's room for the first command's
-  // smaller blocks is made present (heap_ahead: about half of what the first PLOT of 4 M points
-  // grows it by; docs/decisions.md, "Memory kept").
+  // command replaces the image first (see save). The memory the first command will want is the
+  // interpreter's to make ready (docs/decisions.md, "Memory made ready while igds waits for a
+  // line").
   if (in_background && ws.image && !ws.image.made()) {
     ahead = ws.image;
     leaving = std::promise<void>();
@@ -481,9 +478,6 @@ Workspace Session::State::read_session() {
                           if (left.wait_for(delay) != std::future_status::timeout) return;
                           lowest_priority();
                           image.make_ahead();
-                          // Not when the session is ending: END would wait for it.
-                          if (left.wait_for(std::chrono::seconds(0)) == std::future_status::timeout)
-                            big_blocks::warm_heap(heap_ahead);
                         });
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);

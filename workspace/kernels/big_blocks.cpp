@@ -93,6 +93,16 @@ struct Pool {
     unused.emplace(at, bytes);
   }
 
+  // Fresh memory at reserved addresses `at`, asked for as huge pages; false when the system gives
+  // none (the addresses may then be unmapped: reserve_again).
+  static bool map_fresh(char* at, std::size_t bytes) {
+    if (mmap(at, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
+        at)
+      return false;
+    madvise(at, bytes, MADV_HUGEPAGE);  // advice: refused, the pages are small
+    return true;
+  }
+
   // The memory of `piece` back to the system, its addresses reserved again.
   void unmap(Piece piece) {
     if (mmap(piece.at, piece.bytes, PROT_NONE,
@@ -173,8 +183,7 @@ struct Pool {
     if (filled < size) {
       char* rest = at + filled;
       const std::size_t n = size - filled;
-      if (mmap(rest, n, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1, 0) !=
-          rest) {
+      if (!map_fresh(rest, n)) {
         // No memory: what was moved stays kept, where it now is. A failed fixed mapping may
         // have left the rest's addresses unmapped: they are the blocks' only if reserved again.
         for (const Piece& piece : pieces) kept.push_back(piece);
@@ -182,7 +191,6 @@ struct Pool {
         reserve_again(rest, n);
         return nullptr;
       }
-      madvise(rest, n, MADV_HUGEPAGE);  // advice: refused, the pages are small
       pieces.push_back({rest, n});
       figures.fresh += n;
     }
@@ -227,13 +235,11 @@ struct Pool {
         at = take_addresses(huge_page);
         if (!at) break;
       }
-      if (mmap(at, huge_page, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS | MAP_FIXED, -1,
-               0) != at) {
+      if (!map_fresh(at, huge_page)) {
         const std::lock_guard lock(mutex);
         reserve_again(at, huge_page);
         break;
       }
-      madvise(at, huge_page, MADV_HUGEPAGE);  // advice: refused, the pages are small
       if (madvise(at, huge_page, MADV_POPULATE_WRITE) != 0) std::memset(at, 0, huge_page);
       const std::lock_guard lock(mutex);
       kept.push_back({at, huge_page});
