@@ -34,6 +34,12 @@ constexpr std::size_t reserved = std::size_t(64) << 30;
 // (owns), so a plain atomic, not a member of the pool behind its first-use guard.
 constinit std::atomic<char*> base{nullptr};
 
+// Makes the pages of [at, at + bytes) present; older kernels refuse the advice, and the pages are
+// then written.
+void make_present(void* at, std::size_t bytes) {
+  if (madvise(at, bytes, MADV_POPULATE_WRITE) != 0) std::memset(at, 0, bytes);
+}
+
 // Part of one mapping (mremap moves only within one).
 struct Piece {
   char* at;
@@ -240,7 +246,7 @@ struct Pool {
         reserve_again(at, huge_page);
         break;
       }
-      if (madvise(at, huge_page, MADV_POPULATE_WRITE) != 0) std::memset(at, 0, huge_page);
+      make_present(at, huge_page);
       const std::lock_guard lock(mutex);
       kept.push_back({at, huge_page});
       figures.kept += huge_page;
@@ -280,14 +286,10 @@ void warm_heap(std::size_t bytes, const std::atomic<bool>* stop) {
   const std::uintptr_t page = 4096;
   const auto from = (reinterpret_cast<std::uintptr_t>(p) + page - 1) & ~(page - 1);
   const auto to = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(page - 1);
-  // 2 MB at a time, so that a stop is not kept waiting. Older kernels refuse the advice: the
-  // pages are then written.
+  // 2 MB at a time, so that a stop is not kept waiting.
   for (std::uintptr_t at = from; at < to && !(stop && stop->load(std::memory_order_relaxed));
-       at += huge_page) {
-    const std::size_t n = std::min<std::uintptr_t>(huge_page, to - at);
-    if (madvise(reinterpret_cast<void*>(at), n, MADV_POPULATE_WRITE) != 0)
-      std::memset(reinterpret_cast<void*>(at), 0, n);
-  }
+       at += huge_page)
+    make_present(reinterpret_cast<void*>(at), std::min<std::uintptr_t>(huge_page, to - at));
   std::free(p);
 }
 
