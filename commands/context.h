@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "devices/device.h"
-#include "devices/plot.h"
-#include "devices/terminal.h"
+#include "devices/hpgl_plot.h"
+#include "devices/tek_stream.h"
 #include "workspace/disk/disk.h"
 #include "workspace/journal.h"
 #include "workspace/state.h"

@@ -10,7 +10,7 @@
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/picture.h"
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "workspace/disk/files.h"
 #include "workspace/error.h"
 

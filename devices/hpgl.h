@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "devices/device.h"
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "devices/plot_order.h"
 #include "workspace/text_out.h"
 

@@ -17,7 +17,7 @@
 
 #include "devices/layout.h"
 #include "devices/tek4013.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "workspace/drawing/drawing.h"
 
 namespace igds {

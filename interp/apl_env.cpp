@@ -182,7 +182,7 @@ AplEnvironment::AplEnvironment(Workspace& ws, Hooks hooks)
   ws_.functions = session_.defined_functions();
 }
 
-apl::Session::Next AplEnvironment::execute(std::string_view line) {
+apl::AplSession::Next AplEnvironment::execute(std::string_view line) {
   const auto next = session_.execute(line);
   // Defined functions are part of the workspace: the session keeps them.
   if (!session_.defining()) {
@@ -516,7 +516,7 @@ void AplEnvironment::define_manual_functions() {
             const Choice* option = line.size() > 1 ? choose(end_command.options, line[1]) : nullptr;
             if (!option) throw apl::Error(ErrorKind::domain, reports::incorrect_choice);
             if (option != &end_command.options.front())  // END APL stays
-              session_.request(apl::Session::Next::off);
+              session_.request(apl::AplSession::Next::off);
             return std::nullopt;
           }
           // The command sees the workspace whole: what APL changed is made consistent first.

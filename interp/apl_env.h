@@ -14,7 +14,7 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 #include "workspace/kernels/array.h"
 #include "workspace/state.h"
 
@@ -46,7 +46,7 @@ class AplEnvironment final : public apl::Host {
   AplEnvironment(Workspace& ws, Hooks hooks);
 
   // One line typed at the six-blank prompt.
-  apl::Session::Next execute(std::string_view line);
+  apl::AplSession::Next execute(std::string_view line);
   std::string prompt() const { return session_.prompt(); }
   // START: the workspace made whole again after what APL assigned (PATCHES and INTPN made again
   // from changed inputs), or the reason it cannot be, in which case the environment stays.
@@ -74,7 +74,7 @@ class AplEnvironment final : public apl::Host {
 
   Workspace& ws_;
   Hooks hooks_;
-  apl::Session session_;
+  apl::AplSession session_;
   std::set<std::string> assigned_;  // the IGDS globals assigned since the last START
   // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
   // statement, not a copy of INTPN.

@@ -357,8 +357,8 @@ Interpreter::Outcome Interpreter::apl_environment() {
     const auto next = apl_->execute(e.text);
     if (options_.strict && terminal_.command_file() && errors_ > before)
       return Outcome::strict_stop;
-    if (next == apl::Session::Next::start && leave_apl()) return Outcome::input_ended;
-    if (next == apl::Session::Next::off) {
+    if (next == apl::AplSession::Next::start && leave_apl()) return Outcome::input_ended;
+    if (next == apl::AplSession::Next::off) {
       leave_apl();
       return Outcome::ended;
     }

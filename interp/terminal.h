@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "devices/tek_screen.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 
 namespace igds {
 

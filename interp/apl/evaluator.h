@@ -1,6 +1,6 @@
 // The evaluation of statements: names (the running functions' locals, the statement's pending
 // assignments, the host's names, the session's variables, in that order), function calls,
-// ⎕ and ⍞, and the primitives' dispatch. Used by Session; not part of the public interface.
+// ⎕ and ⍞, and the primitives' dispatch. Used by AplSession; not part of the public interface.
 #pragma once
 
 #include <atomic>
@@ -12,17 +12,17 @@
 #include <utility>
 #include <vector>
 
+#include "interp/apl/apl_session.h"
 #include "interp/apl/context.h"
 #include "interp/apl/function.h"
 #include "interp/apl/parser.h"
-#include "interp/apl/session.h"
 #include "interp/apl/value.h"
 
 namespace igds::apl {
 
 struct NativeEntry {
   int valence = 0;
-  Session::Native function;
+  AplSession::Native function;
   std::string help;
 };
 
@@ -54,7 +54,7 @@ class Evaluator {
   std::map<std::string, Value> globals;
   std::map<std::string, std::shared_ptr<const DefinedFunction>> functions;
   std::map<std::string, NativeEntry> natives;
-  Session::Next requested = Session::Next::stay;
+  AplSession::Next requested = AplSession::Next::stay;
   std::atomic<bool> interrupted{false};
 
  private:

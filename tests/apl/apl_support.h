@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 
 namespace igds::apl::test {
 
@@ -61,8 +61,8 @@ struct TestHost : Host {
 // A session and its host; calling it with a line returns what that line printed.
 struct Apl {
   TestHost host;
-  Session session{host};
-  Session::Next next = Session::Next::stay;
+  AplSession session{host};
+  AplSession::Next next = AplSession::Next::stay;
 
   Lines operator()(std::string_view line) {
     host.printed.clear();

@@ -1,5 +1,5 @@
 // END APL's speed on workspace-sized arrays (issue 17): INTPN of a 2000 × 2000 surface (12 M
-// doubles) held by the host, statements run through Session::execute, against NumPy doing the
+// doubles) held by the host, statements run through AplSession::execute, against NumPy doing the
 // same on this machine (ratio = NumPy's time / igds's time; 1 or more is the goal).
 #include <fmt/format.h>
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 #include "interp/apl_env.h"
 #include "tests/bench/bench.h"
 #include "tests/bench/inputs.h"
@@ -72,7 +72,7 @@ std::vector<double> numpy_times() {
 IGDS_BENCH("apl") {
   BenchHost host;
   host.intpn = grid(2000, 2000, 3);
-  apl::Session session(host);
+  apl::AplSession session(host);
   session.assign("A", grid(500, 500, 1).reshaped({500, 500}));
   apl::Value b = grid(500, 500, 1);
   for (auto& x : b.mutable_numbers()) x = std::cos(std::asin(x));

@@ -17,11 +17,11 @@
 
 #include "commands/picture.h"
 #include "devices/hpgl.h"
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "devices/plot_order.h"
 #include "devices/render.h"
 #include "devices/tek4013.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/bench/bench.h"
 #include "tests/devices/plot_order_reference.h"
 #include "tests/devices/support.h"

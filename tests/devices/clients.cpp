@@ -7,9 +7,9 @@
 
 #include "devices/hpgl.h"
 #include "devices/layout.h"
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "devices/tek4013.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"

@@ -6,9 +6,9 @@
 #include <cstdlib>
 #include <filesystem>
 
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "devices/svg.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/devices/support.h"
 #include "tests/support/golden.h"
 #include "tests/support/process.h"

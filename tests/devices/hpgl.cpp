@@ -1,5 +1,5 @@
 // The HP-GL encoder, the plot order and the plot layout (devices/hpgl.h, devices/plot_order.h,
-// devices/plot.h).
+// devices/hpgl_plot.h).
 #include "devices/hpgl.h"
 #include "devices/plot_order.h"
 

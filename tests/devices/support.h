@@ -14,9 +14,9 @@
 
 #include "commands/picture.h"
 #include "devices/device.h"
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 #include "devices/svg.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "workspace/state.h"
 
 namespace igds::test::devices {

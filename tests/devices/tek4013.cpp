@@ -1,10 +1,10 @@
-// The 4013 encoder (devices/tek4013.h) and what DISPLAY and ERASE send (devices/terminal.h).
+// The 4013 encoder (devices/tek4013.h) and what DISPLAY and ERASE send (devices/tek_stream.h).
 #include "devices/tek4013.h"
 
 #include <doctest/doctest.h>
 
 #include "devices/layout.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/devices/support.h"
 
 namespace igds::test::devices {

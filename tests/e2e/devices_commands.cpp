@@ -11,8 +11,8 @@
 #include <sstream>
 
 #include "commands/command.h"
-#include "devices/plot.h"
-#include "devices/terminal.h"
+#include "devices/hpgl_plot.h"
+#include "devices/tek_stream.h"
 #include "tests/devices/support.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"

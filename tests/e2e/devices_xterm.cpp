@@ -16,7 +16,7 @@
 
 #include "devices/layout.h"
 #include "devices/tek4013.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/devices/support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"

@@ -14,7 +14,7 @@
 #include "commands/command.h"
 #include "commands/picture.h"
 #include "devices/render.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/e2e/e2e_support.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "devices/tek_screen.h"
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 #include "tests/e2e/e2e_support.h"
 #include "tests/support/tek_decoder.h"
 #include "tests/workspace/live_igds.h"

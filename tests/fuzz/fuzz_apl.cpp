@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 
 namespace {
 
@@ -47,7 +47,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   FuzzHost host;
   host.lines = &lines;
-  igds::apl::Session session(host);
+  igds::apl::AplSession session(host);
   igds::apl::Limits limits;
   limits.max_elements = 1 << 16;
   limits.max_work = 500'000;
@@ -61,7 +61,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (int count = 0; count < 64 && !lines.empty(); ++count) {
     std::string line = std::move(lines.front());
     lines.pop_front();
-    if (session.execute(line) == igds::apl::Session::Next::off) break;
+    if (session.execute(line) == igds::apl::AplSession::Next::off) break;
   }
   return 0;
 }

@@ -1,6 +1,6 @@
 // The session: reports with a caret, statements that fail change nothing, the host's names
 // and functions, ⎕ and ⍞, system commands, START and )OFF, and the limits.
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 
 #include <doctest/doctest.h>
 
@@ -114,18 +114,18 @@ TEST_CASE("native functions: niladic, monadic, dyadic; their reports") {
 TEST_CASE("START and )OFF say where the dialogue goes") {
   Apl a;
   a("X←1");
-  CHECK(a.next == Session::Next::stay);
+  CHECK(a.next == AplSession::Next::stay);
   a("START");
-  CHECK(a.next == Session::Next::start);
+  CHECK(a.next == AplSession::Next::start);
   a(")OFF");
-  CHECK(a.next == Session::Next::off);
+  CHECK(a.next == AplSession::Next::off);
   a("∇GO");
   a("X←2");
   a("START∇");
   a("GO");
-  CHECK(a.next == Session::Next::start);
+  CHECK(a.next == AplSession::Next::start);
   CHECK(a("X") == Lines{"2"});
-  CHECK(a.next == Session::Next::stay);
+  CHECK(a.next == AplSession::Next::stay);
 }
 
 TEST_CASE("⎕ output and evaluated input; ⍞ character input") {

@@ -50,12 +50,12 @@ class Host {
   virtual std::string load_workspace(std::string_view /*name*/) { return "INCORRECT COMMAND"; }
 };
 
-class Session {
+class AplSession {
  public:
-  explicit Session(Host& host);
-  ~Session();
-  Session(const Session&) = delete;
-  Session& operator=(const Session&) = delete;
+  explicit AplSession(Host& host);
+  ~AplSession();
+  AplSession(const AplSession&) = delete;
+  AplSession& operator=(const AplSession&) = delete;
 
   // Where the dialogue goes after a line: on in APL, back to the IGDS conversation (START),
   // or out of igds ()OFF).

@@ -1,4 +1,4 @@
-#include "interp/apl/session.h"
+#include "interp/apl/apl_session.h"
 
 #include <algorithm>
 #include <memory>
@@ -50,7 +50,7 @@ bool is_name(std::string_view s) {
 
 }  // namespace
 
-class Session::Impl {
+class AplSession::Impl {
  public:
   explicit Impl(Host& host) : eval(host) {}
 
@@ -67,7 +67,7 @@ class Session::Impl {
   std::string edited;  // the name of the function being edited (empty for a new one)
 };
 
-Session::Next Session::Impl::execute(std::string_view line) {
+AplSession::Next AplSession::Impl::execute(std::string_view line) {
   eval.interrupted = false;
   eval.requested = Next::stay;
   if (editor) {
@@ -85,13 +85,13 @@ Session::Next Session::Impl::execute(std::string_view line) {
   return eval.requested;
 }
 
-void Session::Impl::check_definable(const std::string& name, const std::string& original) const {
+void AplSession::Impl::check_definable(const std::string& name, const std::string& original) const {
   if (name != original && (eval.functions.count(name) || eval.natives.count(name)))
     throw Error(ErrorKind::defn);
   if (eval.natives.count(name) || eval.is_variable(name)) throw Error(ErrorKind::defn);
 }
 
-void Session::Impl::open_editor(std::string_view rest) {
+void AplSession::Impl::open_editor(std::string_view rest) {
   // The header runs to a bracket (an editor command) or a closing ∇.
   std::size_t cut = std::min(rest.find('['), rest.find("∇"));
   const std::string header(trim(rest.substr(0, cut)));
@@ -123,13 +123,13 @@ void Session::Impl::open_editor(std::string_view rest) {
   if (!tail.empty()) editor_line(tail);
 }
 
-void Session::Impl::editor_line(std::string_view line) {
+void AplSession::Impl::editor_line(std::string_view line) {
   Editor::Step step = editor->line(line);
   for (const auto& out : step.output) eval.print(out);
   if (step.close) close_editor();
 }
 
-void Session::Impl::close_editor() {
+void AplSession::Impl::close_editor() {
   try {
     DefinedFunction f = make_function(editor->source());
     const std::string name = f.header.name;
@@ -142,7 +142,7 @@ void Session::Impl::close_editor() {
   }
 }
 
-void Session::Impl::list_names(std::vector<std::string> names, std::string_view from) {
+void AplSession::Impl::list_names(std::vector<std::string> names, std::string_view from) {
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
   std::string line;
@@ -158,7 +158,7 @@ void Session::Impl::list_names(std::vector<std::string> names, std::string_view 
   if (!line.empty()) eval.print(line);
 }
 
-Session::Next Session::Impl::system_command(std::string_view line) {
+AplSession::Next AplSession::Impl::system_command(std::string_view line) {
   // The system commands of APL\360 (User's Manual, chapter 6) that a session in igds has.
   std::vector<std::string> words = words_of(line.substr(1));
   const std::string command = words.empty() ? "" : folded(words[0]);
@@ -227,7 +227,7 @@ Session::Next Session::Impl::system_command(std::string_view line) {
   return Next::stay;
 }
 
-Session::Session(Host& host) : impl_(std::make_unique<Impl>(host)) {
+AplSession::AplSession(Host& host) : impl_(std::make_unique<Impl>(host)) {
   define_native(
       "START", 0,
       [this](const Value*, const Value*) -> std::optional<Value> {
@@ -237,33 +237,33 @@ Session::Session(Host& host) : impl_(std::make_unique<Impl>(host)) {
       "START: back to the IGDS conversation.");
 }
 
-Session::~Session() = default;
+AplSession::~AplSession() = default;
 
-Session::Next Session::execute(std::string_view line) {
+AplSession::Next AplSession::execute(std::string_view line) {
   return impl_->execute(line);
 }
 
-std::string Session::prompt() const {
+std::string AplSession::prompt() const {
   return impl_->editor ? impl_->editor->prompt() : std::string(6, ' ');
 }
 
-bool Session::defining() const {
+bool AplSession::defining() const {
   return impl_->editor != nullptr;
 }
 
-void Session::define_native(std::string name, int valence, Native function, std::string help) {
+void AplSession::define_native(std::string name, int valence, Native function, std::string help) {
   if (!is_name(name) || valence < 0 || valence > 2) throw Error(ErrorKind::defn);
   name = folded(name);
   impl_->eval.functions.erase(name);
   impl_->eval.natives[name] = NativeEntry{valence, std::move(function), std::move(help)};
 }
 
-std::string Session::function_help(std::string_view name) const {
+std::string AplSession::function_help(std::string_view name) const {
   auto it = impl_->eval.natives.find(folded(name));
   return it == impl_->eval.natives.end() ? std::string() : it->second.help;
 }
 
-std::vector<std::string> Session::function_names() const {
+std::vector<std::string> AplSession::function_names() const {
   std::vector<std::string> names;
   for (const auto& [name, f] : impl_->eval.functions) names.push_back(name);
   for (const auto& [name, f] : impl_->eval.natives) names.push_back(name);
@@ -271,75 +271,75 @@ std::vector<std::string> Session::function_names() const {
   return names;
 }
 
-std::vector<std::vector<std::string>> Session::defined_functions() const {
+std::vector<std::vector<std::string>> AplSession::defined_functions() const {
   std::vector<std::vector<std::string>> all;
   for (const auto& [name, f] : impl_->eval.functions) all.push_back(f->source());
   return all;
 }
 
-void Session::define_function(const std::vector<std::string>& source) {
+void AplSession::define_function(const std::vector<std::string>& source) {
   DefinedFunction f = make_function(source);
   const std::string name = f.header.name;
   impl_->check_definable(name, name);
   impl_->eval.functions[name] = std::make_shared<const DefinedFunction>(std::move(f));
 }
 
-std::vector<std::pair<std::string, Value>> Session::variables() const {
+std::vector<std::pair<std::string, Value>> AplSession::variables() const {
   return {impl_->eval.globals.begin(), impl_->eval.globals.end()};
 }
 
-std::optional<Value> Session::variable(std::string_view name) const {
+std::optional<Value> AplSession::variable(std::string_view name) const {
   return impl_->eval.lookup(folded(name));
 }
 
-void Session::assign(std::string_view name, Value value) {
+void AplSession::assign(std::string_view name, Value value) {
   if (!is_name(name)) throw Error(ErrorKind::syntax);
   impl_->eval.set_variable(folded(name), std::move(value));
 }
 
-bool Session::erase(std::string_view name) {
+bool AplSession::erase(std::string_view name) {
   const std::string n = folded(name);
   return impl_->eval.functions.erase(n) + impl_->eval.globals.erase(n) > 0;
 }
 
-void Session::clear() {
+void AplSession::clear() {
   impl_->eval.globals.clear();
   impl_->eval.functions.clear();
   impl_->eval.ctx.io = 1;
   impl_->eval.ctx.pp = 10;
 }
 
-int Session::index_origin() const {
+int AplSession::index_origin() const {
   return impl_->eval.ctx.io;
 }
 
-void Session::set_index_origin(int origin) {
+void AplSession::set_index_origin(int origin) {
   if (origin != 0 && origin != 1) throw Error(ErrorKind::domain);
   impl_->eval.ctx.io = origin;
 }
 
-int Session::print_precision() const {
+int AplSession::print_precision() const {
   return impl_->eval.ctx.pp;
 }
 
-void Session::set_print_precision(int digits) {
+void AplSession::set_print_precision(int digits) {
   if (digits < 1 || digits > 17) throw Error(ErrorKind::domain);
   impl_->eval.ctx.pp = digits;
 }
 
-void Session::request(Next next) {
+void AplSession::request(Next next) {
   impl_->eval.requested = next;
 }
 
-void Session::interrupt() {
+void AplSession::interrupt() {
   impl_->eval.interrupted = true;
 }
 
-void Session::set_limits(const Limits& limits) {
+void AplSession::set_limits(const Limits& limits) {
   impl_->eval.ctx.limits = limits;
 }
 
-const Limits& Session::limits() const {
+const Limits& AplSession::limits() const {
   return impl_->eval.ctx.limits;
 }
 

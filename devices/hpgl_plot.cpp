@@ -1,4 +1,4 @@
-#include "devices/plot.h"
+#include "devices/hpgl_plot.h"
 
 #include <algorithm>
 #include <cctype>

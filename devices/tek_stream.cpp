@@ -1,4 +1,4 @@
-#include "devices/terminal.h"
+#include "devices/tek_stream.h"
 
 #include "devices/layout.h"
 #include "devices/tek4013.h"
