@@ -10,6 +10,7 @@
 
 #include "interp/start.h"
 #include "workspace/kernels/big_blocks.h"
+#include "workspace/kernels/interrupt.h"
 
 namespace {
 
@@ -86,6 +87,9 @@ void operator delete(void* p, std::size_t, std::align_val_t) noexcept {
 #endif
 
 int main(int argc, char** argv) {
+  // Before any thread exists: no thread of igds may be ended by Ctrl-C
+  // (workspace/kernels/interrupt.h).
+  igds::block_interrupts();
   start_again_with_huge_pages(argv);
   // Memory a command frees stays in igds for the next command instead of going back to the
   // system: a DISPLAY, PLOT or EXPORT of 4 M points uses hundreds of megabytes of scratch, and
