@@ -132,7 +132,7 @@ void run_zoom(Context& ctx, const Choice*) {
     }
   }
   // The same points, shown through the window: a new current image (STORE keeps it zoomed).
-  auto zoomed = std::make_shared<Image>(copy_of(shown));
+  auto zoomed = std::make_shared<Image>(shown);
   zoomed->window = window;
   ws.image = std::shared_ptr<const Image>(std::move(zoomed));
   // Unlike DISPLAY, on a clean screen: the part larger over the whole image would be unreadable.

@@ -9,7 +9,7 @@
 #include "devices/hpgl.h"
 #include "devices/plot_order.h"
 #include "devices/render.h"
-#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 

@@ -10,7 +10,6 @@
 #include <mutex>
 #include <utility>
 
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {
@@ -32,9 +31,7 @@ struct Keyed {
 // Room for `size` elements of a trivially copyable T, left unwritten: a sort fills it.
 template <class T>
 struct Buffer {
-  explicit Buffer(std::size_t n) : data(std::make_unique_for_overwrite<T[]>(n)), size(n) {
-    advise_huge_pages(data.get(), n * sizeof(T));
-  }
+  explicit Buffer(std::size_t n) : data(std::make_unique_for_overwrite<T[]>(n)), size(n) {}
   T* begin() const { return data.get(); }
   std::unique_ptr<T[]> data;
   std::size_t size;

@@ -8,7 +8,6 @@
 #include <numbers>
 
 #include "workspace/drawing/flatten.h"
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {
@@ -576,7 +575,7 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
       const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
       // Room for every polyline point of the part at once: a large drawing's list is not copied
       // as it grows.
-      reserve_large(list.points, before[until] - before[from]);
+      list.points.reserve(before[until] - before[from]);
       ListSink sink(to, list);
       place_lines(drawing, from, until, at, clip, rendering, sink);
       to.clipped = sink.clipped;

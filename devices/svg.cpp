@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "devices/layout.h"
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {

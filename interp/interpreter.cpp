@@ -57,11 +57,7 @@ Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace
       session_(session),
       ws_(std::move(ws)),
       terminal_(terminal),
-      journal_(session.take_journal(ws_)) {
-  // At start, once the start's own work has begun (the session's delay before it makes the
-  // image ahead): a command typed at once is not slowed.
-  prepare_memory(session_.make_ahead_delay());
-}
+      journal_(session.take_journal(ws_)) {}
 
 Interpreter::Outcome Interpreter::converse() {
   input_ended_ = false;
@@ -99,7 +95,6 @@ std::optional<Interpreter::Outcome> Interpreter::after_command(int errors_before
     return options_.strict && terminal_.command_file() && errors_ > errors_before;
   };
   save();
-  prepare_memory();
   ready_due_ = true;
   if (terminal_.output_failed()) return Outcome::ended;
   if (strict_stop()) return Outcome::strict_stop;
@@ -129,8 +124,6 @@ void Interpreter::perform(const std::function<void()>& run) {
     ~Finish() { running = false; }
   } finish{running_};
   try {
-    // PATCHES and INTPN of a session just loaded are made while the first line is typed.
-    session_.complete(ws_);
     run();
   } catch (const StrictStop&) {
     // The report is printed; converse() stops.
@@ -279,20 +272,6 @@ void Interpreter::save() {
     if (r.what() != save_failure_) report(r.what());
     save_failure_ = r.what();
   }
-}
-
-// While igds waits for the next line, the memory the next command's largest blocks will want is
-// made ready (docs/decisions.md, "Memory made ready while igds waits for a line"): as large blocks,
-// an image of the surface or the current image, whichever is larger (16 bytes a point; the placed
-// points of a PLOT or EXPORT take as much); on the heap, 3/8 of that, the part of a plot's HP-GL
-// made aside.
-void Interpreter::prepare_memory(std::chrono::milliseconds after) {
-  std::size_t image = 0;
-  if (ws_.nocur > 0 && ws_.nostr > 0)  // INTPN's points, though made again behind READY
-    image = static_cast<std::size_t>(grid_points(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) * 2 *
-            sizeof(double);
-  if (ws_.image && ws_.image.made()) image = std::max(image, ws_.image->bytes());
-  memory_ahead_.want(image / 8 * 3, image, after);
 }
 
 Interpreter::Outcome Interpreter::apl_environment() {

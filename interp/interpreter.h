@@ -17,7 +17,6 @@
 #include "interp/apl_env.h"
 #include "interp/terminal.h"
 #include "workspace/disk/session.h"
-#include "workspace/kernels/big_blocks.h"
 
 namespace igds {
 
@@ -87,7 +86,6 @@ class Interpreter final : public Context {
   // HELP, HELP SHORT or HELP LONG typed at a question: answered, true.
   bool answer_help(const std::vector<std::string>& words, const Prompt& prompt);
   Outcome apl_environment();
-  void prepare_memory(std::chrono::milliseconds after = std::chrono::milliseconds(0));
 
   Options options_;
   Disk disk_;
@@ -109,7 +107,6 @@ class Interpreter final : public Context {
   bool ready_due_ = true;     // READY is printed before the next command line is read
   int errors_ = 0;
   std::string save_failure_;  // the report of the failing saves; empty when the last one worked
-  big_blocks::Ahead memory_ahead_;  // last: stopped first
 };
 
 }  // namespace igds

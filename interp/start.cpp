@@ -125,7 +125,7 @@ int igds_main(int argc, char** argv) {
   try {
     Disk disk(options.disk);
     Session session(disk);
-    Workspace ws = session.load(true);
+    Workspace ws = session.load();
     Terminal terminal(options.term, options.tek, out);
     Interpreter interpreter(options, disk, session, std::move(ws), terminal);
     if (switch_window) out.write("\x1b[?38h");

@@ -6,7 +6,6 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds {
@@ -21,7 +20,7 @@ void check_view_point(const View& view, Vec3View points) {
 }
 
 Array projected(Vec3View points, std::vector<std::size_t> shape, const View& view, Vec3 centre) {
-  Array out = large_array(std::move(shape), threads_for(2 * points.size()));
+  Array out(std::move(shape));
   project(view, centre, points, as_point2(out));
   return out;
 }
@@ -134,20 +133,6 @@ ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Descript
         return image_of(from, desim);
       },
       generation, desim);
-}
-
-Image copy_of(const Image& image) {
-  Image out;
-  out.desim = image.desim;
-  out.points = large_copy(image.points, threads_for(image.points.size()));
-  out.arrows = image.arrows;
-  out.drawn_from = image.drawn_from;
-  out.file = image.file;
-  out.file_sum = image.file_sum;
-  out.picture = image.picture;
-  out.window = image.window;
-  out.auto_tangents = image.auto_tangents;
-  return out;
 }
 
 }  // namespace igds

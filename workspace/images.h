@@ -35,8 +35,4 @@ Image image_of(const Workspace& ws, const Description& desim);
 // then): an image the session or the undo journal kept by its recipe.
 ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Description& desim);
 
-// A copy of `image`, every member alike; its points in memory made ready for a large array
-// (kernels/large_array.h): ZOOM's copy of a 4 M-point image costs the copy, not its page faults.
-Image copy_of(const Image& image);
-
 }  // namespace igds

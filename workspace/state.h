@@ -2,13 +2,11 @@
 #pragma once
 
 #include <array>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <utility>
@@ -79,10 +77,9 @@ struct Image {
 };
 
 // An image never changes once made: the workspace shares it (STORE FIRST keeps the same image,
-// the screen and the drawing read its points without a copy). An image the session brings back
-// from a recipe (workspace/disk/session.cpp) is made when it is first looked at, not at start
-// (the current one is made ahead, while igds waits for the first command). A deferred image is
-// made once, by whichever thread looks at it first; another that looks meanwhile waits for it.
+// the screen and the drawing read its points without a copy). An image the session or the undo
+// journal keeps by its recipe (workspace/disk/session.cpp) is made when it is first looked at,
+// once: an image nobody looks at again costs nothing.
 class ImageRef {
  public:
   ImageRef() = default;
@@ -102,17 +99,8 @@ class ImageRef {
   const Image* operator->() const { return &get(); }
   explicit operator bool() const { return cell_ != nullptr; }
   void reset() { cell_.reset(); }
-  // False while a deferred image has not been made yet (or made ahead only).
-  bool made() const;
-  // Makes a deferred image before it is looked at (on a thread of its own), kept aside: the first
-  // look takes it instead of making it. Until then it counts as not made (the undo journal holds
-  // nothing for it). Nothing for an image made already; what make throws is thrown.
-  void make_ahead() const;
-  // True while an image made ahead waits for its first look.
-  bool made_ahead() const;
-  // Gives up what make_ahead made (the image was replaced before anyone looked at it): its memory
-  // goes now, or as soon as a make_ahead under way ends. A later look makes the image.
-  void drop_ahead() const;
+  // False while a deferred image has not been made yet.
+  bool made() const { return cell_ && cell_->image; }
   // The surface's generation and the DESIM it was drawn with, for an image drawn from a surface
   // (Image::drawn_from not 0); known of a deferred image without making it.
   std::optional<std::pair<std::uint64_t, Description>> recipe() const;
@@ -125,17 +113,11 @@ class ImageRef {
   }
 
  private:
+  // Shared by every ImageRef of the image; made once, by the first look.
   struct Cell {
-    Cell(std::shared_ptr<const Image> made, std::function<Image()> recipe, std::uint64_t from,
-         const Description& d);
-    mutable std::mutex making;  // held while `make` runs
     mutable std::shared_ptr<const Image> image;
-    mutable std::atomic<const Image*> ready;  // image.get() once it is set
-    mutable std::function<Image()> make;
-    mutable std::mutex aside;  // for `ahead` and `dropped`
-    mutable std::shared_ptr<const Image> ahead;
-    mutable bool dropped = false;
-    std::uint64_t drawn_from = 0;  // of a deferred image
+    mutable std::function<Image()> make;  // until the image is made
+    std::uint64_t drawn_from = 0;         // of a deferred image
     Description desim;
   };
   const Image& get() const;

@@ -63,79 +63,32 @@ std::optional<VariableProblem> not_finite(Variable v, const Array& a) {
 
 }  // namespace
 
-ImageRef::Cell::Cell(std::shared_ptr<const Image> made, std::function<Image()> recipe,
-                     std::uint64_t from, const Description& d)
-    : image(std::move(made)),
-      ready(image.get()),
-      make(std::move(recipe)),
-      drawn_from(from),
-      desim(d) {}
-
 ImageRef::ImageRef(std::shared_ptr<const Image> image) {
-  if (image) cell_ = std::make_shared<const Cell>(std::move(image), nullptr, 0, Description{});
+  if (image) cell_ = std::make_shared<const Cell>(Cell{std::move(image), nullptr, 0, {}});
 }
 
 ImageRef ImageRef::deferred(std::function<Image()> make, std::uint64_t drawn_from,
                             const Description& desim) {
   ImageRef r;
-  r.cell_ = std::make_shared<const Cell>(nullptr, std::move(make), drawn_from, desim);
+  r.cell_ = std::make_shared<const Cell>(Cell{nullptr, std::move(make), drawn_from, desim});
   return r;
-}
-
-bool ImageRef::made() const {
-  return cell_ && cell_->ready.load(std::memory_order_acquire) != nullptr;
 }
 
 std::optional<std::pair<std::uint64_t, Description>> ImageRef::recipe() const {
   if (!cell_) return std::nullopt;
-  const Image* made = cell_->ready.load(std::memory_order_acquire);
+  const Image* made = cell_->image.get();
   const std::uint64_t from = made ? made->drawn_from : cell_->drawn_from;
   if (from == 0) return std::nullopt;
   return std::pair{from, made ? made->desim : cell_->desim};
 }
 
 const Image& ImageRef::get() const {
-  if (const Image* made = cell_->ready.load(std::memory_order_acquire)) return *made;
-  const std::lock_guard lock(cell_->making);
   if (!cell_->image) {
-    std::shared_ptr<const Image> ahead;
-    {
-      const std::lock_guard kept(cell_->aside);
-      ahead = std::move(cell_->ahead);
-    }
     // A make that throws leaves the recipe: the next look tries again, and meets the same error.
-    cell_->image = ahead ? std::move(ahead) : std::make_shared<const Image>(cell_->make());
+    cell_->image = std::make_shared<const Image>(cell_->make());
     cell_->make = nullptr;  // and what it held
-    cell_->ready.store(cell_->image.get(), std::memory_order_release);
   }
   return *cell_->image;
-}
-
-void ImageRef::make_ahead() const {
-  if (!cell_ || made()) return;
-  const std::lock_guard lock(cell_->making);
-  if (cell_->image) return;
-  {
-    const std::lock_guard kept(cell_->aside);
-    if (cell_->dropped || cell_->ahead) return;
-  }
-  auto image = std::make_shared<const Image>(cell_->make());
-  const std::lock_guard kept(cell_->aside);
-  if (!cell_->dropped) cell_->ahead = std::move(image);
-}
-
-bool ImageRef::made_ahead() const {
-  if (!cell_) return false;
-  const std::lock_guard kept(cell_->aside);
-  return cell_->ahead != nullptr;
-}
-
-void ImageRef::drop_ahead() const {
-  if (!cell_) return;
-  std::shared_ptr<const Image> gone;  // freed after the lock is let go
-  const std::lock_guard kept(cell_->aside);
-  cell_->dropped = true;
-  gone = std::move(cell_->ahead);
 }
 
 std::uint64_t new_generation() {

@@ -4,28 +4,8 @@
 #include <utility>
 
 #include "interp/apl/text.h"
-#include "workspace/kernels/big_blocks.h"
 
 namespace igds::apl {
-
-// Large ravels are igds's large blocks (workspace/kernels/big_blocks.h): a statement repeated on
-// workspace-sized arrays (X←INTPN×2) writes into memory freed by the one before, instead of
-// waiting for the kernel to map and clear fresh pages each time. Under a sanitizer, which
-// watches every block, they are the heap's.
-void* allocate_ravel(std::size_t bytes) {
-#ifndef IGDS_SANITIZED
-  if (bytes >= big_blocks::smallest)
-    if (void* p = big_blocks::allocate(bytes)) return p;
-#endif
-  return ::operator new(bytes);
-}
-
-void deallocate_ravel(void* p, std::size_t) {
-  if (big_blocks::owns(p))
-    big_blocks::release(p);
-  else
-    ::operator delete(p);
-}
 
 std::size_t element_count(const Shape& shape) {
   std::size_t n = 1;

@@ -21,11 +21,6 @@ using Shape = std::vector<std::size_t>;
 // Elements of a shape multiplied (1 for a scalar).
 std::size_t element_count(const Shape& shape);
 
-// Memory for ravels: large ones are igds's large blocks (2 MiB-aligned huge pages, kept when
-// freed), so that filling a new workspace-sized result does not spend its time in page faults.
-void* allocate_ravel(std::size_t bytes);
-void deallocate_ravel(void* p, std::size_t bytes);
-
 // An allocator that leaves new elements uninitialised: a result is written once, not twice.
 template <class T>
 struct UninitialisedAllocator {
@@ -35,9 +30,9 @@ struct UninitialisedAllocator {
   UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
   T* allocate(std::size_t n) {
     if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
-    return static_cast<T*>(allocate_ravel(n * sizeof(T)));
+    return static_cast<T*>(::operator new(n * sizeof(T)));
   }
-  void deallocate(T* p, std::size_t n) { deallocate_ravel(p, n * sizeof(T)); }
+  void deallocate(T* p, std::size_t n) { ::operator delete(p, n * sizeof(T)); }
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
     ::new (static_cast<void*>(p)) U;

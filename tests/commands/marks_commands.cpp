@@ -395,7 +395,6 @@ TEST_CASE("the twists and AUTO mark are kept by SAVE and RESTORE and by the sess
   {
     Session session(disk);
     Workspace ws = session.load();
-    session.complete(ws);
     CHECK(!ws.temp1.made());  // a recipe, made from its record when looked at
     CHECK(ws.marks_twists());
     CHECK(ws.auto_tangents());
@@ -435,7 +434,6 @@ TEST_CASE("a FIT surface's patches are kept by the session and by CHANGE GRID") 
   }
   Session session(disk);
   Workspace ws = session.load();
-  session.complete(ws);
   CHECK(ws == saved);
   CHECK(ws.marks_twists());
 }

@@ -343,7 +343,6 @@ TEST_CASE("a picture image is kept by STORE FILE and by the session, and cannot 
   {
     Session session(disk);
     Workspace back = session.load();
-    session.complete(back);
     CHECK(session.notices().empty());
     REQUIRE(back.image);
     REQUIRE(back.temp2);

@@ -1,4 +1,5 @@
-// Splitting work between threads and preparing large outputs (parallel.h, large_array.h).
+// Splitting work between threads (parallel.h) and outputs written into the memory they had
+// (Array::reshape_for_output).
 #include "workspace/kernels/parallel.h"
 
 #include <doctest/doctest.h>
@@ -8,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/array.h"
 
 using namespace igds;
 
@@ -80,31 +81,26 @@ TEST_CASE("halfway: the items whose weights reach half of all") {
   CHECK(halfway(0, weight) == 0);
 }
 
-TEST_CASE("large_array gives a zero-filled array of the shape, small or large") {
-  Array small = large_array({2, 3}, 2);
-  CHECK(small == Array({2, 3}));
-  Array large = large_array({1100, 1000, 3}, 2);  // 26 MB: prepared by two threads
-  CHECK(large.shape == std::vector<std::size_t>{1100, 1000, 3});
-  REQUIRE(large.size() == 3300000);
-  bool all_zero = true;
-  for (double v : large.ravel) all_zero = all_zero && v == 0;
-  CHECK(all_zero);
+TEST_CASE("threads_for: one thread below a quarter of a million numbers") {
   CHECK(threads_for(10) == 1);
+  CHECK(threads_for((std::size_t(1) << 18) - 1) == 1);
+  CHECK(threads_for(std::size_t(1) << 24) >= 1);
+  CHECK(threads_for(std::size_t(1) << 24) <= 8);
 }
 
-TEST_CASE("reuse_for_output keeps memory of a fitting size and replaces the rest") {
+TEST_CASE("reshape_for_output keeps memory of a fitting size and replaces the rest") {
   Array a({1000, 3});
   const double* memory = a.data();
-  reuse_for_output(a, {600, 3}, 1);
+  a.reshape_for_output({600, 3});
   CHECK(a.data() == memory);
   CHECK(a.shape == std::vector<std::size_t>{600, 3});
   CHECK(a.size() == 1800);
-  reuse_for_output(a, {1000, 3}, 1);
+  a.reshape_for_output({1000, 3});
   CHECK(a.data() == memory);
   CHECK(a.size() == 3000);
-  reuse_for_output(a, {100, 3}, 1);  // far smaller: the memory is given back
+  a.reshape_for_output({100, 3});  // far smaller: the memory is given back
   CHECK(a.size() == 300);
   CHECK(a.ravel.capacity() < 1000);
-  reuse_for_output(a, {5000, 3}, 1);  // larger: new memory
+  a.reshape_for_output({5000, 3});  // larger: new memory
   CHECK(a.size() == 15000);
 }

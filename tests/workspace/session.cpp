@@ -601,8 +601,7 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
       "IMAGE: TOO LARGE");
 }
 
-TEST_CASE("a start makes the current image ahead while igds waits; the others when looked at") {
-  using namespace std::chrono_literals;
+TEST_CASE("images kept by recipe are made when first looked at, not at start") {
   Scratch s;
   Workspace ws = test::make_interpolated(6, 6, 2, 2);
   ws.image =
@@ -613,79 +612,29 @@ TEST_CASE("a start makes the current image ahead while igds waits; the others wh
     session.load();
     session.save(ws);
   }
-  {
-    // Loaded in the foreground (tests, tools): made only when looked at.
-    Session session(s.disk);
-    Workspace back = session.load();
-    CHECK(!back.image.made_ahead());
-    CHECK(!back.image.made());
-  }
-  // As igds starts: IMAGE is made although nothing looks at it (at once on an idle machine; a
-  // minute is allowed for the slowest), TEMP1 is left for its first look.
-  auto started = [&](Session& session) {
-    Workspace back = session.load(true);
-    for (int k = 0; k < 6000 && !back.image.made_ahead(); ++k) std::this_thread::sleep_for(10ms);
-    session.complete(back);
-    return back;
-  };
-  SUBCASE("looked at: taken, not made again") {
-    Session session(s.disk);
-    Workspace back = started(session);
-    CHECK(back.image.made_ahead());
-    CHECK(!back.image.made());  // nothing for the undo journal to count yet
-    CHECK(!back.temp1.made_ahead());
-    CHECK(*back.image == *ws.image);
-    CHECK(back.image.made());
-    CHECK(!back.image.made_ahead());
-    CHECK(*back.temp1 == *ws.temp1);
-    session.save(back);
-  }
-  SUBCASE("replaced before anyone looked: given up at the next save") {
-    Session session(s.disk);
-    Workspace back = started(session);
-    const ImageRef old = back.image;
-    CHECK(old.made_ahead());
-    back.image = back.temp1;  // as DISPLAY FIRST
-    session.save(back);
-    CHECK(!old.made_ahead());
-    CHECK(!old.made());
-    CHECK(*old == *ws.image);  // made again when looked at after all (UNDO)
-  }
-}
-
-namespace {
-
-// A saved session whose current image is the surface's, kept as its recipe.
-void save_with_image(const Scratch& s) {
   Session session(s.disk);
-  session.load();
-  Workspace ws = test::make_interpolated(6, 6, 2, 2);
-  ws.image =
-      std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
-  session.save(ws);
+  Workspace back = session.load();
+  CHECK(back.has_surface());  // PATCHES and INTPN made again by the load
+  CHECK(back.intpn == ws.intpn);
+  CHECK(!back.image.made());
+  CHECK(!back.temp1.made());
+  CHECK(*back.image == *ws.image);
+  CHECK(back.image.made());
+  CHECK(!back.temp1.made());
+  CHECK(*back.temp1 == *ws.temp1);
+  session.save(back);
 }
 
-}  // namespace
-
-TEST_CASE("a session that ends before its image is begun being made ahead does not make it") {
+TEST_CASE("an image kept by a recipe that cannot be made: nothing said at start, a look says why") {
   Scratch s;
-  save_with_image(s);
-  ImageRef image;
   {
     Session session(s.disk);
-    session.set_make_ahead_delay_for_testing(std::chrono::hours(1));
-    Workspace back = session.load(true);
-    session.complete(back);
-    image = back.image;
-  }  // as END typed at once: not an hour
-  CHECK(!image.made_ahead());
-  CHECK(!image.made());
-}
-
-TEST_CASE(
-    "an image made ahead that cannot be made: nothing said at start, the first look says why") {
-  Scratch s;
-  save_with_image(s);
+    session.load();
+    Workspace ws = test::make_interpolated(6, 6, 2, 2);
+    ws.image =
+        std::make_shared<const Image>(image_of(ws, {1, Projection::assonometric, {110, 130, 120}}));
+    session.save(ws);
+  }
   auto table =
       disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
   REQUIRE(table.images[0].kind == disk::ImageEntry::recipe);
@@ -694,39 +643,12 @@ TEST_CASE(
   table.images[0].desim = {1, Projection::conic, {25, 17, 0}};
   test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
   Session session(s.disk);
-  Workspace back = session.load(true);
+  Workspace back = session.load();
   CHECK(session.notices().empty());
-  session.complete(back);
-  // Waits for the make under way (which failed, unseen), then makes it again: the same error.
   CHECK_THROWS_AS(static_cast<void>(*back.image), DataError);
   CHECK(!back.image.made());
-  CHECK(!back.image.made_ahead());
-}
-
-TEST_CASE("a session refused after its inputs are read leaves no surface being made behind it") {
-  // PATCHES and INTPN are made in the background as soon as the inputs are read, while the
-  // images and the journal are read: a session refused then must not fill the empty workspace.
-  Scratch s;
-  {
-    Session session(s.disk);
-    session.load();
-    Workspace ws = test::make_interpolated(6, 6, 2, 2);
-    session.save(ws);
-  }
-  auto table =
-      disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
-  REQUIRE(table.derived);
-  table.images[0].kind = disk::ImageEntry::recipe;
-  table.images[0].record = table.current;
-  table.images[0].desim.projection = static_cast<Projection>(9);
-  test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
-  Session session(s.disk);
-  Workspace loaded = session.load(true);
-  CHECK(loaded == Workspace{});
-  REQUIRE(session.notices().size() == 1);
-  CHECK(session.notices()[0].starts_with("SESSION FILE BINSAVE.IGDSCONT DAMAGED (IMAGE: "));
-  session.complete(loaded);
-  CHECK(loaded == Workspace{});
+  // Every look says it again.
+  CHECK_THROWS_AS(static_cast<void>(*back.image), DataError);
 }
 
 TEST_CASE("the session never saves a workspace that the next start would refuse") {

@@ -9,7 +9,7 @@
 #include "workspace/exchange/duct.h"
 #include "workspace/images.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds::disk {
 
@@ -246,8 +246,7 @@ Array Reader::array(std::size_t max_elements) {
   if (n != count || n > left() / sizeof(double)) throw Damage("FORMAT");
   if (n > max_elements) throw Damage("FORMAT");
   auto raw = take(static_cast<std::size_t>(n) * sizeof(double));
-  // A large array gets its pages as the kernels' outputs do (huge pages, faulted in parallel).
-  a = large_array(std::move(a.shape), threads_for(static_cast<std::size_t>(n)));
+  a = Array(std::move(a.shape));
   if constexpr (std::endian::native == std::endian::little) {
     if (n > 0) std::memcpy(a.ravel.data(), raw.data(), raw.size());
   } else {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
-#include <future>
 #include <map>
 #include <optional>
 #include <set>
@@ -22,7 +21,6 @@
 #include "workspace/error.h"
 #include "workspace/images.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/parallel.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
 
@@ -88,13 +86,7 @@ struct Session::State {
   bool saved_known = false;        // false: the next save writes everything
   std::set<std::string> obsolete;  // files of a version 1 session, removed after the next save
   std::uint32_t next_number = 1;
-  bool in_background = false;
-  std::future<Surface> deriving;  // PATCHES and INTPN being made (load in the background)
-  ImageRef ahead;                 // the image made ahead until it is looked at or replaced
-  std::future<void> making;       // its make (load in the background)
-  std::promise<void> leaving;     // set when the session ends: a make not begun is not begun
-  std::chrono::milliseconds ahead_delay{150};  // from the load to the make
-  std::optional<Journal> journal;              // the undo journal read by the last load
+  std::optional<Journal> journal;  // the undo journal read by the last load
   // During a load: the variable files read and checked so far, and their payloads.
   mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
 
@@ -417,21 +409,18 @@ Workspace Session::State::read_session() {
   }
   ws.changes.surface = generation;
   ws.changes.derived = t.derived;
-  // PATCHES and INTPN, as soon as the inputs are read: the inputs were checked, so nothing the
-  // kernels refuse. The task has a copy of its own, and is made while the images and the undo
-  // journal are read (at 4 M points, tens of milliseconds of the start); if they are refused
-  // the task is waited for and dropped, so that it never fills another workspace.
-  if (t.current != 0 && t.derived)
-    deriving = std::async(
-        in_background ? std::launch::async : std::launch::deferred,
-        [in = std::make_shared<const Workspace>(ws)] { return interpolate(surface_input(*in)); });
-  struct Drop {
-    std::future<Surface>& task;
-    bool kept = false;
-    ~Drop() {
-      if (!kept && task.valid()) task = {};  // waits for it (std::async's future)
+  // PATCHES and INTPN, when they are igds's interpolation of the inputs, are not stored: they are
+  // made again from the inputs just read and checked. A surface the kernels refuse was not saved
+  // by igds.
+  if (t.current != 0 && t.derived) {
+    try {
+      Surface made = interpolate(surface_input(ws));
+      ws.patches = std::move(made.patches);
+      ws.intpn = std::move(made.intpn);
+    } catch (const DataError&) {
+      throw disk::Damage("SURFACE CANNOT BE MADE AGAIN");
     }
-  } drop{deriving};
+  }
   std::map<std::uint32_t, std::shared_ptr<const Workspace>> sources;
   for (std::size_t k = 0; k < 3; ++k) {
     ImageEntry& e = t.images[k];
@@ -459,26 +448,6 @@ Workspace Session::State::read_session() {
       notices.push_back(
           fmt::format("UNDO JOURNAL IN {} DAMAGED (DATA): NOTHING TO UNDO", session_file()));
     }
-  }
-  drop.kept = true;
-  // The current image, when it is a recipe, is made ahead on a thread of its own while igds
-  // waits for the first command, at the lowest priority: a PLOT or STORE typed first finds it
-  // made, and a command typed at once is not slowed by it. It begins a moment after READY
-  // (ahead_delay), so that a session ended at once (END typed first, a command file) does not
-  // wait for an image nobody looks at. A make that fails leaves its error in the future, never
-  // looked at: the image is made again when looked at, which reports it. Given up when a
-  // command replaces the image first (see save). The memory the first command will want is the
-  // interpreter's to make ready (docs/decisions.md, "Memory made ready while igds waits for a
-  // line").
-  if (in_background && ws.image && !ws.image.made()) {
-    ahead = ws.image;
-    leaving = std::promise<void>();
-    making = std::async(std::launch::async,
-                        [image = ws.image, delay = ahead_delay, left = leaving.get_future()] {
-                          if (left.wait_for(delay) != std::future_status::timeout) return;
-                          lowest_priority();
-                          image.make_ahead();
-                        });
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
@@ -592,33 +561,13 @@ Session::Session(const Disk& disk) : state_(std::make_unique<State>(disk)) {
       s.next_number = n + 1;
 }
 
-Session::~Session() {
-  // An image not yet begun being made ahead is not made; one under way is waited for.
-  if (state_->making.valid()) state_->leaving.set_value();
-}
+Session::~Session() = default;
 
-void Session::set_make_ahead_delay_for_testing(std::chrono::milliseconds delay) {
-  state_->ahead_delay = delay;
-}
-
-std::chrono::milliseconds Session::make_ahead_delay() const {
-  return state_->ahead_delay;
-}
-
-Workspace Session::load(bool in_background) {
+Workspace Session::load() {
   State& s = *state_;
-  s.in_background = in_background;
   std::string what;
   try {
-    Workspace ws = s.read_session();
-    if (!in_background) {
-      try {
-        complete(ws);
-      } catch (const Report& r) {
-        throw disk::Damage(r.reason());
-      }
-    }
-    return ws;
+    return s.read_session();
   } catch (const disk::Damage& d) {
     s.checked_.clear();
     what = fmt::format("SESSION FILE {} DAMAGED ({})", session_file(), d.reason());
@@ -660,13 +609,6 @@ Journal Session::take_journal(const Workspace& ws) {
 
 void Session::save(Workspace& ws, const Journal* journal) {
   State& s = *state_;
-  // The image made ahead at start and replaced before anyone looked at it: its memory goes, so
-  // that it never outlives its place in the workspace unseen.
-  if (s.ahead &&
-      (s.ahead.made() || !(ws.image == s.ahead || ws.temp1 == s.ahead || ws.temp2 == s.ahead))) {
-    s.ahead.drop_ahead();
-    s.ahead.reset();
-  }
   const SessionTable& old = s.saved;
   const Record* current = old.record(old.current);
   const bool surface_same =
@@ -831,19 +773,6 @@ void Session::save(Workspace& ws, const Journal* journal) {
   s.saved_known = true;
   ws.changes.inppn.saved();
   ws.changes.inptg.saved();
-}
-
-void Session::complete(Workspace& ws) {
-  State& s = *state_;
-  if (!s.deriving.valid()) return;
-  Surface surface;
-  try {
-    surface = s.deriving.get();
-  } catch (const DataError& d) {
-    throw Report("SURFACE CANNOT BE MADE AGAIN", d.what());
-  }
-  ws.patches = std::move(surface.patches);
-  ws.intpn = std::move(surface.intpn);
 }
 
 const std::vector<std::string>& Session::notices() const {

@@ -3,7 +3,6 @@
 // docs/disk.md.
 #pragma once
 
-#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,17 +25,12 @@ class Session {
   // INIT: the saved session, or an empty workspace the very first time. A damaged, truncated,
   // foreign, newer or inconsistent session is never half-loaded: it is kept aside under a new
   // name, the workspace starts empty, and notices() says what happened. Variable files without
-  // a session are kept aside too.
-  //
-  // PATCHES and INTPN, when they are igds's interpolation of the inputs, are not in the session:
-  // they are made again. With `in_background`, load() returns as soon as everything is read and
-  // checked, and they are made while the designer reads READY: complete() must be called before
-  // anything reads them (the interpreter calls it before each command).
-  Workspace load(bool in_background = false);
+  // a session are kept aside too. PATCHES and INTPN, when they are igds's interpolation of the
+  // inputs, are not in the session: they are made again here.
+  Workspace load();
   // The undo journal load() read with the session (checked; one that is not is refused with a
   // notice and the journal starts again), once: later calls give an empty one.
   Journal take_journal(const Workspace& ws);
-  void complete(Workspace& ws);
 
   // AUTONSAVE: makes `ws` the session on disk, crash-safely (old or new, never torn), writing
   // only what changed since the last save or load (ws.changes says what; it is reset here once
@@ -47,12 +41,6 @@ class Session {
 
   // What load() and the lock had to tell the user, in IGDS style, to print before READY.
   const std::vector<std::string>& notices() const;
-
-  // How long after a load in the background the current image starts being made ahead (150 ms:
-  // a command typed at once, or END, meets no make under way). For tests.
-  void set_make_ahead_delay_for_testing(std::chrono::milliseconds delay);
-  // How long after the load the start's work behind READY begins.
-  std::chrono::milliseconds make_ahead_delay() const;
 
  private:
   struct State;

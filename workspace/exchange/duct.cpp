@@ -11,7 +11,7 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/fields.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/large_array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 

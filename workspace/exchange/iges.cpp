@@ -13,7 +13,6 @@
 
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {

@@ -29,6 +29,17 @@ struct Array {
   std::span<double> span() { return ravel; }
   std::span<const double> span() const { return ravel; }
 
+  // The shape `s` for an output that overwrites every number (the numbers are unspecified): the
+  // memory is kept when it holds them and is not more than twice what they need, so that a
+  // grid made again at the same size is written into pages it already has.
+  void reshape_for_output(std::vector<std::size_t> s) {
+    const std::size_t n = count(s);
+    // Freed first: two grids of the largest size at once may not fit.
+    if (ravel.capacity() < n || ravel.capacity() / 2 > n) ravel = std::vector<double>();
+    shape = std::move(s);
+    ravel.resize(n);
+  }
+
   friend bool operator==(const Array&, const Array&) = default;
 };
 

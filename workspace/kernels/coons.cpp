@@ -2,7 +2,6 @@
 
 #include <cassert>
 
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/spline.h"
 
@@ -50,7 +49,7 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
                    Array& patches, Vec3View twists) {
   const std::size_t nc = nocur, ns = nostr;
   const std::size_t count = (nc - 1) * (ns - 1) * 48;
-  reuse_for_output(patches, {nc - 1, ns - 1, 3, 4, 4}, threads_for(count));
+  patches.reshape_for_output({nc - 1, ns - 1, 3, 4, 4});
   const auto& tu = tangents.along_curves;
   const auto& tv = tangents.along_stringers;
   const bool per_chord = tangents.units == TangentUnits::per_chord;

@@ -36,7 +36,7 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
 // as they are, but zero along a zero-length arc, which is its point), then the twists: `twists`
 // holds one per input point (per unit of both patch parameters, marks.md), or is empty for the
 // zero twists of the manual. Written into `patches`, whose memory is reused when it is large
-// enough (large_array.h).
+// enough (Array::reshape_for_output).
 void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
                    Array& patches, Vec3View twists = {});
 

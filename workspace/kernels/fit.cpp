@@ -6,7 +6,6 @@
 #include <cstring>
 #include <vector>
 
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/spline.h"
@@ -260,7 +259,7 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3V
          Array& intpn) {
   const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);
   const unsigned threads = threads_for(shape.rows * shape.cols * 3);
-  reuse_for_output(intpn, {shape.rows, shape.cols, 3}, threads);
+  intpn.reshape_for_output({shape.rows, shape.cols, 3});
   const std::vector<double> wv = weights(intcu), wu = weights(intst);
   const Vec3 c = bounding_box_centre(points);
   FitJob job{std::size_t(nocur),

@@ -20,7 +20,7 @@ GridShape intpn_shape(int nocur, int nostr, int intcu, int intst);
 // min(I div (INTCU+1), NOCUR-2) at v = b/(INTCU+1), likewise columns with u; every patch block
 // is W M W^T per coordinate, evaluated relative to the centre of the input points' bounding box.
 // The NOCUR x NOSTR input `points` are then copied bit-exactly to their places. Written into
-// `intpn`, whose memory is reused when it is large enough (large_array.h).
+// `intpn`, whose memory is reused when it is large enough (Array::reshape_for_output).
 void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
          Array& intpn);
 

@@ -5,7 +5,6 @@
 #include <cstddef>
 #include <vector>
 
-#include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/spline.h"
 

@@ -2,26 +2,21 @@
 // memory-bound and one core does not saturate the memory).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
 
-#ifdef __linux__
-#include <sys/resource.h>
-#include <unistd.h>
-#endif
-
 namespace igds {
 
-// This thread, and the threads it starts, at the lowest priority, for work done while igds
-// waits: on Linux a thread's nice value is its own, and a new thread takes its creator's.
-// Advice: a refusal changes nothing.
-inline void lowest_priority() {
-#ifdef __linux__
-  ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), 19);
-#endif
+// The number of threads worth using for work on `items` numbers: 1 below a quarter of a million
+// (a couple of milliseconds, where starting threads would cost as much), else the machine's
+// cores (at most 8).
+inline unsigned threads_for(std::size_t items) {
+  if (items < (std::size_t(1) << 18)) return 1;
+  return std::clamp(std::thread::hardware_concurrency(), 1u, 8u);
 }
 
 // Calls f(first, last) on `threads` contiguous slices of [0, count), one per thread, the first
