@@ -14,6 +14,7 @@
 #include "devices/tek_stream.h"
 #include "workspace/disk/disk.h"
 #include "workspace/journal.h"
+#include "workspace/kernels/interrupt.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -51,9 +52,10 @@ struct Prompt {
   std::span<const Choice> answers = {};
 };
 
-// Ctrl-C: the entry in progress is abandoned and the state is as before the command.
-struct Abandon {};
-// End of input (Ctrl-D, end of a command file) in the middle of a command: as Abandon, then END.
+// Ctrl-C (workspace/kernels/interrupt.h: Interrupted, thrown by the questions and by long work
+// alike) abandons the command: the state is as before it.
+// End of input (Ctrl-D, end of a command file) in the middle of a command: the command abandoned
+// as by Ctrl-C, then END.
 struct EndOfInput {};
 
 class Context {
@@ -69,7 +71,7 @@ class Context {
   // The words of the next reply: the words still unread on the command line, if any (all of
   // them), else the words of a line read after showing `prompt`. HELP, HELP SHORT and HELP LONG
   // typed there are answered and the prompt is shown again. An empty line gives no words.
-  // Throws Abandon on Ctrl-C and EndOfInput at the end of input.
+  // Throws Interrupted on Ctrl-C and EndOfInput at the end of input.
   virtual std::vector<std::string> ask(const Prompt& prompt) = 0;
   // Puts words of the last reply back in front, so that the next ask() returns them without
   // prompting.
@@ -93,7 +95,7 @@ class Context {
   virtual void show(const ImageRef& image) = 0;
   // A position picked on the screen after `prompt`, in 4013 addresses (0..1023, 0..779): the
   // cross-hair of a Tek terminal (GIN mode), or a line `X Y` typed or read from a command file;
-  // nullopt when the reply is not a pick. Throws Abandon on Ctrl-C, EndOfInput at the end.
+  // nullopt when the reply is not a pick. Throws Interrupted on Ctrl-C, EndOfInput at the end.
   virtual std::optional<DevicePoint> pick(const Prompt& prompt) = 0;
   // ERASE: a clean screen (a page), where there is a screen to erase.
   virtual void erase() = 0;

@@ -52,16 +52,11 @@ struct PathList {
     points.clear();
     starts.assign(1, 0);
   }
-};
-
-// The paths of a placed drawing, as placed in (at most two) parts on as many threads: path k of
-// the whole is in the part that holds it, no part copied into another.
-struct PlacedPaths {
-  PathList parts[2];
-  std::size_t size() const { return parts[0].size() + parts[1].size(); }
-  std::span<const DevicePoint> operator[](std::size_t k) const {
-    const std::size_t first = parts[0].size();
-    return k < first ? parts[0][k] : parts[1][k - first];
+  // The paths of `more` after these.
+  void append(const PathList& more) {
+    const std::size_t base = points.size();
+    points.insert(points.end(), more.points.begin(), more.points.end());
+    for (std::size_t k = 1; k < more.starts.size(); ++k) starts.push_back(base + more.starts[k]);
   }
 };
 
@@ -112,8 +107,8 @@ class Device {
     for (std::size_t i = 1; i < points.size(); ++i) draw(points[i]);
   }
   // The paths of a placed drawing in order, path k in styles[k]: style() then polyline() for
-  // each. A device may send a long list faster (on two threads: the same bytes).
-  virtual void paths(const PlacedPaths& paths, std::span<const Style> styles) {
+  // each.
+  void paths(const PathList& paths, std::span<const Style> styles) {
     for (std::size_t k = 0; k < paths.size(); ++k) {
       style(styles[k]);
       polyline(paths[k]);

@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "workspace/kernels/parallel.h"
-
 namespace igds {
 
 namespace {
@@ -22,28 +20,6 @@ HpglEncoder::HpglEncoder(const PlotterModel& model, bool absolute, TextOut& out)
   put(fmt::format("IN;SP1;SI{},{};", label_width_cm, label_height_cm));
   // After IN the pen is somewhere near the origin: the first move is absolute.
   at_exact_ = false;
-}
-
-HpglEncoder::HpglEncoder(const HpglEncoder& before, DevicePoint at, TextOut& out)
-    : model_(before.model_),
-      absolute_(before.absolute_),
-      out_(&out),
-      start_(out.offset()),
-      at_(at),
-      at_exact_(true),
-      relative_(!before.absolute_),
-      pd_open_(true),
-      style_(before.style_) {}
-
-void HpglEncoder::join(const HpglEncoder& after) {
-  stats_.vectors += after.stats_.vectors;
-  stats_.pen_lifts += after.stats_.pen_lifts;
-  travel_units_ += after.travel_units_;
-  at_ = after.at_;
-  at_exact_ = after.at_exact_;
-  relative_ = after.relative_;
-  pd_open_ = after.pd_open_;
-  style_ = after.style_;
 }
 
 void HpglEncoder::relative_mode(bool on) {
@@ -126,39 +102,14 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
   at_ = at;
 }
 
-void HpglEncoder::draw_polylines(const PlotOrder& order, std::span<const Line> lines,
-                                 std::size_t from, std::size_t to) {
-  for (std::size_t k = from; k < to; ++k)
+void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines) {
+  for (std::size_t k = 0; k < order.size(); ++k)
     for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
       const Stroke& stroke = order.strokes[s];
       if (s == order.starts[k]) move(stroke.begin(lines));
       draw_run(lines[stroke.line].subspan(stroke.first, stroke.last - stroke.first + 1),
                stroke.reversed);
     }
-}
-
-void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines,
-                             unsigned threads) {
-  // The polyline where the strokes' points are about halved.
-  const std::size_t split = halfway(order.size(), [&](std::size_t k) {
-    std::size_t points = 0;
-    for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s)
-      points += order.strokes[s].last - order.strokes[s].first;
-    return points;
-  });
-  if (threads < 2 || split == 0 || split == order.size()) {
-    draw_polylines(order, lines, 0, order.size());
-    return;
-  }
-  // Every stroke draws a vector (its segments have a length), so after the first part the pen
-  // is down at the end of its last stroke, a PD list open: where the second part starts.
-  PiecesOut later_text;
-  HpglEncoder later(*this, order.strokes[order.starts[split] - 1].end(lines), later_text);
-  both(
-      true, [&] { draw_polylines(order, lines, 0, split); },
-      [&] { later.draw_polylines(order, lines, split, order.size()); });
-  later_text.put_into(*out_);
-  join(later);
 }
 
 void HpglEncoder::text(DevicePoint p, std::string_view line) {

@@ -56,22 +56,13 @@ class HpglEncoder : public Device {
   // draw() to each point of `points` in turn (from the last to the first when `reversed`): the
   // bulk of a plot, without a call per point.
   void draw_run(std::span<const DevicePoint> points, bool reversed);
-  // The strokes of `order` (lines' points), each polyline from a pen-up move, in the style set;
-  // with `threads` 2, the later half of the polylines (by their points) is written on a second
-  // thread by an encoder that starts where this one will be, then put after the first half: the
-  // same bytes and counts as on one thread.
-  void draw_order(const PlotOrder& order, std::span<const Line> lines, unsigned threads);
+  // The strokes of `order` (lines' points), each polyline from a pen-up move, in the style set.
+  void draw_order(const PlotOrder& order, std::span<const Line> lines);
   // PU;SP0; at the end of the plot; the statistics count its bytes.
   void finish();
   const PlotStats& stats() const { return stats_; }
 
  private:
-  // An encoder for the part of a plot after `before` has drawn to `at` (pen down, relative or
-  // absolute as before, its style in force), into `out`; join() adds what it drew.
-  HpglEncoder(const HpglEncoder& before, DevicePoint at, TextOut& out);
-  void join(const HpglEncoder& after);
-  void draw_polylines(const PlotOrder& order, std::span<const Line> lines, std::size_t from,
-                      std::size_t to);
   void close_pd();
   void coordinates(DevicePoint p);
   void relative_mode(bool on);

@@ -9,7 +9,6 @@
 #include "devices/hpgl.h"
 #include "devices/plot_order.h"
 #include "devices/render.h"
-#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -97,9 +96,7 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
       for (const Line& line : lines) hpgl.polyline(line);
       if (!lines.empty() && !lines.back().empty()) pen = lines.back().back();
     } else {
-      std::size_t points = 0;
-      for (const Line& line : lines) points += line.size();
-      hpgl.draw_order(order, lines, threads_for(points));
+      hpgl.draw_order(order, lines);
       if (order.size() > 0) pen = order.strokes.back().end(lines);
     }
   }

@@ -558,7 +558,7 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
   const std::vector<std::size_t> before = polyline_points(drawing);
   const std::size_t items = drawing.size(), points = before.back();
   // A large drawing in two parts that take about as long, placed at once on two threads, the
-  // second part's paths after the first's (each part in a list of its own).
+  // second part's paths then put after the first's.
   const unsigned parts = placing_threads(points);
   std::size_t cut = items;
   if (parts == 2) {
@@ -568,22 +568,22 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
                                    cost.begin());
   }
   Placed out, second;
-  parallel_for(2, parts, [&](std::size_t first, std::size_t last) {
-    for (std::size_t part = first; part < last; ++part) {
-      Placed& to = part == 0 ? out : second;
-      PathList& list = out.paths.parts[part];
-      const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
-      // Room for every polyline point of the part at once: a large drawing's list is not copied
-      // as it grows.
-      list.points.reserve(before[until] - before[from]);
-      ListSink sink(to, list);
-      place_lines(drawing, from, until, at, clip, rendering, sink);
-      to.clipped = sink.clipped;
-    }
+  PathList later;
+  in_parallel(parts, [&](unsigned part) {
+    Placed& to = part == 0 ? out : second;
+    PathList& list = part == 0 ? out.paths : later;
+    const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
+    // Room for every polyline point of the part at once: a large drawing's list is not copied
+    // as it grows.
+    list.points.reserve(before[until] - before[from]);
+    ListSink sink(to, list);
+    place_lines(drawing, from, until, at, clip, rendering, sink);
+    to.clipped = sink.clipped;
   });
+  out.paths.append(later);
   out.styles.insert(out.styles.end(), second.styles.begin(), second.styles.end());
   out.box.add(second.box);
-  ListSink sink(out, out.paths.parts[1]);
+  ListSink sink(out, out.paths);
   sink.clipped = out.clipped || second.clipped;
   place_texts(drawing, at, clip, sink);
   out.clipped = sink.clipped;

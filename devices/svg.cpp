@@ -5,7 +5,6 @@
 #include <algorithm>
 
 #include "devices/layout.h"
-#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -67,9 +66,6 @@ SvgWriter::SvgWriter(TextOut& out) : out_(&out) {
                   width, height, line_height - 4, background()));
 }
 
-SvgWriter::SvgWriter(TextOut& out, DevicePoint at, const Style& style)
-    : out_(&out), at_(at), at_known_(true), drawing_(true), attributes_(attributes_of(style)) {}
-
 void SvgWriter::start_polyline() {
   out_->put("<polyline points=\"");
   out_->commit(put_point(out_->room(32), false, at_));
@@ -126,36 +122,6 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
     out_->commit(out);
   }
   at_ = at;
-}
-
-void SvgWriter::paths(const PlacedPaths& paths, std::span<const Style> styles) {
-  // The path where about half the points are, after one of two points that differ (all but a
-  // dot mark, whose two points are one): after it this writer is at its last point, its
-  // element open, in its style.
-  std::size_t points = 0;
-  for (std::size_t k = 0; k < paths.size(); ++k) points += paths[k].size();
-  std::size_t split = halfway(paths.size(), [&](std::size_t k) { return paths[k].size(); });
-  auto drawn = [&](std::size_t k) { return paths[k].size() >= 2 && paths[k][0] != paths[k][1]; };
-  while (split > 0 && split < paths.size() && !drawn(split - 1)) ++split;
-  if (threads_for(points) < 2 || split == 0 || split >= paths.size()) {
-    Device::paths(paths, styles);
-    return;
-  }
-  PiecesOut later_text;
-  SvgWriter later(later_text, paths[split - 1].back(), styles[split - 1]);
-  auto write = [&](SvgWriter& svg, std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k) {
-      svg.style(styles[k]);
-      svg.polyline(paths[k]);
-    }
-  };
-  both(
-      true, [&] { write(*this, 0, split); }, [&] { write(later, split, paths.size()); });
-  later_text.put_into(*out_);
-  at_ = later.at_;
-  at_known_ = later.at_known_;
-  drawing_ = later.drawing_;
-  attributes_ = std::move(later.attributes_);
 }
 
 void SvgWriter::text(DevicePoint p, std::string_view line) {

@@ -22,9 +22,6 @@ class SvgWriter : public Device {
   void draw(DevicePoint p) override;
   // The points written straight into the element (the bulk of a document).
   void polyline(std::span<const DevicePoint> points) override;
-  // A long list's later half written on a second thread by a writer that starts where this one
-  // will be, then put after the first half: the same document.
-  void paths(const PlacedPaths& paths, std::span<const Style> styles) override;
   void text(DevicePoint p, std::string_view line) override;
   // A new page erases the screen: what was drawn is painted over with the white background
   // (the elements before it are already written).
@@ -36,8 +33,6 @@ class SvgWriter : public Device {
   void finish();
 
  private:
-  // A writer for the paths after one that ended at `at`, its element open, in `style`.
-  SvgWriter(TextOut& out, DevicePoint at, const Style& style);
   void close_polyline();
   void start_polyline();  // its element, up to its first point (at_)
 

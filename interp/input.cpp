@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <pthread.h>
 #include <readline/history.h>
 #include <readline/readline.h>
 #include <signal.h>
@@ -17,23 +16,23 @@
 
 #include "interp/apl/keyboard.h"
 #include "interp/words.h"
+#include "workspace/kernels/interrupt.h"
 
 namespace igds {
 
 // ---- Interrupts -------------------------------------------------------------------------------
 
 Interrupts::Interrupts() {
+  // Blocked already by main; here too for a conversation made without it (the tests).
+  block_interrupts();
   sigset_t interrupt;
   sigemptyset(&interrupt);
   sigaddset(&interrupt, SIGINT);
-  // Blocked, whatever mask igds inherited: Ctrl-C is read from the descriptor.
-  pthread_sigmask(SIG_BLOCK, &interrupt, &old_mask_);
   fd_ = signalfd(-1, &interrupt, SFD_CLOEXEC | SFD_NONBLOCK);
 }
 
 Interrupts::~Interrupts() {
   if (fd_ >= 0) close(fd_);
-  pthread_sigmask(SIG_SETMASK, &old_mask_, nullptr);
 }
 
 bool Interrupts::take() {
@@ -67,8 +66,6 @@ FdSource::~FdSource() {
 }
 
 Event FdSource::line(std::string_view) {
-  // Ctrl-C typed while a command computed is not acted on.
-  if (interrupts_) interrupts_->take();
   for (;;) {
     // Searched once: a long line arriving in pieces costs its length, not its square.
     const auto end = buffer_.find('\n', scanned_);

@@ -15,10 +15,9 @@
 
 namespace igds {
 
-// Ctrl-C while igds waits for input: SIGINT is blocked and read from a signalfd, so that it
-// arrives as an event of the wait (never lost between a check and the wait, never interrupting
-// a command that computes). Made only when a person types: with command files alone, Ctrl-C
-// stops igds as it stops any program.
+// Ctrl-C while igds waits for input: SIGINT, blocked in every thread of igds
+// (workspace/kernels/interrupt.h), is read from a signalfd, so that it arrives as an event of the
+// wait, never lost between a check and the wait.
 class Interrupts {
  public:
   Interrupts();
@@ -31,7 +30,6 @@ class Interrupts {
 
  private:
   int fd_ = -1;
-  sigset_t old_mask_{};
 };
 
 // Waits until `fd` can be read or, when `interrupts` is given, Ctrl-C comes, at most `timeout`

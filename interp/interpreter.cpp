@@ -67,6 +67,8 @@ Interpreter::Outcome Interpreter::converse() {
     const Event e = terminal_.read_line("", ready_due_ ? "READY" : "");
     ready_due_ = false;
     if (e.kind == Event::Kind::interrupt) {
+      // A person: READY again. A command file or a pipe: igds stops, as any program.
+      if (terminal_.command_file()) return Outcome::interrupted;
       ready_due_ = true;
       continue;
     }
@@ -97,6 +99,7 @@ std::optional<Interpreter::Outcome> Interpreter::after_command(int errors_before
   save();
   ready_due_ = true;
   if (terminal_.output_failed()) return Outcome::ended;
+  if (interrupted_ && terminal_.command_file()) return Outcome::interrupted;
   if (strict_stop()) return Outcome::strict_stop;
   if (ending_ == Ending::cms) return Outcome::ended;
   if (ending_ == Ending::apl) {
@@ -119,6 +122,7 @@ void Interpreter::perform(const std::function<void()>& run) {
   asking_ = nullptr;
   pending_.clear();
   running_ = true;
+  interrupted_ = false;
   struct Finish {
     bool& running;
     ~Finish() { running = false; }
@@ -133,8 +137,13 @@ void Interpreter::perform(const std::function<void()>& run) {
   } catch (const DataError& e) {
     running_ = false;
     report(worded(e).what());
-  } catch (const Abandon&) {
-    // Ctrl-C: nothing of the command was kept; READY follows.
+  } catch (const Interrupted&) {
+    // Ctrl-C: nothing of the command was kept; READY follows. Read here when the command's own
+    // work saw it waiting (a question's wait has read it already).
+    running_ = false;
+    interrupted_ = true;
+    if (take_interrupt())
+      say(fmt::format("INTERRUPTED: {} ABANDONED", current_ ? current_->name : "COMMAND"));
   } catch (const EndOfInput&) {
     running_ = false;
     input_ended_ = true;
@@ -188,7 +197,7 @@ std::vector<std::string> Interpreter::ask(const Prompt& prompt) {
   asking_ = &prompt;
   for (;;) {
     const Event e = terminal_.read_line(shown);
-    if (e.kind == Event::Kind::interrupt) throw Abandon{};
+    if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind != Event::Kind::line) throw EndOfInput{};
     auto words = split_words(e.text);
     if (answer_help(words, prompt)) continue;
@@ -240,7 +249,7 @@ std::optional<DevicePoint> Interpreter::pick(const Prompt& prompt) {
   asking_ = &prompt;
   for (;;) {
     const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
-    if (e.kind == Event::Kind::interrupt) throw Abandon{};
+    if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
     if (e.kind != Event::Kind::line) throw EndOfInput{};
     if (!answer_help(split_words(e.text), prompt)) return std::nullopt;

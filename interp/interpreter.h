@@ -29,6 +29,7 @@ class Interpreter final : public Context {
     input_ended,  // the input has no more lines: go on with the next one, or end
     ended,        // END CMS or )OFF: igds ends
     strict_stop,  // --strict and an error report in a command file
+    interrupted,  // Ctrl-C while a command file or a pipe was read: igds ends
   };
   // Runs READY / command on the terminal's input until it ends, END, or a --strict stop. The
   // session is saved after every command.
@@ -104,6 +105,7 @@ class Interpreter final : public Context {
   bool on_line_ = false;              // the unread words are the command line's
   Ending ending_ = Ending::none;
   bool input_ended_ = false;  // the input ended inside a command
+  bool interrupted_ = false;  // the last command was abandoned by Ctrl-C
   bool ready_due_ = true;     // READY is printed before the next command line is read
   int errors_ = 0;
   std::string save_failure_;  // the report of the failing saves; empty when the last one worked

@@ -122,6 +122,8 @@ int igds_main(int argc, char** argv) {
   }
 
   StdOutput out;
+  // Ctrl-C, read as an event in every mode (workspace/kernels/interrupt.h).
+  Interrupts interrupts;
   try {
     Disk disk(options.disk);
     Session session(disk);
@@ -134,7 +136,7 @@ int igds_main(int argc, char** argv) {
 
     auto outcome = Interpreter::Outcome::input_ended;
     for (std::size_t i = 0; i < files.size(); ++i) {
-      FdSource input(std::exchange(files[i], -1), true);
+      FdSource input(std::exchange(files[i], -1), true, &interrupts);
       terminal.use_input(&input);
       outcome = interpreter.converse();
       terminal.use_input(nullptr);
@@ -142,7 +144,6 @@ int igds_main(int argc, char** argv) {
     }
     close_all(files);
     if (outcome == Interpreter::Outcome::input_ended && line.device_2250) {
-      Interrupts interrupts;
       KeySource keys(STDIN_FILENO, interrupts);
       terminal.use_input(&keys);
       outcome = Workspace2250(interpreter, terminal).run();
@@ -150,22 +151,20 @@ int igds_main(int argc, char** argv) {
     } else if (outcome == Interpreter::Outcome::input_ended &&
                (files.empty() || line.then_interactive)) {
       const bool keyboard = isatty(STDIN_FILENO) == 1;
-      std::optional<Interrupts> interrupts;
-      if (keyboard) interrupts.emplace();
       std::unique_ptr<EventSource> input;
       if (keyboard && options.term == TermMode::tek) {
         // The 4013 had no line editing; igds reads keys and echoes them on its screen.
-        input = std::make_unique<KeySource>(STDIN_FILENO, *interrupts);
+        input = std::make_unique<KeySource>(STDIN_FILENO, interrupts);
       } else if (keyboard) {
         input = std::make_unique<ReadlineSource>(
             disk.path("HISTORY", "IGDSHIST"),
             [&interpreter](const std::vector<std::string>& before) {
               return interpreter.completions(before);
             },
-            *interrupts);
+            interrupts);
       } else {
         // A pipe is a command file.
-        input = std::make_unique<FdSource>(STDIN_FILENO, true);
+        input = std::make_unique<FdSource>(STDIN_FILENO, true, &interrupts);
       }
       terminal.use_input(input.get());
       outcome = interpreter.converse();
@@ -176,6 +175,8 @@ int igds_main(int argc, char** argv) {
     if (switch_window) out.write("\x1f\x1b\x03");
     out.flush();
     if (outcome == Interpreter::Outcome::strict_stop) return 3;
+    // As a shell reports a program that Ctrl-C stopped: 128 + SIGINT.
+    if (outcome == Interpreter::Outcome::interrupted) return 128 + SIGINT;
     // The designer must learn from the status what the screen may not have shown.
     return interpreter.saved() && !out.failed() ? 0 : 1;
   } catch (const Error& r) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <stdexcept>
 
 namespace igds {
 
@@ -10,6 +11,10 @@ void TextOut::hand_on(std::size_t n) {
   take(n);
   base_ = next;
   end_offset_ = std::max(end_offset_, next);
+}
+
+void TextOut::overran() {
+  throw std::logic_error("a writer wrote past the room it asked for");
 }
 
 void TextOut::put(std::string_view bytes) {
@@ -74,6 +79,12 @@ PiecesOut::PiecesOut() {
 void PiecesOut::put_into(TextOut& out) const {
   for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
   out.put(std::string_view(begin_, static_cast<std::size_t>(at_ - begin_)));
+}
+
+void PiecesOut::clear() {
+  done_.clear();
+  begin_ = at_ = open_.get();
+  base_ = 0;
 }
 
 void PiecesOut::take(std::size_t) {

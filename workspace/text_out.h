@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "workspace/kernels/interrupt.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {
@@ -26,12 +27,17 @@ class TextOut {
   TextOut& operator=(const TextOut&) = delete;
 
   // Room for n (at most max_room) bytes at the pointer returned; commit(end) says where the bytes
-  // written there end.
+  // written there end. A writer that went past the room it asked for is a fault of igds: commit
+  // throws std::logic_error (before another byte is written) rather than let it go unseen.
   char* room(std::size_t n) {
     if (static_cast<std::size_t>(end_ - at_) < n) hand_on(n);
+    room_end_ = at_ + n;
     return at_;
   }
-  void commit(char* end) { at_ = end; }
+  void commit(char* end) {
+    if (end < at_ || end > room_end_) overran();
+    at_ = end;
+  }
   // All the room there is at once, at least n (at most max_room) bytes: [first, first + size).
   struct Space {
     char* first;
@@ -39,10 +45,14 @@ class TextOut {
   };
   Space space(std::size_t n) {
     room(n);
+    room_end_ = end_;
     return {at_, static_cast<std::size_t>(end_ - at_)};
   }
 
-  void put(char c) { *room(1) = c, ++at_; }
+  void put(char c) {
+    if (at_ == end_) hand_on(1);
+    *at_++ = c;
+  }
   void put(std::string_view bytes);     // any length
   void put(char c, std::size_t count);  // `count` copies of c
   std::uint64_t offset() const { return base_ + std::uint64_t(at_ - begin_); }  // the next byte's
@@ -66,6 +76,8 @@ class TextOut {
 
  private:
   void hand_on(std::size_t n);
+  [[noreturn]] static void overran();
+  char* room_end_ = nullptr;      // the end of the room last asked for
   std::uint64_t end_offset_ = 0;  // the largest offset handed on so far
 };
 
@@ -82,14 +94,16 @@ class StringOut final : public TextOut {
   std::vector<char> buffer_;
 };
 
-// A text made aside in pieces of a megabyte, then put into another TextOut: the later half of a
-// large plot or document, made on a second thread while the first half goes into the file (a
-// string would be copied each time it grew). Written in order only (no seek).
+// A text made aside in pieces of a megabyte, then put into another TextOut: a part of a large
+// text made on another thread while the first part goes into the file (a string would be copied
+// each time it grew). Written in order only (no seek).
 class PiecesOut final : public TextOut {
  public:
   PiecesOut();
   // The text so far into `out`.
   void put_into(TextOut& out) const;
+  // Empty again, its first piece kept.
+  void clear();
 
  private:
   void take(std::size_t n) override;
@@ -97,48 +111,37 @@ class PiecesOut final : public TextOut {
   std::vector<std::pair<std::unique_ptr<char[]>, std::size_t>> done_;
 };
 
-// Room for put_each's items made aside, kept from one call to the next.
-struct Aside {
-  std::unique_ptr<char[]> bytes;
-  std::size_t size = 0;
-};
-
-// Puts into `out`, in order, the texts of items 0 .. count - 1, each written by
-// make(char* w, i) at w (at most `most` bytes, most <= TextOut::max_room) and ending where it
-// returns. With `threads` 2, block by block (a few megabytes of text each), the calling thread
-// makes the first half of a block straight into `out` while a second makes the rest into
-// `aside`, which is then put: the same text, in about half the time when making it is the work.
+// Puts into `out`, in order, the texts of items 0 .. count - 1, each written by make(char* w, k)
+// at w in at most `most` bytes (most <= TextOut::max_room) and ending where it returns. The
+// writers' one way of using the machine's cores: a large text is made block by block (a few
+// megabytes of text each), the calling thread making the first part of a block straight into
+// `out` while other threads (parallel.h) make the other parts into texts of their own, put
+// after it: the same text as on one thread. A Ctrl-C waiting stops it between blocks
+// (kernels/interrupt.h).
 template <class Make>
-void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned threads, Aside& aside,
-              const Make& make) {
-  put_each(out, count, most, threads, aside, std::size_t{8} << 20, make);
-}
-
-// The same with blocks of about `block_bytes` of text (at least two items each).
-template <class Make>
-void put_each(TextOut& out, std::size_t count, std::size_t most, unsigned threads, Aside& aside,
-              std::size_t block_bytes, const Make& make) {
-  const std::size_t block = threads > 1 ? std::max<std::size_t>(2, block_bytes / most) : count;
-  for (std::size_t first = 0; first < count; first += block) {
-    const std::size_t last = std::min(count, first + block);
-    const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
-    if (half < last && aside.size < (last - half) * most) {
-      aside.size = (last - half) * most;
-      aside.bytes = std::make_unique_for_overwrite<char[]>(aside.size);
+void put_each(TextOut& out, std::size_t count, std::size_t most, const Make& make) {
+  constexpr std::size_t block_bytes = std::size_t{8} << 20;
+  auto items = [&](TextOut& to, std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k) {
+      char* w = to.room(most);
+      to.commit(make(w, k));
     }
-    char* aside_end = aside.bytes.get();
-    both(
-        half < last,
-        [&] {
-          for (std::size_t i = first; i < half; ++i) out.commit(make(out.room(most), i));
-        },
-        [&] {
-          char* w = aside.bytes.get();
-          for (std::size_t i = half; i < last; ++i) w = make(w, i);
-          aside_end = w;
-        });
-    out.put(std::string_view(aside.bytes.get(),
-                             static_cast<std::size_t>(aside_end - aside.bytes.get())));
+  };
+  const unsigned threads = count > 1 && count * most >= block_bytes / 2 ? cores() : 1;
+  const std::size_t block =
+      threads > 1 ? std::max<std::size_t>(threads, block_bytes / most) : count;
+  std::vector<PiecesOut> others(threads - 1);
+  for (std::size_t first = 0; first < count; first += block) {
+    check_interrupt();
+    const std::size_t last = std::min(count, first + block);
+    const std::size_t n = last - first;
+    in_parallel(threads, [&](unsigned t) {
+      items(t == 0 ? out : others[t - 1], first + n * t / threads, first + n * (t + 1) / threads);
+    });
+    for (PiecesOut& text : others) {
+      text.put_into(out);
+      text.clear();
+    }
   }
 }
 

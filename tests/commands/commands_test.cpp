@@ -110,7 +110,7 @@ TEST_CASE("BUILD: Ctrl-C or the end of the input leaves the workspace as it was"
   build_saddle(ctx);
   const Workspace before = ctx.ws;
   ctx.type({"2 2", "1 5 5 5", "^C"});
-  CHECK_THROWS_AS(ctx.run(build_command, ""), Abandon);
+  CHECK_THROWS_AS(ctx.run(build_command, ""), Interrupted);
   CHECK(ctx.ws == before);
   ctx.type({"2 2", "1 5 5 5", "", ""});
   CHECK_THROWS_AS(ctx.run(build_command, ""), EndOfInput);

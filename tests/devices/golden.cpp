@@ -114,34 +114,4 @@ TEST_CASE("SVG: a polyline written at once is the element its moves and draws ma
   CHECK(document.find("-2147483647,") != std::string::npos);
 }
 
-TEST_CASE("SVG: a long list of paths written on two threads is the document written on one") {
-  // More than 2^18 points, in runs of styles, dot marks (a point twice) about the middle.
-  PlacedPaths paths;
-  std::vector<Style> styles;
-  for (int k = 0; k < 3000; ++k) {
-    PathList& list = paths.parts[k < 1700 ? 0 : 1];
-    const int n = k % 7 == 3 ? 2 : 40 + k % 150;
-    for (int i = 0; i < n; ++i)
-      list.points.push_back(k % 7 == 3 ? DevicePoint{k % 1000, 7}
-                                       : DevicePoint{(k * 3 + i * 5) % 1024, (k + i * i) % 780});
-    list.starts.push_back(list.points.size());
-    styles.push_back({k / 400 % 3 + 1, k / 900 % 2 ? Dash::dashed : Dash::solid});
-  }
-  std::size_t points = 0;
-  for (std::size_t k = 0; k < paths.size(); ++k) points += paths[k].size();
-  REQUIRE(points > (std::size_t{1} << 18));
-  StringOut two_text, one_text;
-  SvgWriter two(two_text), one(one_text);
-  for (SvgWriter* svg : {&two, &one}) svg->text({5, 5}, "BEFORE");
-  two.paths(paths, styles);
-  one.Device::paths(paths, styles);
-  for (SvgWriter* svg : {&two, &one}) {
-    svg->polyline(std::vector<DevicePoint>{{1, 1}, {2, 2}});
-    svg->finish();
-  }
-  const std::string document = two_text.take_text();
-  CHECK(document == one_text.take_text());
-  CHECK(document.size() > 1000000);
-}
-
 }  // namespace igds::test::devices

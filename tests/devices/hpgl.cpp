@@ -108,7 +108,7 @@ TEST_CASE("HpglEncoder: labels are printable and end with ETX") {
   CHECK(out.take_text() == "IN;SP1;SI0.2,0.3;PU0,0;LBA;B??\x03PU;SP0;");
 }
 
-TEST_CASE("HpglEncoder::draw_order: the later half made on a second thread is the same plot") {
+TEST_CASE("HpglEncoder::draw_order: the plot of its strokes drawn point by point") {
   // Walks of every length (one segment, many), repeats dropped by the order, strokes reversed.
   std::vector<DevicePath> paths;
   for (int k = 0; k < 300; ++k) {
@@ -125,16 +125,26 @@ TEST_CASE("HpglEncoder::draw_order: the later half made on a second thread is th
   for (bool absolute : {false, true}) {
     std::string bytes[2];
     PlotStats stats[2];
-    for (unsigned threads : {1u, 2u}) {
+    for (int by_point : {0, 1}) {
       StringOut out;
       HpglEncoder h(hp7475a, absolute, out);
       h.style({.pen = 2});
-      h.draw_order(order, lines, threads);
+      if (by_point) {
+        for (std::size_t k = 0; k < order.size(); ++k)
+          for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
+            const Stroke& stroke = order.strokes[s];
+            if (s == order.starts[k]) h.move(stroke.begin(lines));
+            for (std::size_t i = stroke.first; i <= stroke.last; ++i)
+              h.draw(lines[stroke.line][stroke.reversed ? stroke.last + stroke.first - i : i]);
+          }
+      } else {
+        h.draw_order(order, lines);
+      }
       h.move({7, 7});
       h.draw({9, 9});
       h.finish();
-      bytes[threads - 1] = out.take_text();
-      stats[threads - 1] = h.stats();
+      bytes[by_point] = out.take_text();
+      stats[by_point] = h.stats();
     }
     CHECK(bytes[0] == bytes[1]);
     CHECK(stats[0].vectors == stats[1].vectors);

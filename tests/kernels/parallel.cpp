@@ -39,46 +39,20 @@ TEST_CASE("an exception in any slice reaches the caller after all threads have f
                   std::bad_alloc);
 }
 
-TEST_CASE("both: two tasks at once on two threads, or in turn on this one") {
+TEST_CASE("in_parallel: part 0 here, every other part on a thread of its own, each once") {
   const auto here = std::this_thread::get_id();
-  for (bool together : {false, true}) {
-    std::vector<int> order;
-    std::thread::id first_on, second_on;
-    std::atomic<int> done{0};
-    both(
-        together,
-        [&] {
-          first_on = std::this_thread::get_id();
-          ++done;
-          if (!together) order.push_back(1);
-        },
-        [&] {
-          second_on = std::this_thread::get_id();
-          ++done;
-          if (!together) order.push_back(2);
-        });
-    CHECK(done.load() == 2);
-    CHECK(first_on == here);
-    CHECK((second_on == here) == !together);
-    if (!together) CHECK(order == std::vector<int>{1, 2});
+  for (unsigned parts : {0u, 1u, 2u, 5u}) {
+    std::vector<std::thread::id> on(parts);
+    std::vector<std::atomic<int>> runs(parts);
+    in_parallel(parts, [&](unsigned part) {
+      on[part] = std::this_thread::get_id();
+      ++runs[part];
+    });
+    for (unsigned part = 0; part < parts; ++part) {
+      CHECK(runs[part].load() == 1);
+      CHECK((on[part] == here) == (part == 0));
+    }
   }
-  std::atomic<bool> first_ran{false};
-  CHECK_THROWS_WITH_AS(
-      both(
-          true, [&] { first_ran = true; }, [] { throw std::runtime_error("second failed"); }),
-      "second failed", std::runtime_error);
-  CHECK(first_ran.load());
-}
-
-TEST_CASE("halfway: the items whose weights reach half of all") {
-  const std::vector<std::size_t> w{5, 1, 1, 1, 1, 1};  // 10 in all
-  auto weight = [&](std::size_t k) { return w[k]; };
-  CHECK(halfway(w.size(), weight) == 1);  // 5 of 10
-  const std::vector<std::size_t> even{1, 1, 1, 1};
-  CHECK(halfway(even.size(), [&](std::size_t k) { return even[k]; }) == 2);
-  const std::vector<std::size_t> late{1, 1, 1, 7};
-  CHECK(halfway(late.size(), [&](std::size_t k) { return late[k]; }) == 4);
-  CHECK(halfway(0, weight) == 0);
 }
 
 TEST_CASE("threads_for: one thread below a quarter of a million numbers") {

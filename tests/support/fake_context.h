@@ -56,7 +56,7 @@ class FakeContext final : public Context {
     if (typed_.empty()) throw EndOfInput{};
     std::string line = typed_.front();
     typed_.pop_front();
-    if (line == "^C") throw Abandon{};
+    if (line == "^C") throw Interrupted{};
     on_line_ = false;
     // The interpreter's own word splitting: blanks and commas, comments dropped.
     return split_words(line);
@@ -87,7 +87,7 @@ class FakeContext final : public Context {
     if (typed_.empty()) throw EndOfInput{};
     std::string line = typed_.front();
     typed_.pop_front();
-    if (line == "^C") throw Abandon{};
+    if (line == "^C") throw Interrupted{};
     int x = 0, y = 0;
     if (std::sscanf(line.c_str(), "%d %d", &x, &y) != 2) return std::nullopt;
     return DevicePoint{x, y};

@@ -29,6 +29,8 @@ class PtySession {
   int wait(double timeout_seconds = 10);
   // Everything the program wrote so far.
   const std::string& output() const { return output_; }
+  // The program's process.
+  pid_t pid() const { return pid_; }
 
  private:
   bool read_some(int timeout_ms);

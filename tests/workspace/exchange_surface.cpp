@@ -1,9 +1,6 @@
 // An IGDS surface as exact curves (workspace/exchange/surface_curves.h): Bézier spans through
 // INTPN, the Bézier net of the patches, the input curves as C2 B-splines, and the input points,
-// border and tangents beside them; the IGES and STEP files written from them made block by block on
-// two threads (iges.h, step.h: CadSplit) are the files made on one, byte for byte, with blocks
-// small enough that every kind of block boundary occurs: inside a row of patches, between curves,
-// in the directory, and in the IGES records numbered once the first half of a block is counted.
+// border and tangents beside them; the records of a large IGES file written from them.
 #include "workspace/exchange/surface_curves.h"
 
 #include <doctest/doctest.h>
@@ -281,7 +278,7 @@ TEST_CASE("arrays of the wrong shape are refused") {
 
 namespace {
 
-const CadHeader split_header{
+const CadHeader large_header{
     "HULL", "HULL.IGS", {1987, 9, 22, 9, 55, 50}, "A. DESIGNER", "CNUCE PISA"};
 
 // The P section's records: 80 columns, numbered 1, 2, ... in columns 74-80.
@@ -302,38 +299,12 @@ void check_p_numbers(const std::string& iges) {
 
 }  // namespace
 
-TEST_CASE("IGES and STEP on two threads, in small blocks, are the files made on one") {
-  // 551 patches of about 19 records each, 30 curves and 20 stringers, one of them a pole (left
-  // out); blocks of a few patches, a curve or two, a few dozen directory entries or points.
+TEST_CASE("IGES of 551 patches and 49 curves: 80 columns, the P records numbered without a gap") {
+  // 30 curves and 20 stringers, one of them a pole (left out).
   TestSurface t = test_surface(30, 20, 0, 0);
   for (int j = 0; j < 20; ++j) std::fill_n(t.inppn.data() + 3 * (5 * 20 + j), 3, 7.0);
   t.surface = interpolate(t.input);
-  const CadSplit one{1, 0};
-  for (SurfaceForm form : {SurfaceForm::patches, SurfaceForm::one}) {
-    CAPTURE(form == SurfaceForm::one);
-    const std::string iges = write_iges(t.input, t.surface.patches, split_header, form, one);
-    const std::string step = write_step(t.input, t.surface.patches, split_header, form, one);
-    if (form == SurfaceForm::patches) check_p_numbers(iges);
-    CHECK(write_iges(t.input, t.surface.patches, split_header, form) == iges);
-    CHECK(write_step(t.input, t.surface.patches, split_header, form) == step);
-    for (std::size_t block :
-         {std::size_t{1}, std::size_t{5000}, std::size_t{20000}, std::size_t{150000}}) {
-      CAPTURE(block);
-      CHECK(write_iges(t.input, t.surface.patches, split_header, form, {2, block}) == iges);
-      CHECK(write_step(t.input, t.surface.patches, split_header, form, {2, block}) == step);
-      CHECK(write_iges(t.input, t.surface.patches, split_header, form, {1, block}) == iges);
-    }
-  }
-}
-
-TEST_CASE("IGES and STEP on two threads: the golden surface, blocks of one or two items") {
-  const TestSurface t = golden_surface();
-  for (SurfaceForm form : {SurfaceForm::patches, SurfaceForm::one}) {
-    const std::string iges = write_iges(t.input, t.surface.patches, split_header, form, {1, 0});
-    const std::string step = write_step(t.input, t.surface.patches, split_header, form, {1, 0});
-    CHECK(write_iges(t.input, t.surface.patches, split_header, form, {2, 1}) == iges);
-    CHECK(write_step(t.input, t.surface.patches, split_header, form, {2, 1}) == step);
-  }
+  check_p_numbers(write_iges(t.input, t.surface.patches, large_header, SurfaceForm::patches));
 }
 
 }  // namespace igds::test::exchange

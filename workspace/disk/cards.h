@@ -25,7 +25,7 @@ std::string format_f10_3(double value, bool* fits);
 bool put_i(char* out, long long value, int width);
 bool put_f10_3(char* out, double value);
 
-// The IGDSCHAR text of `ws`, cards ended by LF, made piece by piece (disk::write_file's Fill):
+// The IGDSCHAR text of `ws`, cards ended by LF, made piece by piece as WRITE writes the file:
 // `ws` must stay unchanged until the last piece is made.
 class CardMaker {
  public:

@@ -13,6 +13,7 @@
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
 #include "workspace/exchange/duct.h"
+#include "workspace/kernels/interrupt.h"
 #include "workspace/kernels/limits.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
@@ -345,8 +346,15 @@ std::size_t write_char(const Disk& disk, std::string_view name, const Workspace&
   const std::string n = checked(name);
   disk::CardMaker cards(ws);
   try {
-    disk::write_file(disk.path(n, "IGDSCHAR"),
-                     [&](char* out, std::size_t room) { return cards.fill(out, room); });
+    disk::write_made(disk.path(n, "IGDSCHAR"), [&](TextOut& out) {
+      for (;;) {
+        check_interrupt();
+        const TextOut::Space room = out.space(TextOut::max_room);
+        const std::size_t n = cards.fill(room.first, room.size);
+        if (n == 0) break;
+        out.commit(room.first + n);
+      }
+    });
   } catch (const disk::IoError& e) {
     throw Report(
         fmt::format("CANNOT WRITE {} ({}); NO FILE CHANGED", file_name(n, "IGDSCHAR"), e.reason()));

@@ -9,16 +9,12 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cstdint>
 #include <cstring>
-#include <future>
 #include <memory>
-#include <mutex>
-#include <new>
 #include <utility>
 
 #include <fmt/format.h>
@@ -128,139 +124,63 @@ void put_at(int fd, const char* p, std::size_t n, std::uint64_t offset) {
   }
 }
 
-// The disk's blocks, as direct writes must be aligned: the file's offsets, the lengths and the
-// memory's addresses.
-constexpr std::size_t block = 4096;
-std::atomic<std::size_t> bytes_direct = 0;  // of bytes_written, those written straight
+// The pieces a large file is written in.
+constexpr std::size_t piece = std::size_t{4} << 20;
 
-// pwrite(2) of n bytes at `offset`. While `direct` (the file system has not refused it), the
-// whole blocks go straight from memory to the disk (O_DIRECT) when `p` and `offset` fall alike
-// within a block, skipping the copy into the system's cache, which on a virtual machine costs as
-// much as making the bytes; the rest goes through the cache. Then the system is asked to start
-// putting the cached bytes on the disk (advice: a refusal changes nothing), so that the writes
-// of a large file overlap with the making of its next pieces instead of all waiting for the
-// fsync. An error of a direct write is met again by the cached one, which reports it.
-void write_at(int fd, const char* p, std::size_t n, std::uint64_t offset, bool& direct) {
-  const std::uint64_t from = (offset + block - 1) / block * block;
-  const std::uint64_t to = (offset + n) / block * block;
-  std::size_t head = n, done = 0;  // bytes before the direct ones, bytes written direct
-  if (direct && !write_limit && to > from &&
-      (reinterpret_cast<std::uintptr_t>(p) - offset) % block == 0) {
-    head = static_cast<std::size_t>(from - offset);
-    const int flags = ::fcntl(fd, F_GETFL);
-    direct = flags >= 0 && ::fcntl(fd, F_SETFL, flags | O_DIRECT) == 0;
-    for (const auto body = static_cast<std::size_t>(to - from); direct && done < body;) {
-      const ssize_t d = ::pwrite(fd, p + head + done, body - done, static_cast<off_t>(from + done));
-      if (d < 0 && errno == EINTR) continue;
-      if (d <= 0 || d % static_cast<ssize_t>(block) != 0) break;
-      done += static_cast<std::size_t>(d);
-    }
-    if (flags >= 0) ::fcntl(fd, F_SETFL, flags);
-    direct = direct && done > 0;
-    bytes_written += done;
-    bytes_direct += done;
-  }
-  put_at(fd, p, head, offset);
-  put_at(fd, p + head + done, n - head - done, offset + head + done);
+// Asks the system to start putting [offset, offset + n) of the file on the disk now (advice: a
+// refusal changes nothing), so that a large file's pieces go to the disk while the next ones are
+// made, and the fsync at the end finds little left to do.
+void start_writeback([[maybe_unused]] int fd, [[maybe_unused]] std::uint64_t offset,
+                     [[maybe_unused]] std::size_t n) {
 #ifdef SYNC_FILE_RANGE_WRITE
   ::sync_file_range(fd, static_cast<off_t>(offset), static_cast<off_t>(n), SYNC_FILE_RANGE_WRITE);
 #endif
 }
 
-// The buffers of FileOut, kept for the next file: fresh memory costs a page fault per 4 KB,
-// which on a virtual machine costs more than making the bytes. Aligned to the disk's blocks.
-constexpr std::size_t piece = std::size_t{4} << 20;
-struct AlignedDelete {
-  void operator()(char* p) const { ::operator delete[](p, std::align_val_t{block}); }
-};
-using Buffer = std::unique_ptr<char[], AlignedDelete>;
-std::mutex pool_mutex;
-std::vector<Buffer> pool;
-
-Buffer borrow_buffer() {
-  {
-    std::lock_guard lock(pool_mutex);
-    if (!pool.empty()) {
-      auto b = std::move(pool.back());
-      pool.pop_back();
-      return b;
-    }
-  }
-  return Buffer(static_cast<char*>(::operator new[](piece, std::align_val_t{block})));
-}
-
-void return_buffer(Buffer b) {
-  std::lock_guard lock(pool_mutex);
-  if (pool.size() < 2) pool.push_back(std::move(b));
-}
-
-// A TextOut into an open file, in two buffers of `piece` bytes: one is being filled while the
-// other is written by a second thread, at its offset.
+// A TextOut into an open file: one buffer of `piece` bytes, written at its offset whenever it
+// fills or a seek moves the text elsewhere.
 class FileOut final : public TextOut {
  public:
-  explicit FileOut(int fd) : fd_(fd), buffers_{borrow_buffer(), borrow_buffer()} {
-    begin_ = at_ = buffers_[0].get();
+  explicit FileOut(int fd) : fd_(fd), buffer_(std::make_unique_for_overwrite<char[]>(piece)) {
+    begin_ = at_ = buffer_.get();
     end_ = begin_ + piece;
   }
-  ~FileOut() override {
-    if (writing_.valid()) writing_.wait();
-    for (auto& b : buffers_) return_buffer(std::move(b));
-  }
-  // Writes what is left and waits for the writes; IoError when one failed.
-  void finish() {
-    seek(offset());
-    if (writing_.valid()) writing_.get();
-  }
+  // Writes what is left; IoError when the system refuses.
+  void finish() { seek(offset()); }
 
  private:
   void take(std::size_t) override {
     const auto n = static_cast<std::size_t>(at_ - begin_);
-    if (n > 0) {
-      // The other buffer's write must be done (and its error seen) before it is filled again.
-      if (writing_.valid()) writing_.get();
-      writing_ = std::async(std::launch::async, [this, p = begin_, n, offset = base_] {
-        write_at(fd_, p, n, offset, direct_);
-      });
-      current_ ^= 1;
-    }
-    // The next bytes (unless a seek moves them) at the same place within a block of memory as
-    // of the file, so that their whole blocks can go straight to the disk.
-    begin_ = at_ = buffers_[current_].get() + (base_ + n) % block;
-    end_ = buffers_[current_].get() + piece;
+    put_at(fd_, begin_, n, base_);
+    if (n > 0) start_writeback(fd_, base_, n);
+    begin_ = at_ = buffer_.get();
   }
   int fd_;
-  bool direct_ = true;  // written and read by the writes, one at a time
-  Buffer buffers_[2];
-  int current_ = 0;
-  std::future<void> writing_;  // the other buffer's write, whose errors get() rethrows
+  std::unique_ptr<char[]> buffer_;
 };
 
-// Writes a large file's pieces as fill() makes them (see write_file).
-void write_filled(int fd, const Fill& fill) {
-  FileOut out(fd);
-  for (;;) {
-    const TextOut::Space room = out.space(TextOut::max_room);
-    const std::size_t n = fill(room.first, room.size);
-    if (n == 0) break;
-    out.commit(room.first + n);
-  }
-  out.finish();
-}
-
-// The runs into the file: a large one through FileOut, its whole blocks straight to the disk
-// from the buffers (the runs lie anywhere in memory; copying them costs less than the system's
-// copy into its cache, and the disk is not left with hundreds of megabytes to take at the
-// fsync); a small one by writev.
+// The runs into the file, by writev, a piece at a time.
 void put_runs(int fd, const std::vector<std::string_view>& runs) {
+  std::vector<std::string_view> some;
   std::size_t size = 0;
-  for (auto run : runs) size += run.size();
-  if (size < 2 * piece) {
-    write_runs(fd, runs);
-    return;
+  std::uint64_t offset = 0;
+  auto flush = [&] {
+    write_runs(fd, some);
+    if (size > 0) start_writeback(fd, offset, size);
+    offset += size;
+    some.clear();
+    size = 0;
+  };
+  for (std::string_view run : runs) {
+    while (!run.empty()) {
+      const std::size_t n = std::min(run.size(), piece - size);
+      some.push_back(run.substr(0, n));
+      size += n;
+      run.remove_prefix(n);
+      if (size == piece) flush();
+    }
   }
-  FileOut out(fd);
-  for (auto run : runs) out.put(run);
-  out.finish();
+  flush();
 }
 
 // Creates `path` (it must not exist; never through a link), writes by `write(fd)`, fsyncs;
@@ -347,11 +267,6 @@ std::filesystem::path temporary_for(const std::filesystem::path& target) {
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace) {
   return write_in_place(
       target, [&](int fd) { put_runs(fd, bytes.runs()); }, replace);
-}
-
-bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace) {
-  return write_in_place(
-      target, [&](int fd) { write_filled(fd, fill); }, replace);
 }
 
 std::optional<std::uint64_t> write_made(const std::filesystem::path& target, const Make& make,
@@ -466,10 +381,6 @@ bool link_file(const std::filesystem::path& from, const std::filesystem::path& t
 
 std::size_t bytes_written_for_testing() {
   return bytes_written;
-}
-
-std::size_t bytes_direct_for_testing() {
-  return bytes_direct;
 }
 
 void set_write_limit_for_testing(std::optional<std::size_t> limit) {

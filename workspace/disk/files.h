@@ -39,16 +39,10 @@ std::filesystem::path temporary_for(const std::filesystem::path& target);
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace = true);
 bool write_file(const std::filesystem::path& target, std::string_view bytes, bool replace = true);
 
-// A file's bytes made piece by piece: fill(out, room) puts at most `room` bytes (at least
-// TextOut::max_room, usually megabytes) at `out` and returns how many; 0 ends the file.
-using Fill = std::function<std::size_t(char* out, std::size_t room)>;
-// The same for bytes made while they are written (a listing of hundreds of megabytes): the next
-// piece is made while the last one is being written, and the system is asked to put each piece
-// on the disk as soon as it has it, so that the last fsync finds little left to do.
-bool write_file(const std::filesystem::path& target, const Fill& fill, bool replace = true);
-// The same for a text that make(out) puts into `out` (workspace/text_out.h; skipped bytes are
-// holes filled later, the file being written at offsets). Returns the file's size in bytes, or
-// nullopt when `replace` is false and a file is there.
+// The same for a text that make(out) puts into `out` as it is written, a few megabytes at a time
+// (workspace/text_out.h; skipped bytes are holes filled later, the file being written at
+// offsets): a listing of hundreds of megabytes is never held whole. Returns the file's size in
+// bytes, or nullopt when `replace` is false and a file is there.
 using Make = std::function<void(TextOut& out)>;
 std::optional<std::uint64_t> write_made(const std::filesystem::path& target, const Make& make,
                                         bool replace = true);
@@ -95,8 +89,6 @@ bool link_file(const std::filesystem::path& from, const std::filesystem::path& t
 void set_write_limit_for_testing(std::optional<std::size_t> limit);
 // The bytes this process's file writes have written so far (not the terminal's).
 std::size_t bytes_written_for_testing();
-// Of those, the bytes written straight from memory to the disk (O_DIRECT), not through the cache.
-std::size_t bytes_direct_for_testing();
 // write(2) that honours the limit above (the lock file writes through it too).
 long limited_write(int fd, const char* p, std::size_t n);
 

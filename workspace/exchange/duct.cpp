@@ -11,7 +11,6 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/fields.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -1302,21 +1301,20 @@ class WrittenPixels {
     if (block_.size() == block) flush();
   }
   void flush() {
-    put_each(out_, block_.size(), pixel_line_most, threads_for(4 * block_.size()), aside_,
-             [&](char* w, std::size_t k) {
-               const double tu[2] = {block_[k][3], 0};
-               return pixel_line(w, block_[k].data(), tu_ ? tu : nullptr);
-             });
+    put_each(out_, block_.size(), pixel_line_most, [&](char* w, std::size_t k) {
+      const double tu[2] = {block_[k][3], 0};
+      return pixel_line(w, block_[k].data(), tu_ ? tu : nullptr);
+    });
     block_.clear();
   }
 
  private:
-  static constexpr std::size_t block = std::size_t{1} << 16;
+  // Pixels at a time: about ten megabytes of text.
+  static constexpr std::size_t block = std::size_t{1} << 18;
   TextOut& out_;
   bool tu_;
   double t_ = 0;                              // the shape factor of the next pixel
   std::vector<std::array<double, 4>> block_;  // x y z T
-  Aside aside_;
 };
 
 // Pixels not wanted: the picture's layout alone.
@@ -1345,11 +1343,9 @@ void write_picture(const Drawing<P>& drawing, const DuctHeader& header, const Du
 void write_duct(const DuctPicture& p, TextOut& out) {
   write_head(p, out);
   const bool tu = !p.tu.empty();
-  Aside aside;
-  put_each(out, p.pixel_count(), pixel_line_most, threads_for(3 * p.pixel_count()), aside,
-           [&](char* w, std::size_t k) {
-             return pixel_line(w, &p.xyz[3 * k], tu ? &p.tu[2 * k] : nullptr);
-           });
+  put_each(out, p.pixel_count(), pixel_line_most, [&](char* w, std::size_t k) {
+    return pixel_line(w, &p.xyz[3 * k], tu ? &p.tu[2 * k] : nullptr);
+  });
   write_tail(p, out);
 }
 

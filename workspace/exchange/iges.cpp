@@ -13,7 +13,7 @@
 
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/parallel.h"
+#include "workspace/kernels/interrupt.h"
 
 namespace igds {
 
@@ -54,7 +54,7 @@ constexpr std::size_t slot = 32;
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
 // the pointer back to its directory entry). Each record is made where it belongs, in the
-// TextOut's room or in memory.
+// TextOut's room.
 class Records {
  public:
   // Records into `out`, numbered from `first_sequence`.
@@ -64,13 +64,6 @@ class Records {
         width_(width),
         sequence_(first_sequence),
         first_(first_sequence) {}
-  // Records at `w` (room for them all and `slot` bytes more), numbered from `first_sequence`.
-  Records(char* w, char section, std::size_t width, std::size_t first_sequence)
-      : section_(section),
-        width_(width),
-        sequence_(first_sequence),
-        first_(first_sequence),
-        w_(w) {}
 
   // Starts an entity's parameters (P section): records end with its DE pointer.
   void begin(std::size_t de) {
@@ -80,7 +73,7 @@ class Records {
   // A parameter and its delimiter (at most 71 characters together).
   void token(const char* text, std::size_t length, char delimiter) {
     if (used_ > 0 && used_ + length + 1 > width_) finish();
-    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
+    if (used_ == 0) line_ = out_->room(record + slot);
     std::memcpy(line_ + used_, text, length);
     line_[used_ + length] = delimiter;
     used_ += length + 1;
@@ -92,7 +85,7 @@ class Records {
   // room has that much to spare: the bytes after the parameter are written again later).
   void slot_token(std::string_view text, char delimiter = ',') {
     if (used_ > 0 && used_ + text.size() + 1 > width_) finish();
-    if (used_ == 0) line_ = out_ ? out_->room(record + slot) : w_;
+    if (used_ == 0) line_ = out_->room(record + slot);
     std::memcpy(line_ + used_, text.data(), slot);
     line_[used_ + text.size()] = delimiter;
     used_ += text.size() + 1;
@@ -119,19 +112,12 @@ class Records {
     line_[at++] = section_;
     at = right_justified(at, sequence_++, 7);
     line_[at++] = '\n';
-    if (out_)
-      out_->commit(line_ + at);
-    else
-      w_ = line_ + at;
+    out_->commit(line_ + at);
     used_ = 0;
     return sequence_ - first_;
   }
   std::size_t next_sequence() const { return sequence_; }
   std::size_t first() const { return first_; }
-  // `lines` records made elsewhere follow those made here.
-  void advance(std::size_t lines) { sequence_ += lines; }
-  // Where the records made in memory end.
-  char* end() const { return w_; }
 
  private:
   std::size_t right_justified(std::size_t at, std::size_t value, std::size_t width) {
@@ -139,25 +125,11 @@ class Records {
       line_[at + k] = value > 0 || k == width - 1 ? char('0' + value % 10) : ' ';
     return at + width;
   }
-  TextOut* out_ = nullptr;
+  TextOut* out_;
   char section_;
   std::size_t width_, used_ = 0, sequence_, de_ = 0, first_;
-  char* w_ = nullptr;
   char* line_ = nullptr;
 };
-
-// Numbers the records at [begin, end) first, first + 1, ... (columns 74-80), in place.
-void number_records(char* begin, char* end, std::size_t first) {
-  char digits[7];
-  for (std::size_t k = 7, value = first; k-- > 0; value /= 10)
-    digits[k] = value > 0 || k == 6 ? char('0' + value % 10) : ' ';
-  for (char* line = begin; line < end; line += record) {
-    std::memcpy(line + 73, digits, 7);
-    int k = 6;
-    for (; k >= 0 && digits[k] == '9'; --k) digits[k] = '0';
-    if (k >= 0) digits[k] = digits[k] == ' ' ? '1' : char(digits[k] + 1);
-  }
-}
 
 struct Entity {
   int type = 0;
@@ -169,64 +141,23 @@ struct Entity {
 
 // Puts into `p` the parameters of entities [0, count), the next ones of the file after `list`,
 // and adds them to `list`: entity k's written by write(p, k), which returns its type, label and
-// subscript, in at most most(k) bytes. With `threads` 2, block by block (`block` entities,
-// prepare(first, last) called first), the calling thread writes the first half of a block
-// straight into `out` while a second writes the rest into `aside`, numbered from 1; once the
-// first half's records are counted the rest are numbered on from them and put: the same
-// records, as put_each makes them (text_out.h).
-template <class Most, class Prepare, class Write>
-void put_entities(TextOut& out, Records& p, std::vector<Entity>& list, std::size_t count,
-                  std::size_t block, unsigned threads, Aside& aside, const Most& most,
+// subscript; block by block (`block` entities, prepare(first, last) called first). A Ctrl-C
+// waiting stops it between blocks.
+template <class Prepare, class Write>
+void put_entities(Records& p, std::vector<Entity>& list, std::size_t count, std::size_t block,
                   const Prepare& prepare, const Write& write) {
-  if (threads <= 1) block = count;
-  block = std::max<std::size_t>(block, 2);
-  std::vector<Entity> side;
+  block = std::max<std::size_t>(block, 1);
   for (std::size_t first = 0; first < count; first += block) {
+    check_interrupt();
     const std::size_t last = std::min(count, first + block);
-    const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
     prepare(first, last);
-    std::size_t room = slot;
-    for (std::size_t k = half; k < last; ++k) room += most(k);
-    if (half < last && aside.size < room) {
-      aside.size = room;
-      aside.bytes = std::make_unique_for_overwrite<char[]>(aside.size);
-    }
-    const std::size_t first_entity = list.size();
-    side.clear();
-    char* aside_end = aside.bytes.get();
-    both(
-        half < last,
-        [&] {
-          for (std::size_t k = first; k < half; ++k) {
-            p.begin(2 * list.size() + 1);
-            Entity e = write(p, k);
-            e.lines = p.finish();
-            e.parameters = p.first();
-            list.push_back(e);
-          }
-        },
-        [&] {
-          Records q(aside.bytes.get(), 'P', 64, 1);
-          for (std::size_t k = half; k < last; ++k) {
-            q.begin(2 * (first_entity + k - first) + 1);
-            Entity e = write(q, k);
-            e.lines = q.finish();
-            e.parameters = q.first();
-            side.push_back(e);
-          }
-          aside_end = q.end();
-        });
-    const std::size_t lines = std::size_t(aside_end - aside.bytes.get()) / record;
-    if (lines == 0) continue;
-    const std::size_t base = p.next_sequence();
-    if (base + lines - 1 > max_sequence) too_many_lines(max_sequence + 1);
-    number_records(aside.bytes.get(), aside_end, base);
-    for (Entity& e : side) {
-      e.parameters += base - 1;
+    for (std::size_t k = first; k < last; ++k) {
+      p.begin(2 * list.size() + 1);
+      Entity e = write(p, k);
+      e.lines = p.finish();
+      e.parameters = p.first();
       list.push_back(e);
     }
-    p.advance(lines);
-    out.put(std::string_view(aside.bytes.get(), lines * record));
   }
 }
 
@@ -298,8 +229,7 @@ void write_curve(Records& p, const CubicBspline& c) {
 }
 
 // The texts of the net's numbers as Records::real writes them, a window of the net's rows at a
-// time, made on two threads: the bulk of a file, and a control shared by neighbouring patches is
-// formatted once.
+// time: the bulk of a file, and a control shared by neighbouring patches is formatted once.
 class NetTexts {
  public:
   explicit NetTexts(const BezierNet& net) : net_(net) {}
@@ -320,11 +250,8 @@ class NetTexts {
     hi_ = hi;
     const std::size_t made = kept * row, n = (hi - lo) * row - made;
     const double* v = &net_.xyz[lo * row + made];
-    const unsigned threads = n >= 4096 ? std::min(2u, threads_for(std::size_t{1} << 20)) : 1;
-    parallel_for(n, threads, [&](std::size_t from, std::size_t to) {
-      for (std::size_t k = from; k < to; ++k)
-        length_[made + k] = static_cast<std::uint8_t>(format_real(&text_[(made + k) * slot], v[k]));
-    });
+    for (std::size_t k = 0; k < n; ++k)
+      length_[made + k] = static_cast<std::uint8_t>(format_real(&text_[(made + k) * slot], v[k]));
   }
   // Number `k` (3 per control, x y z) of row `row`, made ready by rows().
   std::string_view at(std::size_t row, std::size_t k) const {
@@ -375,7 +302,7 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
 }  // namespace
 
 void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& out, SurfaceForm form, CadSplit split) {
+                TextOut& out, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
@@ -431,13 +358,9 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::size_t g_lines = g.finish();
 
   // A curve or stringer whose input points all coincide (a pole) is a point: left out.
-  const unsigned threads =
-      split.threads > 0 ? split.threads : std::min(2u, threads_for(net.xyz.size()));
   std::vector<std::optional<CubicBspline>> splines(nc + ns);
-  parallel_for(nc + ns, threads, [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k)
-      splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
-  });
+  for (std::size_t k = 0; k < nc + ns; ++k)
+    splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
   std::vector<std::size_t> curves;  // the indices of splines kept
   for (std::size_t k = 0; k < nc + ns; ++k)
     if (splines[k]) curves.push_back(k);
@@ -449,12 +372,11 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::size_t d_lines = 2 * entities;
   out.skip(record * d_lines);
 
-  // Parameter section.
-  const std::size_t block_bytes = split.block_bytes > 0 ? split.block_bytes : std::size_t{8} << 20;
+  // Parameter section, a few megabytes of text at a time.
+  constexpr std::size_t block_bytes = std::size_t{8} << 20;
   std::vector<Entity> list;
   list.reserve(entities);
   Records p(out, 'P', 64, 1);
-  Aside aside;
   NetTexts texts(net);
   const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
@@ -466,8 +388,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
     // A patch's 94 parameters, two or more to a record (none is longer than 25 characters).
     const std::size_t patch_most = (94 / 2) * record;
     put_entities(
-        out, p, list, patch_count, std::max<std::size_t>(1, block_bytes / patch_most), threads,
-        aside, [&](std::size_t) { return patch_most; },
+        p, list, patch_count, block_bytes / patch_most,
         [&](std::size_t first, std::size_t last) {
           texts.rows(3 * (first / (ns - 1)), 3 * ((last - 1) / (ns - 1)) + 3);
         },
@@ -484,9 +405,8 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
     return (parameters / 2 + 1) * record;
   };
   put_entities(
-      out, p, list, curves.size(),
-      curves.empty() ? 1 : std::max<std::size_t>(1, block_bytes / curve_most(0)), threads, aside,
-      curve_most, [](std::size_t, std::size_t) {},
+      p, list, curves.size(), curves.empty() ? 1 : block_bytes / curve_most(0),
+      [](std::size_t, std::size_t) {},
       [&](Records& q, std::size_t k) {
         const std::size_t index = curves[k];
         write_curve(q, *splines[index]);
@@ -499,7 +419,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
 
   const std::uint64_t end = out.offset();
   out.seek(d_at);
-  put_each(out, list.size(), directory_most, threads, aside, block_bytes,
+  put_each(out, list.size(), directory_most,
            [&](char* w, std::size_t e) { return directory_entry(w, list[e], 2 * e + 1); });
   out.seek(end);
 
@@ -517,9 +437,9 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
 }
 
 std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form, CadSplit split) {
+                       SurfaceForm form) {
   StringOut out;
-  write_iges(input, patches, header, out, form, split);
+  write_iges(input, patches, header, out, form);
   return out.take_text();
 }
 

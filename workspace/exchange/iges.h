@@ -28,14 +28,6 @@ struct CadHeader {
 // C0-continuous").
 enum class SurfaceForm { patches, one };
 
-// How a large file is made; the text is the same for any split. The bulk (the patches, the curves,
-// the directory) is made a block at a time on `threads` threads (0: two when the file is large),
-// each block about `block_bytes` of text (0: a few megabytes).
-struct CadSplit {
-  unsigned threads = 0;
-  std::size_t block_bytes = 0;
-};
-
 // The file: the surface entities first (labelled PATCH with subscript the patch number, row by
 // row from 1, or SURFACE), then input curves 1..NOCUR and stringers 1..NOSTR as entity 126
 // (labelled CURVE and STRINGER, subscript the number). Surface parameters: u along the curves
@@ -49,9 +41,9 @@ struct CadSplit {
 // for a patch that is not finite, (too_many_points) when a section would need more than 9,999,999
 // lines.
 std::string write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form = SurfaceForm::patches, CadSplit split = {});
+                       SurfaceForm form = SurfaceForm::patches);
 // The same into `out`, made while it is written (the file may be hundreds of megabytes).
 void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& out, SurfaceForm form = SurfaceForm::patches, CadSplit split = {});
+                TextOut& out, SurfaceForm form = SurfaceForm::patches);
 
 }  // namespace igds

@@ -10,7 +10,7 @@
 #include "workspace/exchange/fields.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/parallel.h"
+#include "workspace/kernels/interrupt.h"
 
 namespace igds {
 
@@ -189,7 +189,7 @@ void curve_instances(Instances& s, const std::string& name, const CubicBspline& 
 }  // namespace
 
 void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& text, SurfaceForm form, CadSplit split) {
+                TextOut& text, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
   double largest = 0;
@@ -280,13 +280,10 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   s.ref(steradian);
   out += "))REPRESENTATION_CONTEXT('',''));\n";
 
-  // The net's control points, row by row: the bulk of the file, made on two threads.
+  // The net's control points, row by row: the bulk of the file (text_out.h's put_each).
   const std::size_t first_point = s.next(), points = net.rows * net.cols;
   s.flush();
-  const unsigned threads = split.threads > 0 ? split.threads : threads_for(3 * points);
-  const std::size_t block_bytes = split.block_bytes > 0 ? split.block_bytes : std::size_t{8} << 20;
-  Aside aside;
-  put_each(text, points, point_line_most, threads, aside, block_bytes,
+  put_each(text, points, point_line_most,
            [&](char* w, std::size_t k) { return point_line(w, first_point + k, &net.xyz[3 * k]); });
   s.skip(points);
 
@@ -302,11 +299,11 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
                                         first_point, net.cols, reals) -
                            out.data()));
   } else {
-    // One instance per patch, made on two threads like the points.
+    // One instance per patch, made like the points.
     const std::size_t first_patch = s.next(), count = (nc - 1) * (ns - 1);
     const std::size_t most = surface_most("PATCH 18446744073709551615", {0, 4, 0, 4});
     s.flush();
-    put_each(text, count, most, threads, aside, block_bytes, [&](char* w, std::size_t k) {
+    put_each(text, count, most, [&](char* w, std::size_t k) {
       char name[32] = "PATCH ";
       const std::size_t length =
           std::size_t(std::to_chars(name + 6, name + sizeof name, k + 1).ptr - name);
@@ -319,15 +316,12 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     for (std::size_t k = 0; k < count; ++k) items[k] = first_patch + k;
   }
 
-  // The curves and stringers: their instances numbered ahead, made some curves at a time on two
-  // threads (each into a string of its own), then put in order.
+  // The curves and stringers: their instances numbered ahead (the list of items needs their
+  // numbers first), then made in order.
   std::vector<std::optional<CubicBspline>> splines(nc + ns);
-  parallel_for(nc + ns, std::min(2u, threads), [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to; ++k)
-      splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
-  });
+  for (std::size_t k = 0; k < nc + ns; ++k)
+    splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
   std::vector<std::size_t> curves, first_ids;  // the splines kept, their first instances
-  std::size_t bytes = 0;                       // about the text of the curves
   for (std::size_t k = 0; k < nc + ns; ++k) {
     if (!splines[k]) continue;
     curves.push_back(k);
@@ -335,31 +329,19 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     s.skip(splines[k]->controls.size());
     items.push_back(s.next());
     s.skip(1);
-    bytes += 80 * splines[k]->controls.size();
   }
   s.flush();
-  const std::size_t block =
-      curves.empty() ? 1 : std::max<std::size_t>(2, block_bytes / (bytes / curves.size() + 1));
-  std::string texts[2];
-  for (std::size_t first = 0; first < curves.size(); first += block) {
-    const std::size_t last = std::min(curves.size(), first + block);
-    const std::size_t half = threads > 1 ? first + (last - first) / 2 : last;
-    parallel_for(2, half < last ? 2 : 1, [&](std::size_t from, std::size_t to) {
-      for (std::size_t part = from; part < to; ++part) {
-        texts[part].clear();
-        for (std::size_t k = part == 0 ? first : half; k < (part == 0 ? half : last); ++k) {
-          const std::size_t index = curves[k];
-          Instances c(texts[part], nullptr);
-          c.skip(first_ids[k] - 1);
-          curve_instances(c,
-                          index < nc ? "CURVE " + std::to_string(index + 1)
-                                     : "STRINGER " + std::to_string(index - nc + 1),
-                          *splines[index]);
-        }
-      }
-    });
-    text.put(texts[0]);
-    if (half < last) text.put(texts[1]);
+  std::string curve_text;
+  for (std::size_t k = 0; k < curves.size(); ++k) {
+    check_interrupt();
+    const std::size_t index = curves[k];
+    Instances c(curve_text, &text);
+    c.skip(first_ids[k] - 1);
+    curve_instances(c,
+                    index < nc ? "CURVE " + std::to_string(index + 1)
+                               : "STRINGER " + std::to_string(index - nc + 1),
+                    *splines[index]);
+    c.flush();
   }
 
   const std::size_t set = s.begin();
@@ -400,9 +382,9 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
 }
 
 std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form, CadSplit split) {
+                       SurfaceForm form) {
   StringOut out;
-  write_step(input, patches, header, out, form, split);
+  write_step(input, patches, header, out, form);
   return out.take_text();
 }
 

@@ -17,9 +17,9 @@ namespace igds {
 // neighbouring patches share. Units millimetres, uncertainty 1e-9 of the largest coordinate.
 // Throws DataError as write_iges does (but for the line limit: STEP has none).
 std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form = SurfaceForm::patches, CadSplit split = {});
+                       SurfaceForm form = SurfaceForm::patches);
 // The same into `text`, made while it is written (the file may be hundreds of megabytes).
 void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& text, SurfaceForm form = SurfaceForm::patches, CadSplit split = {});
+                TextOut& text, SurfaceForm form = SurfaceForm::patches);
 
 }  // namespace igds

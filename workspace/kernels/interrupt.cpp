@@ -19,4 +19,12 @@ bool interrupt_pending() noexcept {
   return sigpending(&pending) == 0 && sigismember(&pending, SIGINT) == 1;
 }
 
+bool take_interrupt() noexcept {
+  sigset_t interrupt;
+  sigemptyset(&interrupt);
+  sigaddset(&interrupt, SIGINT);
+  const timespec now{0, 0};
+  return sigtimedwait(&interrupt, nullptr, &now) == SIGINT;
+}
+
 }  // namespace igds

@@ -24,4 +24,8 @@ inline void check_interrupt() {
   if (interrupt_pending()) throw Interrupted{};
 }
 
+// Reads the Ctrl-C that waits, if one does (the conversation, once it has acted on it): true
+// when there was one.
+bool take_interrupt() noexcept;
+
 }  // namespace igds
