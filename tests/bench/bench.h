@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <functional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -14,6 +15,16 @@ struct Benchmark {
 };
 
 std::vector<Benchmark>& registry();
+
+// How the commands are typed (igds_bench's options): `pause` seconds before each timed command,
+// as a person pauses; `busy`: every core kept busy by other processes meanwhile, as by a parallel
+// compile; `only`: the cases whose name (e.g. 500x500_4m) holds it.
+struct Settings {
+  double pause = 0;
+  bool busy = false;
+  std::string only;
+};
+Settings& settings();
 
 struct Register {
   Register(std::string_view name, std::function<void()> run) {

@@ -4,13 +4,17 @@
 // times, the median; BUILD, the exchange files and the display after them once): the
 // milliseconds from sending its lines to the next READY (the autosave included) and the bytes
 // igds wrote to files meanwhile; at the end the session's peak resident memory. Also the start-up
-// with that session saved (to READY; PATCHES and INTPN are made while the first line is typed,
-// and the first command waits for them if it comes sooner), a PLOT typed as the first command
-// after a start, and the variables' own size for comparison.
+// with that session saved (to READY: PATCHES and INTPN are made again before it), a PLOT typed
+// as the first command after a start, and the variables' own size for comparison.
+//
+// With --pause S each timed command is typed S seconds after the READY before it, as a person
+// types (the memory a command freed may have gone back to the system by then); with --busy every
+// core is kept busy by as many processes spinning meanwhile, as by a parallel compile (bench.h).
 //
 // Keys: commands_<grid>_<points>_<command>_ms, ..._<command>_written_bytes,
 // ..._<command>_peak_rss_mb (the session's peak once the command is done), ..._peak_rss_mb,
-// ..._variables_mb, e.g. commands_500x500_4m_change_points_ms.
+// ..._variables_mb, e.g. commands_500x500_4m_change_points_ms; commands_paused_...,
+// commands_busy_... and commands_paused_busy_... with the options.
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <poll.h>
@@ -24,7 +28,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "tests/bench/bench.h"
@@ -220,9 +226,40 @@ std::string build_lines(int n, int density) {
   return lines + fmt::format("\nAUTO\n\n{} {}\n", density, density);
 }
 
+// Every core kept busy by a process of its own spinning, from construction to destruction.
+class Load {
+ public:
+  explicit Load(unsigned processes) {
+    for (unsigned k = 0; k < processes; ++k) {
+      const pid_t pid = ::fork();
+      if (pid == 0) {
+        volatile unsigned long spin = 0;
+        for (;;) spin = spin + 1;
+      }
+      if (pid > 0) pids_.push_back(pid);
+    }
+  }
+  ~Load() {
+    for (pid_t pid : pids_) ::kill(pid, SIGKILL);
+    for (pid_t pid : pids_) ::waitpid(pid, nullptr, 0);
+  }
+  Load(const Load&) = delete;
+  Load& operator=(const Load&) = delete;
+
+ private:
+  std::vector<pid_t> pids_;
+};
+
+// The pause before a timed command (--pause).
+void pause_as_a_person() {
+  if (settings().pause > 0) ::usleep(static_cast<useconds_t>(settings().pause * 1e6));
+}
+
 void run_case(const Disk& disk, const std::string& grid, int n, int density,
               const std::string& size) {
-  const std::string prefix = fmt::format("commands_{}x{}_{}", n, n, size);
+  const std::string mode =
+      std::string(settings().pause > 0 ? "_paused" : "") + (settings().busy ? "_busy" : "");
+  const std::string prefix = fmt::format("commands{}_{}x{}_{}", mode, n, n, size);
   const int side = n + density * (n - 1);
   const double points = double(side) * side;
   fmt::print("{}_points {:.0f}\n", prefix, points);
@@ -286,6 +323,7 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
           igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
         if (key == "undo" || key == "redo") igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
         if (key == "redo") igds.command("UNDO\n");
+        pause_as_a_person();
         runs.push_back(igds.command(step.lines));
       }
       // The image it replaced back (not timed): the start-ups below measure the session they
@@ -301,12 +339,12 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
       std::fflush(stdout);
     }
     peak = igds.peak_rss_kb();
+    pause_as_a_person();
     auto t = igds.command("END CMS\n");
     fmt::print("{}_end_ms {:.1f}\n", prefix, 1000 * t.seconds);
   }
   fmt::print("{}_peak_rss_mb {:.1f}\n", prefix, peak / 1024.0);
-  // To READY, and to the answer of a first command typed at once (which waits for the saved
-  // surface to be made again behind READY).
+  // To READY, and to the answer of a first command typed at once.
   std::vector<double> starts, answers;
   for (int r = 0; r < 3; ++r) {
     Igds igds(disk.dir());
@@ -318,12 +356,15 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
   std::sort(answers.begin(), answers.end());
   fmt::print("{}_startup_ms {:.1f}\n", prefix, 1000 * starts[1]);
   fmt::print("{}_startup_first_answer_ms {:.1f}\n", prefix, 1000 * answers[1]);
-  // A PLOT typed half a second after READY, as the first command of the session: the image is
-  // made while igds waits, the plot's memory is new to igds.
+  // A PLOT typed half a second after READY (or after the pause), as the first command of the
+  // session: its image (kept by recipe) is made then, the plot's memory is new to igds.
   std::vector<double> plots;
   for (int r = 0; r < 3; ++r) {
     Igds igds(disk.dir());
-    ::usleep(500000);
+    if (settings().pause > 0)
+      pause_as_a_person();
+    else
+      ::usleep(500000);
     plots.push_back(igds.command("PLOT SELECTRIC\n").seconds);
     igds.command("END CMS\n");
   }
@@ -341,13 +382,21 @@ IGDS_BENCH("commands") {
   ::signal(SIGPIPE, SIG_IGN);
   Scratch scratch;
   Disk disk(scratch.dir);
-  save_grid(disk, "G100", 100);
-  save_grid(disk, "G500", 500);
   // About 1 M and 4 M points: (n + d(n-1))^2.
-  run_case(disk, "G100", 100, 9, "1m");
-  run_case(disk, "G100", 100, 19, "4m");
-  run_case(disk, "G500", 500, 1, "1m");
-  run_case(disk, "G500", 500, 3, "4m");
+  struct Case {
+    int n, density;
+    const char* size;
+  };
+  const Case cases[] = {{100, 9, "1m"}, {100, 19, "4m"}, {500, 1, "1m"}, {500, 3, "4m"}};
+  std::optional<Load> load;
+  if (settings().busy) load.emplace(std::thread::hardware_concurrency());
+  for (const Case& c : cases) {
+    const std::string name = fmt::format("{}x{}_{}", c.n, c.n, c.size);
+    if (name.find(settings().only) == std::string::npos) continue;
+    const std::string grid = fmt::format("G{}", c.n);
+    if (!fs::exists(disk.path(grid, "IGDSDATA"))) save_grid(disk, grid, c.n);
+    run_case(disk, grid, c.n, c.density, c.size);
+  }
 }
 
 }  // namespace igds::bench

@@ -19,6 +19,8 @@
 
 #include <fmt/format.h>
 
+#include "workspace/kernels/interrupt.h"
+
 namespace igds::disk {
 
 namespace {
@@ -138,7 +140,8 @@ void start_writeback([[maybe_unused]] int fd, [[maybe_unused]] std::uint64_t off
 }
 
 // A TextOut into an open file: one buffer of `piece` bytes, written at its offset whenever it
-// fills or a seek moves the text elsewhere.
+// fills or a seek moves the text elsewhere. A Ctrl-C waiting stops the text there (the files
+// made this way are the user's: EXPORT, PLOT, WRITE; the temporary is removed).
 class FileOut final : public TextOut {
  public:
   explicit FileOut(int fd) : fd_(fd), buffer_(std::make_unique_for_overwrite<char[]>(piece)) {
@@ -150,6 +153,7 @@ class FileOut final : public TextOut {
 
  private:
   void take(std::size_t) override {
+    check_interrupt();
     const auto n = static_cast<std::size_t>(at_ - begin_);
     put_at(fd_, begin_, n, base_);
     if (n > 0) start_writeback(fd_, base_, n);
