@@ -6,8 +6,8 @@
 #include <regex>
 
 #include "devices/hpgl.h"
-#include "devices/layout.h"
 #include "devices/hpgl_plot.h"
+#include "devices/layout.h"
 #include "devices/tek4013.h"
 #include "devices/tek_stream.h"
 #include "tests/devices/support.h"
