@@ -117,7 +117,8 @@ TEST_CASE("plot_order: the same paths as the reference on small lattice walks") 
   }
 }
 
-TEST_CASE("plot_order: the same paths as the reference on many pieces") {
+TEST_CASE("plot_order: the same paths as the reference on many pieces" *
+          doctest::test_suite("slow")) {
   std::mt19937 rng(7);
   for (int round = 0; round < 40; ++round) {
     // Thousands of short walks: the grid of ends is used, and its plain search too.
@@ -127,7 +128,8 @@ TEST_CASE("plot_order: the same paths as the reference on many pieces") {
   }
 }
 
-TEST_CASE("plot_order: the same paths as the reference on grids and patch wireframes") {
+TEST_CASE("plot_order: the same paths as the reference on grids and patch wireframes" *
+          doctest::test_suite("slow")) {
   std::mt19937 rng(99);
   for (int round = 0; round < 300; ++round) {
     std::uniform_int_distribution<int> n(1, 12);

@@ -82,7 +82,8 @@ std::set<std::string> files_in(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("igds killed -9 at random moments: restart gives a state after a finished command") {
+TEST_CASE("igds killed -9 at random moments: restart gives a state after a finished command" *
+          doctest::test_suite("slow")) {
   REQUIRE(fs::exists(test::igds_binary()));
   test::TempDir scratch;
   // A kill -9 leaves the page cache as it is, so a tmpfs behaves as any disk here, and without

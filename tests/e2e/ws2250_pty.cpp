@@ -33,12 +33,17 @@ std::size_t count_of(const std::string& text, const std::string& word) {
 // Waits for the cross-hair, pressing RETURN at every MORE not answered yet: a text longer than
 // the text area beside the menu is paged, and how many pages it takes depends on the menu's width.
 bool expect_gin(PtySession& igds, std::size_t& answered) {
-  for (int wait = 0; wait < 20; ++wait) {
-    if (igds.expect(gin_on, 1)) return true;
-    if (const std::size_t mores = count_of(igds.output(), more); mores > answered) {
-      igds.send("\r");
-      answered = mores;
-    }
+  for (int page = 0; page < 20; ++page) {
+    // Whichever comes first: a MORE not answered yet, or the cross-hair.
+    bool gin = false;
+    if (!igds.wait_until([&] {
+          return count_of(igds.output(), more) > answered || (gin = igds.expect(gin_on, 0));
+        }))
+      return false;
+    if (gin) return true;
+    // Counted before the RETURN: sending it reads on, maybe up to the next MORE.
+    answered = count_of(igds.output(), more);
+    igds.send("\r");
   }
   return false;
 }

@@ -23,6 +23,7 @@
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
+#include "tests/support/x_cursor.h"
 
 namespace igds::test {
 
@@ -453,6 +454,7 @@ TEST_CASE("from an xterm's VT window, DISPLAY draws in its Tek window and the di
 
 TEST_CASE("igds 2250 in an xterm Tek window: menu items clicked with the mouse, entries typed") {
   if (!x_tools_present()) return;
+  IGDS_SKIP_UNLESS(can_watch_cursor(), "the tests were built without libXfixes (libxfixes-dev)");
   Xserver x;
   REQUIRE_MESSAGE(!x.display.empty(), "no free display for Xvfb");
   std::map<std::string, std::string> env{{"DISPLAY", x.display}};
@@ -476,16 +478,19 @@ TEST_CASE("igds 2250 in an xterm Tek window: menu items clicked with the mouse, 
     CHECK(shot->dark_near(map.px(mx), map.py(b.y1), 1));
     CHECK(shot->dark_near(map.px(mx), map.py(b.y0), 1));
   }
-  // A click on an item: the mouse to its middle, button 1, once igds has the cross-hair up.
+  // A click on an item: the mouse to its middle, button 1 once igds asks for a pick, that is
+  // once the window's cursor is a cross-hair other than the one of the last click.
+  unsigned long crosshair = 0;
   auto click = [&](std::size_t k) {
-    std::this_thread::sleep_for(1500ms);
     const Box& b = layout.items[k];
     const auto moved =
         run({"xdotool", "mousemove", "--window", window, std::to_string(map.px((b.x0 + b.x1) / 2)),
-             std::to_string(map.py((b.y0 + b.y1) / 2)), "click", "1"},
+             std::to_string(map.py((b.y0 + b.y1) / 2))},
             in_env(env));
     REQUIRE(moved.status == 0);
-    std::this_thread::sleep_for(500ms);
+    crosshair = await_crosshair(x.display, crosshair, 20s);
+    REQUIRE_MESSAGE(crosshair != 0, "no cross-hair for " << items[k].label);
+    REQUIRE(run({"xdotool", "click", "1"}, in_env(env)).status == 0);
   };
   auto index = [&](const std::string& label) {
     for (std::size_t k = 0; k < items.size(); ++k)

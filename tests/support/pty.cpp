@@ -86,6 +86,15 @@ bool PtySession::expect(std::string_view text, double timeout_seconds) {
   }
 }
 
+bool PtySession::wait_until(const std::function<bool()>& ready, double timeout_seconds) {
+  auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);
+  for (;;) {
+    if (ready()) return true;
+    if (std::chrono::steady_clock::now() >= deadline) return false;
+    read_some(50);
+  }
+}
+
 int PtySession::wait(double timeout_seconds) {
   if (status_ >= 0) return status_;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_seconds);

@@ -4,6 +4,7 @@
 #include <sys/types.h>
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <string>
 #include <string_view>
@@ -25,6 +26,9 @@ class PtySession {
   // Waits until `text` appears in the output after the last match; true when it did before
   // `timeout_seconds`. The next expect() looks after it.
   bool expect(std::string_view text, double timeout_seconds = 10);
+  // Reads the program's output until `ready()` holds; false when it did not before
+  // `timeout_seconds`.
+  bool wait_until(const std::function<bool()>& ready, double timeout_seconds = 10);
   // Waits for the program to end: its exit status, or -1 after the timeout.
   int wait(double timeout_seconds = 10);
   // Everything the program wrote so far.

@@ -73,7 +73,8 @@ void around(double v, int count, F&& f) {
 
 }  // namespace
 
-TEST_CASE("F10.3 by integer arithmetic: random doubles of every magnitude agree with fmt") {
+TEST_CASE("F10.3 by integer arithmetic: random doubles of every magnitude agree with fmt" *
+          doctest::test_suite("slow")) {
   Comparison c;
   std::mt19937_64 rng(1975);
   // Every bit pattern alike: NaNs, infinities, subnormals, the huge and the tiny.
@@ -94,7 +95,8 @@ TEST_CASE("F10.3 by integer arithmetic: random doubles of every magnitude agree 
   c.report();
 }
 
-TEST_CASE("F10.3 by integer arithmetic: exact halves and values beside them agree with fmt") {
+TEST_CASE("F10.3 by integer arithmetic: exact halves and values beside them agree with fmt" *
+          doctest::test_suite("slow")) {
   Comparison c;
   // A double is an exact half of a thousandth only as an odd multiple of 1/16 (1000 = 2^3 125):
   // every such value from -100000 to 100000, and some up to 1000000 with their neighbours.
@@ -114,7 +116,8 @@ TEST_CASE("F10.3 by integer arithmetic: exact halves and values beside them agre
   c.report();
 }
 
-TEST_CASE("F10.3 by integer arithmetic: the edges of ten columns, tiny values, signed zeros") {
+TEST_CASE("F10.3 by integer arithmetic: the edges of ten columns, tiny values, signed zeros" *
+          doctest::test_suite("slow")) {
   Comparison c;
   // Where the asterisks begin: 1000000.000 and up, -100000.000 and down after rounding.
   for (double edge : {999999.9995, 1e6, 999999.999, -99999.9995, -1e5, -99999.999})

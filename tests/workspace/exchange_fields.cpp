@@ -100,7 +100,8 @@ std::string real_of(double v) {
 
 }  // namespace
 
-TEST_CASE("The shortest reals of IGES and STEP: exactly std::to_chars's digits and layout") {
+TEST_CASE("The shortest reals of IGES and STEP: exactly std::to_chars's digits and layout" *
+          doctest::test_suite("slow")) {
   std::size_t checked = 0;
   auto check = [&](double v) {
     if (!std::isfinite(v)) return true;
@@ -126,7 +127,8 @@ TEST_CASE("The shortest reals of IGES and STEP: exactly std::to_chars's digits a
   CHECK(real_of(-0.0) == "0.");
 }
 
-TEST_CASE("E14.7 and the other Ew.d: exactly the digits printf rounds to") {
+TEST_CASE("E14.7 and the other Ew.d: exactly the digits printf rounds to" *
+          doctest::test_suite("slow")) {
   std::size_t checked = 0;
   for (double v : values(100000)) {
     if (!std::isfinite(v)) continue;
