@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "workspace/kernels/parallel.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds {
 

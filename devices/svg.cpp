@@ -7,6 +7,7 @@
 #include "devices/layout.h"
 #include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds {
 

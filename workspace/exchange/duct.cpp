@@ -9,9 +9,9 @@
 #include <fmt/format.h>
 
 #include "workspace/drawing/project.h"
-#include "workspace/exchange/fields.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
+#include "workspace/numbers/fortran.h"
 
 namespace igds {
 
@@ -196,21 +196,6 @@ struct Record {
   std::size_t line = 0;  // where it began
 };
 
-// Splits a line into at most `limit` tokens separated by blanks or commas; returns how many there
-// are in all (possibly more than `limit`).
-std::size_t tokens_of(std::string_view line, std::string_view* out, std::size_t limit) {
-  std::size_t n = 0, i = 0;
-  while (i < line.size()) {
-    while (i < line.size() && (blank(line[i]) || line[i] == ',')) ++i;
-    if (i == line.size()) break;
-    const std::size_t start = i;
-    while (i < line.size() && !blank(line[i]) && line[i] != ',') ++i;
-    if (n < limit) out[n] = line.substr(start, i - start);
-    ++n;
-  }
-  return n;
-}
-
 [[noreturn]] void not_a_number(std::size_t line, std::string_view token, bool integer) {
   DuctError e(DuctError::Problem::not_a_number, line);
   e.found = shown(token);
@@ -221,12 +206,12 @@ std::size_t tokens_of(std::string_view line, std::string_view* out, std::size_t 
 void parse_into(Record& r, std::size_t k, const Field& f, std::string_view token,
                 std::size_t line) {
   if (f.integer) {
-    const auto v = parse_fortran_integer(token);
+    const auto v = fortran::read_integer(token);
     if (!v) not_a_number(line, token, true);
     r.integer[k] = *v;
     r.real[k] = double(*v);
   } else {
-    const auto v = parse_fortran_real(token);
+    const auto v = fortran::read_real(token);
     if (!v) not_a_number(line, token, false);
     r.real[k] = *v;
     r.integer[k] = 0;
@@ -250,12 +235,12 @@ bool read_fixed(std::string_view line, const std::vector<Field>& format, Record&
     for (char c : field)
       if (blank(c) || c == ',') return false;
     if (f.integer) {
-      const auto v = parse_fortran_integer(field);
+      const auto v = fortran::read_integer(field);
       if (!v) return false;
       r.integer[k] = *v;
       r.real[k] = double(*v);
     } else {
-      const auto v = parse_fortran_real(field);
+      const auto v = fortran::read_real(field);
       if (!v) return false;
       r.real[k] = *v;
     }
@@ -276,7 +261,7 @@ Record read_record(Lines& lines, const std::vector<Field>& format) {
   std::string_view line = lines.next();
   r.line = lines.number();
   std::string_view tokens[16];
-  std::size_t n = tokens_of(line, tokens, 16);
+  std::size_t n = fortran::split_values(line, tokens, 16);
   if (n > want) {  // (fixed fields hold no blanks: as many values at most)
     DuctError e(DuctError::Problem::too_many_numbers, lines.number());
     e.expected = std::int64_t(want);
@@ -295,7 +280,7 @@ Record read_record(Lines& lines, const std::vector<Field>& format) {
       throw e;
     }
     line = lines.next();
-    n = tokens_of(line, tokens, 16);
+    n = fortran::split_values(line, tokens, 16);
     if (have + n > want) {
       DuctError e(DuctError::Problem::too_many_numbers, lines.number());
       e.expected = std::int64_t(want);
@@ -333,12 +318,12 @@ void require_lines(const Lines& lines, std::int64_t needed) {
 // An instruction line that holds a pixel instead: three or five numbers, not all integers.
 bool looks_like_pixel(std::string_view line) {
   std::string_view tokens[6];
-  const std::size_t n = tokens_of(line, tokens, 6);
+  const std::size_t n = fortran::split_values(line, tokens, 6);
   if (n != 3 && n != 5) return false;
   bool fraction = false;
   for (std::size_t k = 0; k < n; ++k) {
-    if (!parse_fortran_real(tokens[k])) return false;
-    fraction = fraction || !parse_fortran_integer(tokens[k]);
+    if (!fortran::read_real(tokens[k])) return false;
+    fraction = fraction || !fortran::read_integer(tokens[k]);
   }
   return fraction;
 }
@@ -485,7 +470,7 @@ DuctPicture read_duct(std::string_view text) {
       const std::string_view numbers = line.substr(0, std::min<std::size_t>(line.size(), 50));
       if (!read_fixed(numbers, text_format, n)) {
         std::string_view tokens[8];
-        const std::size_t count = tokens_of(numbers, tokens, 8);
+        const std::size_t count = fortran::split_values(numbers, tokens, 8);
         if (count > text_format.size()) {
           DuctError e(P::too_many_numbers, at);
           e.expected = std::int64_t(text_format.size());
@@ -1166,11 +1151,11 @@ class WrittenRecord {
  public:
   void integer(std::int64_t v, int width) {
     fields_.push_back({{}, width});
-    put_integer(fields_.back().text, v, 1);
+    fortran::put_i_whole(fields_.back().text, v, 1);
   }
   void fixed(double v, int width, int decimals) {
     fields_.push_back({{}, width});
-    put_fixed(fields_.back().text, v, 1, decimals);
+    fortran::put_f_whole(fields_.back().text, v, 1, decimals);
   }
   void write(std::string& out) const {
     bool fits = true;
@@ -1219,9 +1204,9 @@ void write_head(const DuctPicture& p, TextOut& out) {
   for (const auto& in : p.instructions) {
     char* w = out.room(2 * 22 + 1);
     *w++ = ' ';
-    w = put_integer(w, in.code(), 11);
+    w = fortran::put_i_whole(w, in.code(), 11);
     *w++ = ' ';
-    w = put_integer(w, std::int64_t(in.pixels), 6);
+    w = fortran::put_i_whole(w, std::int64_t(in.pixels), 6);
     *w++ = '\n';
     out.commit(w);
   }
@@ -1232,16 +1217,13 @@ void write_head(const DuctPicture& p, TextOut& out) {
 constexpr std::size_t pixel_line_most = 3 * 15 + 2 * 27 + 1;
 char* pixel_line(char* w, const double xyz[3], const double* tu) {
   for (int i = 0; i < 3; ++i) {
-    char number[48];
-    const std::size_t n = format_exponent(number, xyz[i], 7);
     *w++ = ' ';
-    for (std::size_t pad = n; pad < 14; ++pad) *w++ = ' ';
-    for (std::size_t c = 0; c < n; ++c) *w++ = number[c];
+    w = fortran::put_e_whole(w, xyz[i], 14, 7);
   }
   if (tu) {
     for (int i = 0; i < 2; ++i) {
       *w++ = ' ';
-      w = put_fixed(w, tu[i], 10, 4);
+      w = fortran::put_f_whole(w, tu[i], 10, 4);
     }
   }
   *w++ = '\n';

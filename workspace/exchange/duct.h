@@ -183,7 +183,7 @@ ConicShape conic_shape(Vec3 p0, Vec3 c, Vec3 p1, double w0, double w1, double w2
 // What the writer puts in the header and the counters besides the drawing.
 struct DuctHeader {
   std::string name;   // line 1: "IGDS PICTURE FILE <name> <date>"
-  std::string date;   // e.g. duct_date() of workspace/exchange/fields.h
+  std::string date;   // e.g. duct_date() of workspace/exchange/dates.h
   std::string title;  // line 2 (title and units); empty: no line 2
 };
 struct DuctView {

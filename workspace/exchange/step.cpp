@@ -7,11 +7,12 @@
 #include <string_view>
 #include <vector>
 
-#include "workspace/exchange/fields.h"
+#include "workspace/exchange/dates.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/large_array.h"
 #include "workspace/kernels/parallel.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds {
 
