@@ -39,12 +39,18 @@ inline constexpr char two_digits[] =
     "4748495051525354555657585960616263646566676869707172737475767778798081828384858687888990919293"
     "949596979899";
 
-// The decimal digits of v ending just before `end`; returns where they start.
+// The decimal digits of v ending just before `end`, two at a time; returns where they start.
 inline char* digits_before(char* end, std::uint64_t v) {
-  do {
-    *--end = static_cast<char>('0' + v % 10);
-    v /= 10;
-  } while (v != 0);
+  for (; v >= 100; v /= 100) {
+    end -= 2;
+    std::memcpy(end, two_digits + 2 * (v % 100), 2);
+  }
+  if (v < 10) {
+    *--end = static_cast<char>('0' + v);
+  } else {
+    end -= 2;
+    std::memcpy(end, two_digits + 2 * v, 2);
+  }
   return end;
 }
 

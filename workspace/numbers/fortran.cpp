@@ -85,9 +85,23 @@ bool scaled(double value, int decimals, std::uint64_t& q) {
   return true;
 }
 
-// "[-]ddd.ddd", q in units of 10^-decimals, ending at `end`; returns where it starts.
+// "[-]ddd.ddd", q in units of 10^-decimals (0 to 3), ending at `end`; returns where it starts.
 char* fixed_before(char* end, std::uint64_t q, int decimals, bool negative) {
-  for (int k = 0; k < decimals; ++k, q /= 10) *--end = static_cast<char>('0' + q % 10);
+  // The decimals by constant divisors, the last two from the table of pairs.
+  if (decimals == 3) {
+    const auto f = static_cast<unsigned>(q % 1000);
+    q /= 1000;
+    end -= 3;
+    end[0] = static_cast<char>('0' + f / 100);
+    std::memcpy(end + 1, two_digits + 2 * (f % 100), 2);
+  } else if (decimals == 2) {
+    end -= 2;
+    std::memcpy(end, two_digits + 2 * (q % 100), 2);
+    q /= 100;
+  } else if (decimals == 1) {
+    *--end = static_cast<char>('0' + q % 10);
+    q /= 10;
+  }
   *--end = '.';
   end = digits_before(end, q);
   if (negative) *--end = '-';
