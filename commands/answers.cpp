@@ -5,8 +5,8 @@
 #include <fmt/format.h>
 
 #include "commands/command.h"
-#include "workspace/apl.h"
 #include "workspace/disk/disk.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -18,7 +18,7 @@ constexpr Choice yes_no_words[] = {{"YES", yes}, {"NO", no}};
 }  // namespace
 
 std::optional<long long> parse_integer(std::string_view word, long long low, long long high) {
-  auto value = parse_apl_number(word);
+  auto value = parse_typed_number(word);
   if (!value || !std::isfinite(*value) || std::floor(*value) != *value) return std::nullopt;
   if (*value < static_cast<double>(low) || *value > static_cast<double>(high)) return std::nullopt;
   return static_cast<long long>(*value);

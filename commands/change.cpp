@@ -7,7 +7,7 @@
 #include "commands/entries.h"
 #include "commands/reports.h"
 #include "commands/surface.h"
-#include "workspace/apl.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -58,7 +58,7 @@ constexpr std::string_view answer_first = "ANSWER Y OR N FIRST (CTRL-C GIVES UP 
 
 // A reply to a Y/N question that is neither: a command typed too early says so.
 void refuse_command_word(const std::vector<std::string>& words) {
-  if (!parse_apl_number(words[0])) {
+  if (!parse_typed_number(words[0])) {
     std::string reason = command_word_reason(words[0], answer_first);
     if (!reason.empty()) throw EntryError(reason);
   }

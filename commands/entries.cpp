@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "commands/answers.h"
-#include "workspace/apl.h"
 #include "workspace/error.h"
 #include "workspace/kernels/marks.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -25,7 +25,7 @@ constexpr Choice auto_entry[] = {
 // The reason for an entry whose first word is not a number: a command typed too early, or the
 // form the entry must have.
 [[noreturn]] void refuse_form(std::span<const std::string> words, std::string_view form) {
-  if (!words.empty() && !parse_apl_number(words[0])) {
+  if (!words.empty() && !parse_typed_number(words[0])) {
     std::string reason = command_word_reason(words[0], finish_entries);
     if (!reason.empty()) throw EntryError(reason);
   }
@@ -39,7 +39,7 @@ void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* 
   if (words.size() < 4 || (words.size() - 1) % 3 != 0) refuse_form(words, point_form);
   auto k = parse_integer(words[0], 1, count);
   if (!k) {
-    if (!parse_apl_number(words[0])) refuse_form(words, point_form);
+    if (!parse_typed_number(words[0])) refuse_form(words, point_form);
     throw EntryError(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
   }
   const long long triplets = static_cast<long long>(words.size() - 1) / 3;
@@ -47,7 +47,7 @@ void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* 
   std::vector<double> values;
   values.reserve(words.size() - 1);
   for (std::size_t i = 1; i < words.size(); ++i) {
-    auto v = parse_apl_number(words[i]);
+    auto v = parse_typed_number(words[i]);
     if (!v) throw EntryError(fmt::format("{} IS NOT A NUMBER", words[i]));
     if (!std::isfinite(*v)) {
       long long point = *k + static_cast<long long>(i - 1) / 3;
@@ -92,13 +92,13 @@ void apply_tangent_entry(std::span<const std::string> words, int nocur, int nost
   const long long count = static_cast<long long>(nocur) * nostr;
   auto k = parse_integer(words[0], 1, count);
   if (!k) {
-    if (!parse_apl_number(words[0])) refuse_form(words, tangent_form);
+    if (!parse_typed_number(words[0])) refuse_form(words, tangent_form);
     throw EntryError(fmt::format("THE POINT NUMBER MUST BE 1 TO {}", count));
   }
   const int point = static_cast<int>(*k);
   std::array<double, 3> t{};
   for (std::size_t i = 0; i < 3; ++i) {
-    auto v = parse_apl_number(words[i + 1]);
+    auto v = parse_typed_number(words[i + 1]);
     if (!v) throw EntryError(fmt::format("{} IS NOT A NUMBER", words[i + 1]));
     if (!std::isfinite(*v))
       throw EntryError(fmt::format("THE TANGENT AT POINT {} IS NOT A FINITE NUMBER", point));

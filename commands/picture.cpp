@@ -13,7 +13,7 @@
 #include "commands/view.h"
 #include "devices/layout.h"
 #include "devices/render.h"
-#include "workspace/apl.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -302,7 +302,7 @@ std::string fitted(std::string_view text, std::size_t width) {
 }  // namespace
 
 std::string plain_number(double value) {
-  std::string apl = format_apl_number(value), out;
+  std::string apl = format_typed_number(value), out;
   for (std::size_t i = 0; i < apl.size(); ++i) {
     // U+00AF (APL high minus) is C2 AF in UTF-8.
     if (apl[i] == '\xC2' && i + 1 < apl.size() && apl[i + 1] == '\xAF') {
@@ -375,7 +375,7 @@ std::vector<std::string> describe(const Description& desim, std::size_t width) {
 
 std::string describe_line(const Description& d) {
   const auto& p = d.parameters;
-  auto number = [](double v) { return format_apl_number(v); };
+  auto number = [](double v) { return format_typed_number(v); };
   std::string projection(projection_word(d.projection));
   switch (d.projection) {
     case Projection::conic:

@@ -8,9 +8,9 @@
 
 #include "commands/answers.h"
 #include "commands/reports.h"
-#include "workspace/apl.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/project.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -48,7 +48,7 @@ const Prompt orthogonal_prompt{"PLANE XY, YZ OR XZ?", "The plane to project on: 
 std::vector<double> numbers(std::span<const std::string> words) {
   std::vector<double> values;
   for (const auto& w : words) {
-    auto v = parse_apl_number(w);
+    auto v = parse_typed_number(w);
     if (!v || !std::isfinite(*v)) throw ParameterError(fmt::format("{} IS NOT A NUMBER", w));
     values.push_back(*v);
   }

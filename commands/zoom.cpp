@@ -16,9 +16,9 @@
 #include "commands/picture.h"
 #include "devices/layout.h"
 #include "devices/render.h"
-#include "workspace/apl.h"
 #include "workspace/error.h"
 #include "workspace/images.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds {
 
@@ -59,7 +59,7 @@ Window corners(double ax, double ay, double bx, double by) {
 std::vector<double> numbers_of(const std::vector<std::string>& words) {
   std::vector<double> v;
   for (const auto& w : words) {
-    const auto n = parse_apl_number(w);
+    const auto n = parse_typed_number(w);
     if (!n || !std::isfinite(*n)) throw ParameterError(fmt::format("{} IS NOT A NUMBER", w));
     v.push_back(*n);
   }

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <algorithm>
-#include <charconv>
 #include <cstddef>
 #include <limits>
 #include <span>
@@ -59,32 +58,6 @@ struct PathList {
     for (std::size_t k = 1; k < more.starts.size(); ++k) starts.push_back(base + more.starts[k]);
   }
 };
-
-// "x,y" at `out` (at most 23 characters), as std::to_chars writes the two integers; returns the
-// end. The coordinates of a vector are most of a plot or an SVG document: the small ones, the
-// commonest, digit by digit without a library call.
-inline char* put_coordinate(char* out, int v) {
-  unsigned u = static_cast<unsigned>(v);
-  if (v < 0) {
-    *out++ = '-';
-    u = 0u - u;
-  }
-  if (u < 10) {
-    *out++ = static_cast<char>('0' + u);
-    return out;
-  }
-  if (u < 100) {
-    out[0] = static_cast<char>('0' + u / 10);
-    out[1] = static_cast<char>('0' + u % 10);
-    return out + 2;
-  }
-  return std::to_chars(out, out + 10, u).ptr;
-}
-inline char* put_pair(char* out, int x, int y) {
-  out = put_coordinate(out, x);
-  *out++ = ',';
-  return put_coordinate(out, y);
-}
 
 class Device {
  public:

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "workspace/numbers/decimal.h"
+
 namespace igds {
 
 namespace {

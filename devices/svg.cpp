@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "devices/layout.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds {
 

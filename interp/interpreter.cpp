@@ -13,7 +13,6 @@
 #include "interp/apl/keyboard.h"
 #include "interp/apl_env.h"
 #include "interp/words.h"
-#include "workspace/apl.h"
 #include "workspace/error.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/limits.h"

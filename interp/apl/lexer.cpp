@@ -1,10 +1,11 @@
 #include "interp/apl/lexer.h"
 
-#include <charconv>
+#include <cmath>
 #include <string_view>
 
 #include "interp/apl/error.h"
 #include "interp/apl/text.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds::apl {
 
@@ -30,62 +31,22 @@ bool number_starts(std::u32string_view line, std::size_t i) {
   return c == U'.' && i + 1 < line.size() && is_digit(line[i + 1]);
 }
 
-// One number at i (APL\360 User's Manual: `¯3.5`, `1E¯3`, `.5`, `1.5E3`); i moves past it.
-double scan_number(std::u32string_view line, std::size_t& i) {
+// One number at i (APL\360 User's Manual: `¯3.5`, `1E¯3`, `.5`, `1.5E3`); i moves past it. A
+// number beyond the largest double is a DOMAIN ERROR; one below the smallest is zero.
+double number_at(std::u32string_view line, std::size_t& i) {
   const std::size_t start = i;
-  std::string ascii;
-  auto digits = [&] {
-    std::size_t n = 0;
-    while (i < line.size() && is_digit(line[i])) {
-      ascii.push_back(static_cast<char>(line[i++]));
-      ++n;
-    }
-    return n;
-  };
-  if (line[i] == U'¯') {
-    ascii.push_back('-');
-    ++i;
-  }
-  std::size_t mantissa = digits();
-  if (i < line.size() && line[i] == U'.') {
-    ascii.push_back('.');
-    ++i;
-    mantissa += digits();
-  }
-  if (mantissa == 0) syntax_at(start);
-  bool negative_exponent = false;
-  if (i < line.size() && (line[i] == U'E' || line[i] == U'e')) {
-    std::size_t mark = i;
-    std::string saved = ascii;
-    ascii.push_back('E');
-    ++i;
-    if (i < line.size() && line[i] == U'¯') {
-      ascii.push_back('-');
-      negative_exponent = true;
-      ++i;
-    }
-    if (digits() == 0) {  // not an exponent after all: the E is rejected just below
-      i = mark;
-      ascii = saved;
-      negative_exponent = false;
-    }
-  }
+  const ScannedNumber n = igds::scan_number(line.substr(i), NumberSigns::apl);
+  if (n.length == 0) syntax_at(start);
+  i += n.length;
   // A number runs into nothing: `1.2.3`, `3A`, `2E` and `1¯2` are malformed.
   if (i < line.size() && (is_name_char(line[i]) || line[i] == U'.' || line[i] == U'¯'))
     syntax_at(start);
-  double value = 0;
-  auto [end, ec] = std::from_chars(ascii.data(), ascii.data() + ascii.size(), value);
-  if (ec == std::errc::result_out_of_range) {
-    if (!negative_exponent) {
-      Error e(ErrorKind::domain);
-      e.set_column(start);
-      throw e;
-    }
-    value = 0;
-  } else if (ec != std::errc() || end != ascii.data() + ascii.size()) {
-    syntax_at(start);
+  if (std::isinf(n.value)) {
+    Error e(ErrorKind::domain);
+    e.set_column(start);
+    throw e;
   }
-  return value;
+  return n.value;
 }
 
 Token simple(TokenKind kind, std::size_t column, char32_t glyph = 0) {
@@ -153,7 +114,7 @@ std::vector<Token> tokenize(std::u32string_view line) {
     } else if (number_starts(line, i)) {
       Numbers values;
       while (true) {
-        values.push_back(scan_number(line, i));
+        values.push_back(number_at(line, i));
         std::size_t j = i;
         while (j < line.size() && (line[j] == U' ' || line[j] == U'\t')) ++j;
         if (!number_starts(line, j)) break;

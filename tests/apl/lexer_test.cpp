@@ -39,6 +39,17 @@ TEST_CASE("numbers side by side are one constant vector") {
   CHECK(numbers_of(tokenize(U"1e¯2")[0]) == std::vector<double>{0.01});
 }
 
+TEST_CASE("numbers beyond double: DOMAIN ERROR above the largest, zero below the smallest") {
+  const std::u32string many_digits(400, U'9');
+  CHECK(failure(U"1E400") == std::pair{ErrorKind::domain, std::size_t{0}});
+  CHECK(failure(U"2+¯1E309") == std::pair{ErrorKind::domain, std::size_t{2}});
+  CHECK(failure(many_digits).first == ErrorKind::domain);
+  CHECK(numbers_of(tokenize(U"1E¯400 ¯1E¯400 4.9E¯324")[0]) == std::vector<double>{0, 0, 4.9e-324});
+  CHECK(numbers_of(tokenize(U"0." + std::u32string(400, U'0') + U"1")[0]) ==
+        std::vector<double>{0});
+  CHECK(numbers_of(tokenize(many_digits + U"E¯399")[0])[0] == doctest::Approx(10));
+}
+
 TEST_CASE("minus is the function, high minus the sign") {
   auto t = tokenize(U"-3");
   REQUIRE(t.size() == 2);

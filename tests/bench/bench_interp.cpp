@@ -16,7 +16,7 @@
 
 #include "interp/words.h"
 #include "tests/bench/bench.h"
-#include "workspace/apl.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds::bench {
 
@@ -86,7 +86,7 @@ void read_points() {
   const double best = best_seconds(7, [&] {
     for (int r = 0; r < lines; ++r) {
       const auto words = split_words(line);
-      for (const auto& w : words) sum += parse_apl_number(w).value_or(0);
+      for (const auto& w : words) sum += parse_typed_number(w).value_or(0);
     }
   });
   fmt::print("read_points_mb_s {:.0f}\n", double(line.size()) * lines / best / 1e6);

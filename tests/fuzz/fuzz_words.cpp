@@ -1,7 +1,7 @@
-// libFuzzer target of the line parser and the number reader (interp/words.h, workspace/apl.h):
-// any line is split into words, each word read as an APL number and looked up as a command and
-// as a choice of the projections; nothing may crash, and a number read is what its text says
-// once written back and read again. Seeds: tests/fuzz/corpus/words.
+// libFuzzer target of the line parser and the number reader (interp/words.h,
+// workspace/numbers/typed.h): any line is split into words, each word read as an APL number and
+// looked up as a command and as a choice of the projections; nothing may crash, and a number read
+// is what its text says once written back and read again. Seeds: tests/fuzz/corpus/words.
 //   scripts/fuzz 300 words
 #include <cmath>
 #include <cstddef>
@@ -12,7 +12,7 @@
 #include "commands/command.h"
 #include "commands/view.h"
 #include "interp/words.h"
-#include "workspace/apl.h"
+#include "workspace/numbers/typed.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
@@ -23,9 +23,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)find_command(word);
     (void)choose(projection_choices(), word);
     (void)upper(word);
-    if (auto v = parse_apl_number(word); v && std::isfinite(*v)) {
+    if (auto v = parse_typed_number(word); v && std::isfinite(*v)) {
       // What APL prints reads back within its ten digits.
-      const auto again = parse_apl_number(format_apl_number(*v));
+      const auto again = parse_typed_number(format_typed_number(*v));
       if (!again || std::abs(*again - *v) > 1e-9 * std::max(1.0, std::abs(*v))) std::abort();
     }
   }

@@ -11,7 +11,7 @@
 #include <limits>
 #include <string>
 
-#include "workspace/apl.h"
+#include "workspace/numbers/typed.h"
 
 namespace igds::test {
 
@@ -44,49 +44,49 @@ TEST_CASE("capitals") {
 }
 
 TEST_CASE("APL numbers as typed") {
-  CHECK(parse_apl_number("12") == 12);
-  CHECK(parse_apl_number("¯3.5") == -3.5);
-  CHECK(parse_apl_number("-3.5") == -3.5);
-  CHECK(parse_apl_number("1E3") == 1000);
-  CHECK(parse_apl_number("2.5E¯2") == 0.025);
-  CHECK(parse_apl_number("2.5e-2") == 0.025);
-  CHECK(parse_apl_number("-1.5E+03") == -1500);
-  CHECK(parse_apl_number(".5") == 0.5);
-  CHECK_FALSE(parse_apl_number("1E"));
-  CHECK_FALSE(parse_apl_number("3x"));
-  CHECK_FALSE(parse_apl_number("¯"));
-  CHECK_FALSE(parse_apl_number(""));
-  CHECK(format_apl_number(-3.5) == "¯3.5");
-  CHECK(format_apl_number(110) == "110");
+  CHECK(parse_typed_number("12") == 12);
+  CHECK(parse_typed_number("¯3.5") == -3.5);
+  CHECK(parse_typed_number("-3.5") == -3.5);
+  CHECK(parse_typed_number("1E3") == 1000);
+  CHECK(parse_typed_number("2.5E¯2") == 0.025);
+  CHECK(parse_typed_number("2.5e-2") == 0.025);
+  CHECK(parse_typed_number("-1.5E+03") == -1500);
+  CHECK(parse_typed_number(".5") == 0.5);
+  CHECK_FALSE(parse_typed_number("1E"));
+  CHECK_FALSE(parse_typed_number("3x"));
+  CHECK_FALSE(parse_typed_number("¯"));
+  CHECK_FALSE(parse_typed_number(""));
+  CHECK(format_typed_number(-3.5) == "¯3.5");
+  CHECK(format_typed_number(110) == "110");
 }
 
 TEST_CASE("APL numbers: the value strtod gives the same text, at the edges of double too") {
-  CHECK(parse_apl_number("+2.5") == 2.5);
-  CHECK(parse_apl_number("2.") == 2);
-  CHECK(parse_apl_number("1E+2") == 100);
-  CHECK_FALSE(parse_apl_number("+-2"));
-  CHECK_FALSE(parse_apl_number("¯¯2"));
-  CHECK_FALSE(parse_apl_number("1E¯+2"));
-  CHECK_FALSE(parse_apl_number("."));
-  CHECK_FALSE(parse_apl_number("1.2.3"));
-  CHECK_FALSE(parse_apl_number("INF"));
+  CHECK(parse_typed_number("+2.5") == 2.5);
+  CHECK(parse_typed_number("2.") == 2);
+  CHECK(parse_typed_number("1E+2") == 100);
+  CHECK_FALSE(parse_typed_number("+-2"));
+  CHECK_FALSE(parse_typed_number("¯¯2"));
+  CHECK_FALSE(parse_typed_number("1E¯+2"));
+  CHECK_FALSE(parse_typed_number("."));
+  CHECK_FALSE(parse_typed_number("1.2.3"));
+  CHECK_FALSE(parse_typed_number("INF"));
   // Overflow is an infinity (refused by the commands with the point number), underflow zero or a
   // subnormal number, as strtod gives them.
-  CHECK(parse_apl_number("1E400") == std::numeric_limits<double>::infinity());
-  CHECK(parse_apl_number("¯1E400") == -std::numeric_limits<double>::infinity());
-  CHECK(parse_apl_number("1E¯400") == 0);
-  CHECK(parse_apl_number("4.9E¯324") == std::strtod("4.9E-324", nullptr));
-  CHECK(parse_apl_number("2.2250738585072011E¯308") ==
+  CHECK(parse_typed_number("1E400") == std::numeric_limits<double>::infinity());
+  CHECK(parse_typed_number("¯1E400") == -std::numeric_limits<double>::infinity());
+  CHECK(parse_typed_number("1E¯400") == 0);
+  CHECK(parse_typed_number("4.9E¯324") == std::strtod("4.9E-324", nullptr));
+  CHECK(parse_typed_number("2.2250738585072011E¯308") ==
         std::strtod("2.2250738585072011E-308", nullptr));
   // A word longer than any buffer: every digit counts.
   const std::string digits = "0." + std::string(200, '0') + "15";
-  CHECK(parse_apl_number(digits) == 1.5E-201);
-  CHECK(parse_apl_number(std::string(100, '9')) ==
+  CHECK(parse_typed_number(digits) == 1.5E-201);
+  CHECK(parse_typed_number(std::string(100, '9')) ==
         std::strtod(std::string(100, '9').c_str(), nullptr));
   // Correct rounding on halfway cases: the nearest double, as strtod.
   for (const char* text : {"9007199254740993", "0.1", "2.675", "1.7976931348623157E308",
                            "123456789012345678901234567890", "3.14159265358979323846"})
-    CHECK(parse_apl_number(text) == std::strtod(text, nullptr));
+    CHECK(parse_typed_number(text) == std::strtod(text, nullptr));
 }
 
 TEST_CASE("APL numbers: the quick way for short numbers gives strtod's double, bit for bit") {
@@ -120,20 +120,20 @@ TEST_CASE("APL numbers: the quick way for short numbers gives strtod's double, b
       apl +=
           fmt::format("{}{}{}", next(2) ? "e" : "E", exponent < 0 ? "¯" : "", std::abs(exponent));
     }
-    const auto v = parse_apl_number(apl);
+    const auto v = parse_typed_number(apl);
     REQUIRE_MESSAGE(v, apl);
     const double expected = std::strtod(c.c_str(), nullptr);
     CHECK_MESSAGE(same_bits(*v, expected), apl, " ", c);
     ++checked;
   }
   CHECK(checked == 20000);
-  CHECK(same_bits(*parse_apl_number("¯0"), -0.0));
-  CHECK(same_bits(*parse_apl_number("-0.000"), -0.0));
-  CHECK(same_bits(*parse_apl_number("9007199254740992"), 9007199254740992.0));
-  CHECK(same_bits(*parse_apl_number("9007199254740993"), 9007199254740992.0));
-  CHECK(same_bits(*parse_apl_number("1E22"), 1e22));
-  CHECK(same_bits(*parse_apl_number("1E23"), std::strtod("1E23", nullptr)));
-  CHECK(same_bits(*parse_apl_number("123456789E¯22"), std::strtod("123456789E-22", nullptr)));
+  CHECK(same_bits(*parse_typed_number("¯0"), -0.0));
+  CHECK(same_bits(*parse_typed_number("-0.000"), -0.0));
+  CHECK(same_bits(*parse_typed_number("9007199254740992"), 9007199254740992.0));
+  CHECK(same_bits(*parse_typed_number("9007199254740993"), 9007199254740992.0));
+  CHECK(same_bits(*parse_typed_number("1E22"), 1e22));
+  CHECK(same_bits(*parse_typed_number("1E23"), std::strtod("1E23", nullptr)));
+  CHECK(same_bits(*parse_typed_number("123456789E¯22"), std::strtod("123456789E-22", nullptr)));
 }
 
 TEST_CASE("a line of many points: every word, in order") {

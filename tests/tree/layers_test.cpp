@@ -1,7 +1,9 @@
 // The tree: each layer includes nothing of a layer above it (interp -> commands -> devices ->
-// workspace; workspace/kernels -> nothing of igds), and every source file of a layer is built.
+// workspace; workspace/kernels and workspace/numbers -> nothing of igds), the libraries of their
+// own include only what they are linked with, and every source file of a layer is built.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <regex>
@@ -16,7 +18,7 @@ namespace {
 
 // The layers, lowest first, and what each may include besides itself and the layers below.
 int rank(const std::string& path) {
-  if (path.starts_with("workspace/kernels/")) return 0;
+  if (path.starts_with("workspace/kernels/") || path.starts_with("workspace/numbers/")) return 0;
   if (path.starts_with("workspace/")) return 1;
   if (path.starts_with("devices/")) return 2;
   if (path.starts_with("commands/")) return 3;
@@ -34,17 +36,24 @@ std::vector<std::string> sources() {
   return out;
 }
 
+// The igds headers a file includes.
+std::vector<std::string> includes_of(const std::string& file) {
+  static const std::regex include(R"re(#include "([^"]+)")re");
+  const std::string text = read_file(source_dir() / file);
+  std::vector<std::string> out;
+  for (std::sregex_iterator it(text.begin(), text.end(), include), end; it != end; ++it)
+    out.push_back((*it)[1]);
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("no layer includes a layer above it") {
-  const std::regex include(R"re(#include "([^"]+)")re");
   int checked = 0;
   for (const auto& file : sources()) {
     const int own = rank(file);
     REQUIRE(own >= 0);
-    const std::string text = read_file(source_dir() / file);
-    for (std::sregex_iterator it(text.begin(), text.end(), include), end; it != end; ++it) {
-      const std::string target = (*it)[1];
+    for (const std::string& target : includes_of(file)) {
       const int other = rank(target);
       if (other < 0) continue;  // generated headers
       CAPTURE(file);
@@ -54,6 +63,29 @@ TEST_CASE("no layer includes a layer above it") {
     }
   }
   CHECK(checked > 100);
+}
+
+TEST_CASE("the libraries of their own include only what they are linked with (CMakeLists.txt)") {
+  // igds_kernels and igds_numbers nothing of igds, not even each other; igds_apl (END APL's
+  // language) only those two.
+  const std::map<std::string, std::vector<std::string>> alone = {
+      {"workspace/kernels/", {"workspace/kernels/"}},
+      {"workspace/numbers/", {"workspace/numbers/"}},
+      {"interp/apl/", {"interp/apl/", "workspace/kernels/", "workspace/numbers/"}}};
+  int checked = 0;
+  for (const auto& file : sources()) {
+    for (const auto& [folder, allowed] : alone) {
+      if (!file.starts_with(folder)) continue;
+      for (const std::string& target : includes_of(file)) {
+        CAPTURE(file);
+        CAPTURE(target);
+        CHECK(std::any_of(allowed.begin(), allowed.end(),
+                          [&](const std::string& f) { return target.starts_with(f); }));
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked > 50);
 }
 
 TEST_CASE("every source file is listed in CMakeLists.txt, and every listed file exists") {

@@ -1,4 +1,4 @@
-// WRITE: the IGDSCHAR card images of spec igds.md section 5, byte for byte.
+// WRITE: the IGDSCHAR card images of docs/disk.md, byte for byte.
 #include <doctest/doctest.h>
 
 #include <bit>
@@ -14,14 +14,24 @@
 #include "workspace/disk/disk.h"
 #include "workspace/disk/files.h"
 #include "workspace/error.h"
+#include "workspace/numbers/fortran.h"
 
 using namespace igds;
 
 namespace {
 
-std::string f(double v) {
-  bool fits = true;
-  return disk::format_f10_3(v, &fits);
+// A value in WRITE's F10.3, and whether it fits.
+std::string f(double v, bool* fits = nullptr) {
+  char field[10];
+  const bool written = fortran::put_f(field, v, 10, 3);
+  if (fits) *fits = written;
+  return std::string(field, 10);
+}
+
+std::string i5(long long v) {
+  char field[5];
+  fortran::put_i(field, v, 5);
+  return std::string(field, 5);
 }
 
 Array array_of(std::vector<std::size_t> shape, std::vector<double> values) {
@@ -95,13 +105,13 @@ TEST_CASE("F10.3 as FORTRAN writes it") {
   CHECK(f(-INFINITY) == " -Infinity");
   for (double big : {999999.9996, 1e6, -99999.9996, -1e5, 1e300, -1e300}) {
     bool fits = true;
-    CHECK(disk::format_f10_3(big, &fits) == "**********");
+    CHECK(f(big, &fits) == "**********");
     CHECK(!fits);
   }
-  CHECK(disk::format_i(12, 5) == "   12");
-  CHECK(disk::format_i(-1234, 5) == "-1234");
-  CHECK(disk::format_i(123456, 5) == "*****");
-  CHECK(disk::format_i(-12345, 5) == "*****");
+  CHECK(i5(12) == "   12");
+  CHECK(i5(-1234) == "-1234");
+  CHECK(i5(123456) == "*****");
+  CHECK(i5(-12345) == "*****");
 }
 
 TEST_CASE("WRITE: the card images of a small surface, checked by hand") {

@@ -1,9 +1,10 @@
 // The drawing model (workspace/drawing/): items, shared points, the projection of a drawing in
-// space, and the flattening of curves.
+// space, the flattening of curves and their exact extents.
 #include "workspace/drawing/drawing.h"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -151,6 +152,74 @@ TEST_CASE("flattening keeps within the tolerance, with as many points as the cur
   std::vector<Point2> straight;
   flatten_span(3, std::vector<Point2>{{0, 0}, {1, 0}, {2, 0}, {3, 0}}, {}, 0.5, straight);
   CHECK(straight == std::vector<Point2>{{0, 0}, {3, 0}});
+}
+
+TEST_CASE(
+    "flattening in space: a rational cubic within the tolerance, the same points as in the plane") {
+  // A rational cubic in the plane z = 2: its flattening in space is the plane's, at z = 2.
+  const std::vector<Point2> flat = {{0, 0}, {1, 3}, {4, 3}, {5, 0}};
+  const std::vector<Vec3> space = {{0, 0, 2}, {1, 3, 2}, {4, 3, 2}, {5, 0, 2}};
+  const std::vector<double> w = {1, 3, 0.5, 2};
+  for (double tol : {0.1, 0.001}) {
+    std::vector<Point2> in_plane;
+    std::vector<Vec3> in_space{space[0]};
+    flatten_span(3, flat, w, tol, in_plane);
+    flatten_span(3, space, w, tol, in_space);
+    REQUIRE(in_space.size() == in_plane.size());
+    for (std::size_t k = 0; k < in_plane.size(); ++k) {
+      CHECK(in_space[k].x == doctest::Approx(in_plane[k].x).epsilon(1e-12));
+      CHECK(in_space[k].y == doctest::Approx(in_plane[k].y).epsilon(1e-12));
+      CHECK(in_space[k].z == doctest::Approx(2).epsilon(1e-12));
+    }
+    // Every point is on the curve: the parameter found by bisection on x, y within 1e-9.
+    for (Vec3 p : in_space) {
+      double lo = 0, hi = 1;
+      for (int i = 0; i < 200; ++i) {
+        const double mid = (lo + hi) / 2;
+        (rational_point(flat, w, mid).x < p.x ? lo : hi) = mid;
+      }
+      CHECK(std::abs(rational_point(flat, w, lo).y - p.y) < 1e-9);
+    }
+    CHECK(in_space.size() > (tol < 0.01 ? 20u : 4u));
+  }
+  // Controls that are not finite: the last control, nothing in between.
+  std::vector<Vec3> out;
+  flatten_span(3, std::vector<Vec3>{{0, 0, 0}, {INFINITY, 0, 0}, {1, 1, 1}, {2, 0, 0}}, {}, 0.1,
+               out);
+  CHECK(out == std::vector<Vec3>{{0, 0, 0}, {2, 0, 0}});
+}
+
+TEST_CASE("the extremes of a span are where its coordinates turn: the span's own box") {
+  // A cubic whose x turns twice inside (controls 0, 3, -2, 1): its box is the curve's, tighter
+  // than the controls'.
+  const std::vector<Vec3> cubic = {{0, 0, 0}, {3, 1, 0}, {-2, 2, 0}, {1, 3, 0}};
+  Vec3 extremes[6];
+  const std::size_t n = span_extremes(3, cubic, {}, extremes);
+  REQUIRE(n == 2);  // x turns twice, y and z never
+  // Sampled densely, the curve's x stays within the extremes' and the ends' x, and reaches them.
+  double lo = 0, hi = 1;
+  for (std::size_t k = 0; k < n; ++k)
+    lo = std::min(lo, extremes[k].x), hi = std::max(hi, extremes[k].x);
+  double seen_lo = 1e9, seen_hi = -1e9;
+  for (int i = 0; i <= 100000; ++i) {
+    const double t = i / 100000.0, s = 1 - t;
+    const double x = s * s * s * 0 + 3 * s * s * t * 3 + 3 * s * t * t * -2 + t * t * t * 1;
+    seen_lo = std::min(seen_lo, x), seen_hi = std::max(seen_hi, x);
+  }
+  CHECK(lo == doctest::Approx(seen_lo).epsilon(1e-9));
+  CHECK(hi == doctest::Approx(seen_hi).epsilon(1e-9));
+  CHECK(hi < 3);
+  CHECK(lo > -2);
+  // A quarter circle (weights 1, √2/2, 1) from (1, 0) to (0, 1): no coordinate turns inside.
+  const std::vector<Vec3> quarter = {{1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  const std::vector<double> w = {1, std::sqrt(0.5), 1};
+  CHECK(span_extremes(2, quarter, w, extremes) == 0);
+  // An arch (-1, 0), (0, 2), (1, 0) of middle weight 1/2: y turns once, at its middle, at 2/3.
+  const std::vector<Vec3> arch = {{-1, 0, 0}, {0, 2, 0}, {1, 0, 0}};
+  const std::vector<double> half = {1, 0.5, 1};
+  REQUIRE(span_extremes(2, arch, half, extremes) == 1);
+  CHECK(extremes[0].x == doctest::Approx(0).scale(1));
+  CHECK(extremes[0].y == doctest::Approx(2.0 / 3));
 }
 
 }  // namespace igds::test

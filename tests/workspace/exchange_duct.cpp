@@ -12,7 +12,7 @@
 
 #include "tests/workspace/exchange_support.h"
 #include "workspace/drawing/project.h"
-#include "workspace/exchange/fields.h"
+#include "workspace/exchange/dates.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/text_out.h"
@@ -137,48 +137,9 @@ TEST_CASE("instruction codes decompose into their six parts and back") {
     CHECK_FALSE(decompose_duct_code(bad));
 }
 
-TEST_CASE("FORTRAN fields: widths, exponents, overflow, and the numbers readers accept") {
-  std::string s;
-  put_exponent(s, 12.5, 14, 7);
-  put_exponent(s, -0.001234567, 14, 7);
-  put_exponent(s, 0, 14, 7);
-  put_exponent(s, -0.0, 14, 7);
-  put_exponent(s, 1e100, 14, 7);
-  put_exponent(s, -2.5e-200, 14, 7);
-  put_exponent(s, 9.99999996, 14, 7);
-  CHECK(s ==
-        " 0.1250000E+02-0.1234567E-02 0.0000000E+00 0.0000000E+00 0.1000000+101-0.2500000-199"
-        " 0.1000000E+02");
-  s.clear();
-  put_fixed(s, -2.07107, 10, 4);
-  put_fixed(s, 123456.75, 10, 4);  // too wide: in full after a blank
-  put_fixed(s, -0.00001, 10, 4);
-  put_integer(s, -12345, 6);
-  put_integer(s, 1234567, 6);
-  CHECK(s == "   -2.0711 123456.7500   -0.0000-12345 1234567");
-  s.clear();
-  for (double v : {1.0, 0.1, 1e20, -2.5e-7, 0.0, -0.0, 123.456, 1e-300}) (put_real(s, v), s += ' ');
-  CHECK(s == "1. 0.1 1.E20 -2.5E-7 0. 0. 123.456 1.E-300 ");
-
-  for (const auto& [token, value] :
-       std::vector<std::pair<const char*, double>>{{"0.1250000E+02", 12.5},
-                                                   {"0.1D+02", 10},
-                                                   {"0.1d-02", 0.001},
-                                                   {"0.1000000+101", 1e100},
-                                                   {"0.25-3", 0.00025},
-                                                   {"+.5", 0.5},
-                                                   {"5.", 5},
-                                                   {"-7", -7},
-                                                   {"1E5", 1e5}})
-    CHECK(parse_fortran_real(token) == value);
-  for (const char* bad : {"", "1e", "e5", "1.2.3", "nan", "inf", "--1", "+-1", "1e999", "0x10",
-                          "1 2", "1,2", ".", "-", "1E+", "12a"})
-    CHECK_FALSE(parse_fortran_real(bad));
-  CHECK(parse_fortran_integer("+42") == 42);
-  CHECK(parse_fortran_integer("-2048") == -2048);
-  for (const char* bad : {"", "+", "-", "4.0", "1e3", "99999999999999999999", "+-3", "12 "})
-    CHECK_FALSE(parse_fortran_integer(bad));
+TEST_CASE("the dates of the exchange files") {
   CHECK(duct_date({1987, 9, 22, 9, 55, 50}) == "22 SEP 1987 09:55:50");
+  CHECK(duct_date({1987, 13, 22, 9, 55, 50}) == "22 ??? 1987 09:55:50");
   CHECK(iges_date({1987, 9, 22, 9, 55, 50}) == "19870922.095550");
   CHECK(iso_date({1987, 9, 22, 9, 55, 50}) == "1987-09-22T09:55:50");
 }

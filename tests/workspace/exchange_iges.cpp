@@ -16,6 +16,7 @@
 #include "workspace/exchange/step.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds::test::exchange {
 

@@ -1,5 +1,6 @@
 // Marks's files (workspace/exchange/): the fitting deck NAME.CADADATA, the listing NAME.CADALIST
-// and the MPDP paper tape NAME.MPDPTAPE, checked against spec marks.md field by field.
+// and the MPDP paper tape NAME.MPDPTAPE, checked against docs/marks.md field by field (the
+// FORTRAN fields themselves: tests/numbers/fortran.cpp).
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -9,11 +10,11 @@
 
 #include <fmt/format.h>
 
-#include "workspace/exchange/fortran_fields.h"
 #include "workspace/exchange/marks_deck.h"
 #include "workspace/exchange/marks_listing.h"
 #include "workspace/exchange/mpdp_tape.h"
 #include "workspace/kernels/marks.h"
+#include "workspace/numbers/fortran.h"
 
 using namespace igds;
 using namespace igds::exchange;
@@ -86,45 +87,6 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 }  // namespace
-
-TEST_CASE("FORTRAN input fields: blanks, implied decimal point, exponents") {
-  CHECK(read_i("   7  12", 0, 4) == 7);
-  CHECK(read_i("   7  12", 4, 4) == 12);
-  CHECK(read_i("  -3", 0, 4) == -3);
-  CHECK(read_i("", 0, 4) == 0);       // a short card is padded with blanks
-  CHECK(read_i("1 2 ", 0, 4) == 12);  // blanks ignored (BLANK='NULL')
-  CHECK_FALSE(read_i("  1.", 0, 4));
-  CHECK_FALSE(read_i("   -", 0, 4));
-  CHECK(read_f("   12.5", 0, 7, 1) == 12.5);
-  CHECK(read_f("    125", 0, 7, 1) == 12.5);  // no point: the last digit is the fraction
-  CHECK(read_f("      5", 0, 7, 1) == 0.5);
-  CHECK(read_f("     -5", 0, 7, 1) == -0.5);
-  CHECK(read_f("    1. ", 0, 7, 1) == 1.0);
-  CHECK(read_f("  1.5E2", 0, 7, 1) == 150.0);
-  CHECK(read_f("  1.5+2", 0, 7, 1) == 150.0);
-  CHECK(read_f(" 25D-1 ", 0, 7, 1) == 0.25);  // 2.5 x 10^-1
-  CHECK(read_f("  1.", 0, 4, 0) == 1.0);
-  CHECK(read_f("   3", 0, 4, 0) == 3.0);
-  CHECK(read_f("       ", 0, 7, 1) == 0.0);
-  CHECK(read_f("xx", 5, 7, 1) == 0.0);  // past the card's end
-  CHECK(read_f("1234567890", 7, 7, 1) == 89.0);
-  for (const char* bad : {"  1.2.3", "    abc", "      +", "      .", "  1E999", "  1.5E ",
-                          "  1\t5  ", "  1-2-3", " 1.5E+ "}) {
-    CAPTURE(bad);
-    CHECK_FALSE(read_f(bad, 0, 7, 1));
-  }
-}
-
-TEST_CASE("FORTRAN output fields as gfortran writes them") {
-  CHECK(format_f(1, 4, 0) == "  1.");
-  CHECK(format_f(15, 4, 0) == " 15.");
-  CHECK(format_f(12.25, 7, 1) == "   12.2");  // the exact binary value, halves to even
-  CHECK(format_f(-0.04, 7, 1) == "   -0.0");
-  CHECK(format_f(0.5, 7, 1) == "    0.5");
-  CHECK(format_f(-99999.9, 7, 1) == "*******");
-  CHECK(format_f(999999.9, 10, 1) == "  999999.9");
-  CHECK(format_f(std::nan(""), 7, 1) == "*******");
-}
 
 TEST_CASE("a deck is read: sizes, keys, positions and given vectors") {
   DeckText d = wavy_deck(3, 4);
@@ -324,7 +286,7 @@ TEST_CASE("the listing of a small surface, field by field") {
       for (int k = 0; k < 3; ++k) {
         for (int c = 0; c < 4; ++c) {
           const std::size_t width = k > 0 && c == 0 ? 10 : 7;
-          const auto value = read_f(line, column, width, 0);
+          const auto value = fortran::read_f(line, column, width, 0);
           REQUIRE(value);
           CHECK(*value ==
                 doctest::Approx(fit.patches.ravel[48 * p + 16 * k + 4 * r + c]).epsilon(0.05 / 20));
@@ -338,6 +300,12 @@ TEST_CASE("the listing of a small surface, field by field") {
   as_vec3(wide.points)[0] = Vec3{-123456.0, 0, 0};
   cada_listing(wide, fit_deck(wide), &overflow);
   CHECK(overflow > 0);
+  // A value that is not finite is asterisks too (gfortran would write NaN), and counted.
+  MarksFit odd = fit;
+  as_vec3(odd.twists)[0] = Vec3{std::nan(""), 0, INFINITY};
+  const auto odd_lines = lines_of(cada_listing(deck, odd, &overflow));
+  CHECK(odd_lines[0].substr(73) == "**********    0.0*******");
+  CHECK(overflow == 2);
 }
 
 TEST_CASE("the tape: frames of one number, the end mark") {

@@ -1,5 +1,6 @@
-// The IGDSCHAR card format (spec igds.md section 5): FORTRAN I5 and F10.3 fields, written the
-// way gfortran writes them, so that a FORTRAN READ with the same formats gets the values back.
+// The IGDSCHAR card format of WRITE (docs/disk.md): FORTRAN I5 and F10.3 fields
+// (workspace/numbers/fortran.h), written the way gfortran writes them, so that a FORTRAN READ
+// with the same formats gets the values back.
 #pragma once
 
 #include <array>
@@ -10,20 +11,6 @@
 #include "workspace/state.h"
 
 namespace igds::disk {
-
-// Iw: right-aligned in `width` columns; w asterisks when the number does not fit.
-std::string format_i(long long value, int width);
-
-// F10.3: the exact binary value rounded to 3 decimals, halves to even (as gfortran does), a
-// minus sign on negative values that round to zero, right-aligned in 10 columns; ten asterisks
-// when it does not fit (sets *fits = false). NaN and infinities as gfortran: "NaN",
-// "Infinity", "-Infinity".
-std::string format_f10_3(double value, bool* fits);
-
-// The same fields written at `out`: exactly `width` (put_i) or 10 (put_f10_3) characters, by
-// integer arithmetic. They return false, having written asterisks, when the number does not fit.
-bool put_i(char* out, long long value, int width);
-bool put_f10_3(char* out, double value);
 
 // The IGDSCHAR text of `ws`, cards ended by LF, made piece by piece as WRITE writes the file:
 // `ws` must stay unchanged until the last piece is made.

@@ -1,7 +1,8 @@
-// DUCT 4.4 picture files (spec duct.md): read into a DuctPicture, turned into a drawing in space,
-// and written from any drawing. The reader is total: whatever the bytes, it returns a picture
-// whose counts all agree or throws DuctError naming the line and what is wrong, in time and
-// memory proportional to the file.
+// DUCT 4.4 picture files (docs/exchange.md, "DUCT 4.4 picture files"): read into a DuctPicture
+// (duct_read.cpp), turned into a drawing in space (duct_drawing.cpp), laid out from any drawing
+// (duct_layout.cpp) and written (duct_write.cpp). The reader is total: whatever the bytes, it
+// returns a picture whose counts all agree or throws DuctError naming the line and what is wrong,
+// in time and memory proportional to the file.
 #pragma once
 
 #include <array>
@@ -27,7 +28,7 @@ inline constexpr std::size_t duct_max_pixels = 4'000'000;
 // their fields, with TU parameters (88 bytes for the two lines), and room for texts.
 inline constexpr std::size_t duct_max_file_bytes = 400u << 20;
 
-// The parts of an instruction code (duct.md, "Instruction code"), each with its value in the code.
+// The parts of an instruction code (docs/exchange.md, "The file"), each with its value in the code.
 enum class DuctArc : std::uint16_t { line = 0, conic = 512, bezier = 1024 };  // IARC
 enum class DuctMark : std::uint16_t {                                         // IMARK
   none = 0,
@@ -133,9 +134,9 @@ struct DuctError : std::exception {
   mutable std::string text_;
 };
 
-// Reads a picture (duct.md): fields as FORTRAN list-directed readers take them (blanks or
-// commas between numbers, a record continued on the next line when it is short, blank lines
-// skipped) or packed in their fixed columns. Throws DuctError.
+// Reads a picture (docs/exchange.md, "Reading"): fields as FORTRAN list-directed readers take
+// them (blanks or commas between numbers, a record continued on the next line when it is short,
+// blank lines skipped) or packed in their fixed columns. Throws DuctError.
 DuctPicture read_duct(std::string_view text);
 
 // The size of DUCT's marks in a drawing (device units, half side: an input point's square).
@@ -157,13 +158,13 @@ inline constexpr double duct_mark_size = 3;
 // std::invalid_argument when its pixel counts do not add up.
 Drawing3 duct_drawing(const DuctPicture& picture);
 
-// A conic span as rational quadratic Bézier spans (duct.md, "Curves"): with b the bulge factor
-// 2|(M - P0) x (P1 - P0)| / |P1 - P0|^2 and f = 1 + s b^2, the weight of the middle control is
-// w = (2 - f)/f and the control C = (2M - fQ)/(2 - f), Q = (P0 + P1)/2, so that the curve passes
-// through M at t = 1/2. For f >= 2 (w <= 0: an arc beyond a half ellipse) the same curve is
-// given as two spans split at M, controls M -/+ f(P1 - P0)/4, inner weights 1/f, all positive.
-// For f <= 0 (the wrong half of the hyperbola), a chord of zero length or numbers that overflow:
-// the two lines P0 M and M P1, as straight quadratic spans. docs/exchange.md derives it.
+// A conic span as rational quadratic Bézier spans (docs/exchange.md, "Conic arcs"): with b the
+// bulge factor 2|(M - P0) x (P1 - P0)| / |P1 - P0|^2 and f = 1 + s b^2, the weight of the middle
+// control is w = (2 - f)/f and the control C = (2M - fQ)/(2 - f), Q = (P0 + P1)/2, so that the
+// curve passes through M at t = 1/2. For f >= 2 (w <= 0: an arc beyond a half ellipse) the same
+// curve is given as two spans split at M, controls M -/+ f(P1 - P0)/4, inner weights 1/f, all
+// positive. For f <= 0 (the wrong half of the hyperbola), a chord of zero length or numbers that
+// overflow: the two lines P0 M and M P1, as straight quadratic spans.
 struct ConicSpans {
   int spans = 1;                    // 1 or 2
   std::array<Vec3, 5> controls{};   // 2 spans + 1 controls
@@ -183,7 +184,7 @@ ConicShape conic_shape(Vec3 p0, Vec3 c, Vec3 p1, double w0, double w1, double w2
 // What the writer puts in the header and the counters besides the drawing.
 struct DuctHeader {
   std::string name;   // line 1: "IGDS PICTURE FILE <name> <date>"
-  std::string date;   // e.g. duct_date() of workspace/exchange/fields.h
+  std::string date;   // e.g. duct_date() of workspace/exchange/dates.h
   std::string title;  // line 2 (title and units); empty: no line 2
 };
 struct DuctView {
@@ -197,28 +198,29 @@ struct DuctView {
 // first point again at the end); a polynomial cubic a Bézier-span instruction; a rational
 // quadratic a conic-arc instruction (conic_shape; T carries s, so I1 gets its TU part); a
 // rational cubic (only a perspective makes them) straight lines within 1e-5 of the drawing's
-// largest extent; consecutive marks of one style and shape one invisible instruction
-// (IUPDN 8) marking every pixel (a dot as a plus, a circle as a diamond); consecutive texts one
-// invisible instruction of their pixels, each text at its pixel, colour the pen, on paper at 0
-// degrees, 3 mm high, at most 80 characters (control characters as '?'). Pens below 1 are
-// colour 1; dotted is dashed. Counters: I1 = 4 (+2 texts, +1 TU), I2 = view.axis, I3 = -1,
-// I4, I5, I6 = -2 when all instructions are straight lines, I7..I10 from `view`; R1..R6 the box of
-// the drawn curves themselves (not of their control points), rounded outwards to the 4
-// decimals of F10.4; R7 = view.height. An empty drawing gives one invisible pixel at the origin
-// (a picture always has an instruction). Throws DataError (point_not_finite, `number` the item,
-// 1-based) for a point that is not finite.
+// largest extent (workspace/drawing/flatten.h); consecutive marks of one style and shape one
+// invisible instruction (IUPDN 8) marking every pixel (a dot as a plus, a circle as a diamond);
+// consecutive texts one invisible instruction of their pixels, each text at its pixel, colour the
+// pen, on paper at 0 degrees, 3 mm high, at most 80 characters (control characters as '?'). Pens
+// below 1 are colour 1; dotted is dashed. Counters: I1 = 4 (+2 texts, +1 TU), I2 = view.axis, I3 =
+// -1, I4, I5, I6 = -2 when all instructions are straight lines, I7..I10 from `view`; R1..R6 the box
+// of the drawn curves themselves (not of their control points), rounded outwards to the 4 decimals
+// of F10.4; R7 = view.height. An empty drawing gives one invisible pixel at the origin (a picture
+// always has an instruction). Throws DataError (point_not_finite, `number` the item, 1-based) for a
+// point that is not finite.
 DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header,
                          const DuctView& view = {});
 // The picture of an image (a drawing in the plane): its points at z = 0, I7 = 2, I2 = 3 (seen
 // along z), I8 = the IGDS projection code of DESIM[2] (1..4).
 DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Projection projection);
 
-// The picture in the fixed formats of duct.md: header lines, " *", (1X,10I6), (1X,7F10.4),
-// (1X,I11,1X,I6) per instruction, (3(1X,E14.7)) or (3(1X,E14.7),2(1X,F10.4)) per pixel, then
-// texts and dimensions when I1 says so. Lines end in LF. A record whose fields touch is written as
-// FORTRAN writes it; when a value does not fit its field, every value of that record follows a
-// blank (list-directed readers read both); a text's numbers are brought into their fields so that
-// its string stays in column 51. Whatever read_duct returns, this writes a text it reads back.
+// The picture in the fixed formats of the file (docs/exchange.md, "The file"): header lines, " *",
+// (1X,10I6), (1X,7F10.4), (1X,I11,1X,I6) per instruction, (3(1X,E14.7)) or
+// (3(1X,E14.7),2(1X,F10.4)) per pixel, then texts and dimensions when I1 says so. Lines end in LF.
+// A record whose fields touch is written as FORTRAN writes it; when a value does not fit its field,
+// every value of that record follows a blank (list-directed readers read both); a text's numbers
+// are brought into their fields so that its string stays in column 51. Whatever read_duct returns,
+// this writes a text it reads back.
 std::string write_duct(const DuctPicture& picture);
 // The same into `out`, made while it is written (a picture may be hundreds of megabytes).
 void write_duct(const DuctPicture& picture, TextOut& out);

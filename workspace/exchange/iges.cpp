@@ -14,6 +14,8 @@
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/interrupt.h"
+#include "workspace/numbers/decimal.h"
+#include "workspace/numbers/fortran.h"
 
 namespace igds {
 
@@ -33,7 +35,7 @@ constexpr std::size_t max_sequence = 9'999'999;
 void end_record(std::string& out, char section, std::size_t sequence) {
   if (sequence > max_sequence) too_many_lines(sequence);
   out.push_back(section);
-  put_integer(out, std::int64_t(sequence), 7);
+  fortran::put_i_whole(out, std::int64_t(sequence), 7);
   out.push_back('\n');
 }
 
@@ -107,10 +109,10 @@ class Records {
     std::size_t at = width_;
     if (section_ == 'P') {
       line_[at++] = ' ';
-      at = right_justified(at, de_, 7);
+      at = right_justified(at, de_);
     }
     line_[at++] = section_;
-    at = right_justified(at, sequence_++, 7);
+    at = right_justified(at, sequence_++);
     line_[at++] = '\n';
     out_->commit(line_ + at);
     used_ = 0;
@@ -120,10 +122,9 @@ class Records {
   std::size_t first() const { return first_; }
 
  private:
-  std::size_t right_justified(std::size_t at, std::size_t value, std::size_t width) {
-    for (std::size_t k = width; k-- > 0; value /= 10)
-      line_[at + k] = value > 0 || k == width - 1 ? char('0' + value % 10) : ' ';
-    return at + width;
+  // I7 of a sequence number or a DE pointer (both at most max_sequence) at column `at`.
+  std::size_t right_justified(std::size_t at, std::size_t value) {
+    return std::size_t(fortran::put_i_whole(line_ + at, std::int64_t(value), 7) - line_);
   }
   TextOut* out_;
   char section_;
@@ -168,24 +169,24 @@ char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
   auto end_record = [&](std::size_t n) {
     if (n > max_sequence) too_many_lines(n);
     *w++ = 'D';
-    w = put_integer(w, std::int64_t(n), 7);
+    w = fortran::put_i_whole(w, std::int64_t(n), 7);
     *w++ = '\n';
   };
-  w = put_integer(w, e.type, 8);
-  w = put_integer(w, std::int64_t(e.parameters), 8);
+  w = fortran::put_i_whole(w, e.type, 8);
+  w = fortran::put_i_whole(w, std::int64_t(e.parameters), 8);
   // Structure, font, level, view, matrix, label.
-  for (int k = 0; k < 6; ++k) w = put_integer(w, 0, 8);
+  for (int k = 0; k < 6; ++k) w = fortran::put_i_whole(w, 0, 8);
   w = std::copy_n("00000000", 8, w);  // status: visible, independent, geometry, hierarchy global
   end_record(sequence);
-  w = put_integer(w, e.type, 8);
-  w = put_integer(w, 0, 8);  // line weight
-  w = put_integer(w, 0, 8);  // colour
-  w = put_integer(w, std::int64_t(e.lines), 8);
-  w = put_integer(w, 0, 8);     // form
-  w = std::fill_n(w, 16, ' ');  // reserved
+  w = fortran::put_i_whole(w, e.type, 8);
+  w = fortran::put_i_whole(w, 0, 8);  // line weight
+  w = fortran::put_i_whole(w, 0, 8);  // colour
+  w = fortran::put_i_whole(w, std::int64_t(e.lines), 8);
+  w = fortran::put_i_whole(w, 0, 8);  // form
+  w = std::fill_n(w, 16, ' ');        // reserved
   w = std::fill_n(w, 8 - std::min<std::size_t>(8, e.label.size()), ' ');
   w = std::copy_n(e.label.data(), std::min<std::size_t>(8, e.label.size()), w);
-  w = put_integer(w, e.subscript, 8);
+  w = fortran::put_i_whole(w, e.subscript, 8);
   end_record(sequence + 1);
   return w;
 }
@@ -429,7 +430,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const char letters[4] = {'S', 'G', 'D', 'P'};
   for (int k = 0; k < 4; ++k) {
     records.push_back(letters[k]);
-    put_integer(records, std::int64_t(counts[k]), 7);
+    fortran::put_i_whole(records, std::int64_t(counts[k]), 7);
   }
   records.append(40, ' ');
   end_record(records, 'T', 1);

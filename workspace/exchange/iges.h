@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-#include "workspace/exchange/fields.h"
+#include "workspace/exchange/dates.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/text_out.h"
 
@@ -24,8 +24,8 @@ struct CadHeader {
 // How the surface is written: one entity 128 per patch (the default: each a bicubic Bézier patch,
 // smooth inside, neighbours sharing their border controls bit for bit), or one entity 128 for
 // the whole surface, whose interior knots then have multiplicity 3 because the surface is only C0
-// across patch borders (math.md), which readers report (OpenCASCADE: "Resulting Geom_Surface is
-// C0-continuous").
+// across patch borders (docs/exchange.md, "IGES 5.3"), which readers report (OpenCASCADE:
+// "Resulting Geom_Surface is C0-continuous").
 enum class SurfaceForm { patches, one };
 
 // The file: the surface entities first (labelled PATCH with subscript the patch number, row by
@@ -33,10 +33,10 @@ enum class SurfaceForm { patches, one };
 // (labelled CURVE and STRINGER, subscript the number). Surface parameters: u along the curves
 // from 0 to NOSTR-1, v along the stringers from 0 to NOCUR-1, patch (i, j) on [j, j+1] x
 // [i, i+1] with its own parameters u - j, v - i, in both forms: INTPN row I, column J is at
-// u = j + a/(INTST+1), v = i + b/(INTCU+1) (math.md). The curves are in math.md's own parameter,
-// the running chord length (0 at the first point, the sum of the chords |P_k+1 - P_k| at point
-// k+1), in which they are C2: cubic B-splines with every inner knot once. A curve whose points
-// all coincide (a pole) is a point and is left out. Units millimetres.
+// u = j + a/(INTST+1), v = i + b/(INTCU+1) (docs/exchange.md, "A surface, exactly"). The curves
+// are in the splines' own parameter, the running chord length (0 at the first point, the sum of the
+// chords |P_k+1 - P_k| at point k+1), in which they are C2: cubic B-splines with every inner knot
+// once. A curve whose points all coincide (a pole) is a point and is left out. Units millimetres.
 // Throws DataError (shape) when PATCHES does not have the shape of `input`, (patch_not_finite)
 // for a patch that is not finite, (too_many_points) when a section would need more than 9,999,999
 // lines.

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "workspace/exchange/fortran_fields.h"
 #include "workspace/kernels/limits.h"
 #include "workspace/kernels/marks.h"
+#include "workspace/numbers/fortran.h"
 
 namespace igds::exchange {
 
@@ -19,6 +19,30 @@ constexpr std::size_t key_width = 4;
 constexpr std::size_t values_per_card = 9;  // (9F7.1)
 constexpr std::size_t value_width = 7;
 constexpr int value_decimals = 1;
+
+// The lines of a text as cards: a line ends at LF (a CR before it is dropped); a last line without
+// LF is a card too.
+class Cards {
+ public:
+  explicit Cards(std::string_view text) : text_(text) {}
+  // The next card into `card`; false at the end of the text.
+  bool next(std::string_view& card) {
+    if (pos_ >= text_.size()) return false;
+    std::size_t end = text_.find('\n', pos_);
+    if (end == std::string_view::npos) end = text_.size();
+    card = text_.substr(pos_, end - pos_);
+    if (!card.empty() && card.back() == '\r') card.remove_suffix(1);
+    pos_ = end + 1;
+    ++line_;
+    return true;
+  }
+  // The line number of the card last returned (1-based; 0 before the first).
+  std::size_t line() const { return line_; }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0, line_ = 0;
+};
 
 DeckError at(DeckError::Problem problem, std::size_t line, std::size_t column = 0) {
   DeckError e(problem);
@@ -40,7 +64,7 @@ class FieldReader {
       used_ = 0;
     }
     const std::size_t first = used_++ * width_;
-    const auto value = read_f(card_, first, width_, decimals_);
+    const auto value = fortran::read_f(card_, first, width_, decimals_);
     if (!value) throw at(DeckError::Problem::bad_number, cards_.line(), first + 1);
     column_ = first + 1;
     return *value;
@@ -93,9 +117,9 @@ MarksDeck read_deck(std::string_view text) {
   std::string_view card;
   // (2I4) MR, NC.
   if (!cards.next(card)) throw at(DeckError::Problem::ends_early, 1);
-  const auto rows = read_i(card, 0, 4);
+  const auto rows = fortran::read_i(card, 0, 4);
   if (!rows) throw at(DeckError::Problem::bad_number, 1, 1);
-  const auto columns = read_i(card, 4, 4);
+  const auto columns = fortran::read_i(card, 4, 4);
   if (!columns) throw at(DeckError::Problem::bad_number, 1, 5);
   if (*rows < 2 || *columns < 2 || *rows * *columns > static_cast<long long>(max_input_points)) {
     DeckError e(*rows < 2 || *columns < 2 ? DeckError::Problem::too_small

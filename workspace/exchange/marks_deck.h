@@ -1,4 +1,4 @@
-// NAME.CADADATA, the fitting deck of CADA/REM/SUBROUTS (spec marks.md "The fitting deck"), and
+// NAME.CADADATA, the fitting deck of CADA/REM/SUBROUTS (docs/marks.md, "The fitting deck"), and
 // the fit it asks for: Marks's tangents and twists wherever the deck gives none, and PATCHES.
 #pragma once
 
@@ -13,7 +13,7 @@
 
 namespace igds::exchange {
 
-// A point's key is the sum of what the deck gives for it (marks.md: bits 1, 2, 4, 8 of the sum).
+// A point's key is the sum of what the deck gives for it (docs/marks.md: bits 1, 2, 4, 8).
 inline constexpr int key_position = 1;
 inline constexpr int key_horizontal = 2;  // the tangent along the row (an igds curve)
 inline constexpr int key_vertical = 4;    // the tangent along the column (an igds stringer)

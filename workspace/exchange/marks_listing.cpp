@@ -1,16 +1,23 @@
 #include "workspace/exchange/marks_listing.h"
 
-#include "workspace/exchange/fortran_fields.h"
+#include <cmath>
+#include <cstring>
+
+#include "workspace/numbers/fortran.h"
 
 namespace igds::exchange {
 
 std::string cada_listing(const MarksDeck& deck, const MarksFit& fit, std::size_t* overflow) {
   std::size_t stars = 0;
   std::string out;
+  // Fw.d; a value that is not finite is asterisks too, like one that does not fit.
   auto field = [&](double value, int width, int decimals) {
-    const std::string s = format_f(value, width, decimals);
-    if (s.find('*') != std::string::npos) ++stars;
-    out += s;
+    char text[16];
+    if (!(std::isfinite(value) && fortran::put_f(text, value, width, decimals))) {
+      std::memset(text, '*', std::size_t(width));
+      ++stars;
+    }
+    out.append(text, std::size_t(width));
   };
   // Three numbers, the first widened by three blanks when it opens a group (F10.1, 2F7.1).
   auto vector = [&](Vec3 v, bool opens_group) {

@@ -4,13 +4,15 @@
 
 #include <fmt/format.h>
 
+#include "workspace/numbers/fortran.h"
+
 namespace igds::exchange {
 
 namespace {
 
 constexpr std::uint32_t word_mask = 0777777;  // 18 bits
 
-// The places of B whose sign MPDP reverses (marks.md): S_V, SE_V, E_H, SE_H.
+// The places of B whose sign MPDP reverses (docs/marks.md): S_V, SE_V, E_H, SE_H.
 constexpr bool reversed(int row, int col) {
   return (col == 3 && row < 2) || (row == 3 && col < 2);
 }
@@ -144,8 +146,13 @@ std::string tape_text(const std::vector<TapePatch>& patches) {
                        p.links[0], p.links[1], p.links[2], p.links[3]);
     for (int r = 0; r < 4; ++r) {
       for (int k = 0; k < 3; ++k) {
-        for (int c = 0; c < 4; ++c)
-          out += fmt::format("{:>{}}", p.b[16 * k + 4 * r + c], k > 0 && c == 0 ? 10 : 7);
+        for (int c = 0; c < 4; ++c) {
+          // I7, I10 opening the y and z matrices: an 18-bit number always fits.
+          const int width = k > 0 && c == 0 ? 10 : 7;
+          char field[10];
+          fortran::put_i(field, p.b[16 * k + 4 * r + c], width);
+          out.append(field, std::size_t(width));
+        }
       }
       out += '\n';
     }

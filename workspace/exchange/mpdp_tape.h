@@ -1,5 +1,5 @@
 // NAME.MPDPTAPE: the 8-track paper tape CADA/REM/BINARY punched for the PDP-7 Multi-Patch Design
-// Program (spec marks.md "The tape"; the seed's Appendix B and Diagram IV).
+// Program (docs/marks.md, "The tape").
 #pragma once
 
 #include <array>

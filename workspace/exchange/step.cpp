@@ -7,10 +7,11 @@
 #include <string_view>
 #include <vector>
 
-#include "workspace/exchange/fields.h"
+#include "workspace/exchange/dates.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/interrupt.h"
+#include "workspace/numbers/decimal.h"
 
 namespace igds {
 

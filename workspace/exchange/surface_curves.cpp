@@ -134,7 +134,7 @@ Drawing3 surface_curves(const SurfaceInput& in, const Array& patches_array,
   Drawing3 d;
   std::vector<double> controls(3 * (3 * (std::max(nc, ns) - 1) + 1));
   // Curve I: the iso-line v = b/(INTCU+1) of patch row i, one span per patch column; its
-  // derivatives along u are rows 2 and 3 of M weighted by the v blending (math.md, "Patches").
+  // derivatives along u are rows 2 and 3 of M weighted by the v blending (docs/exchange.md).
   for (std::size_t row = 0; row < g.rows; ++row) {
     const std::size_t i = std::min(row / (ic + 1), nc - 2);
     const Hermite& h = wv[row - i * (ic + 1)];
@@ -184,7 +184,7 @@ BezierNet surface_net(const SurfaceInput& in, const Array& patches) {
       for (int k = 0; k < 3; ++k) {
         const double* mk = m + 16 * k;
         // Hermite to Bézier along u (rows of M: P(0,.), P(1,.), Pu(0,.), Pu(1,.)), then along v:
-        // controls P, P + D/3, P - D/3, P with the chord-scaled derivatives D (math.md).
+        // controls P, P + D/3, P - D/3, P with the chord-scaled derivatives D (docs/exchange.md).
         double g[4][4];
         for (int c = 0; c < 4; ++c) {
           g[0][c] = mk[c];

@@ -1,7 +1,7 @@
-// An IGDS surface leaves igds exactly: every curve and stringer of INTPN is a chain of cubic
-// arcs (math.md), so it is a chain of cubic Bézier spans, and every patch is a bicubic Bézier
-// net (math.md, "Later": edge controls at P ± T/3 after the chord scaling). DUCT pictures,
-// IGES and STEP files are written from these.
+// An IGDS surface leaves igds exactly (docs/exchange.md, "A surface, exactly"): every curve and
+// stringer of INTPN is a chain of cubic arcs, so it is a chain of cubic Bézier spans, and every
+// patch is a bicubic Bézier net (edge controls at P ± T/3 after the chord scaling). DUCT
+// pictures, IGES and STEP files are written from these.
 #pragma once
 
 #include <cstddef>
@@ -24,7 +24,7 @@ inline constexpr double input_mark_size = 3;
 // - curve I (1-based, NOCUR + INTCU(NOCUR-1) of them): the iso-line of INTPN row I, one cubic
 //   Bézier span per patch (Role::curve, index I), then stringer J likewise (Role::stringer);
 //   span ends are INTPN's points, the inner controls P0 + D0/3 and P1 - D1/3 with D the
-//   derivatives of the patch's Hermite form at that row or column (math.md, "Patches");
+//   derivatives of the patch's Hermite form at that row or column (docs/exchange.md);
 // - in pen 2: the border of the input grid as one closed polyline (Role::border), every non-zero
 //   border tangent as a line from its point (Role::tangent, index the point, detail 1 along the
 //   curve, 0 along the stringer), the longest a quarter of the input points' largest extent (as
@@ -53,7 +53,7 @@ BezierNet surface_net(const SurfaceInput& input, const Array& patches);
 std::vector<double> input_curve_controls(const BezierNet& net, std::size_t i);
 std::vector<double> input_stringer_controls(const BezierNet& net, std::size_t j);
 
-// An input curve or stringer as a cubic B-spline in math.md's own parameter, the running chord
+// An input curve or stringer as a cubic B-spline in the spline's own parameter, the running chord
 // length (0 at the first point, the sum of the chords |P_k+1 - P_k| at point k+1), in which it
 // is C2 (the spline system is the C2 condition with the chords as knot spacings): distinct knots
 // t_0 < ... < t_n with multiplicities 4, 1, ..., 1, 4, and n + 3 de Boor points. Span k's inner

@@ -1,0 +1,207 @@
+// A DUCT picture as text, in the fixed formats of the file (docs/exchange.md, "Writing"): a
+// picture kept, or a drawing's picture written as it is laid out.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "workspace/exchange/duct_parts.h"
+#include "workspace/numbers/fortran.h"
+
+namespace igds {
+
+namespace {
+
+using duct::trimmed;
+
+// A record of fields with no blank between them ((1X,10I6), (1X,7F10.4), ...): as FORTRAN
+// writes it when every value fits its field, so that fixed columns read it; when one does not,
+// every value after a blank, so that list-directed readers read it (columns being lost anyway).
+class WrittenRecord {
+ public:
+  void integer(std::int64_t v, int width) {
+    fields_.push_back({{}, width});
+    fortran::put_i_whole(fields_.back().text, v, 1);
+  }
+  void fixed(double v, int width, int decimals) {
+    fields_.push_back({{}, width});
+    fortran::put_f_whole(fields_.back().text, v, 1, decimals);
+  }
+  void write(std::string& out) const {
+    bool fits = true;
+    for (const auto& f : fields_) fits = fits && trimmed(f.text).size() <= std::size_t(f.width);
+    out += ' ';  // 1X
+    for (const auto& f : fields_) {
+      const std::string_view text = trimmed(f.text);
+      if (fits)
+        out.append(std::size_t(f.width) - text.size(), ' ');
+      else
+        out += ' ';
+      out += text;
+    }
+  }
+
+ private:
+  struct Field {
+    std::string text;
+    int width;
+  };
+  std::vector<Field> fields_;
+};
+
+// The header lines, counters, reals and instructions of a picture.
+void write_head(const DuctPicture& p, TextOut& out) {
+  // The records besides the pixels are few: made in a string, then put.
+  std::string head;
+  for (const auto& line : p.header) {
+    head += line;
+    head += '\n';
+  }
+  head += " *\n";
+  WrittenRecord counters, reals;
+  for (std::int64_t v : p.counters) counters.integer(v, 6);
+  for (double v : p.reals) reals.fixed(v, 10, 4);
+  counters.write(head);
+  head += '\n';
+  reals.write(head);
+  head += '\n';
+  out.put(head);
+  // Instructions and pixels have a blank before every field.
+  for (const auto& in : p.instructions) {
+    char* w = out.room(2 * 22 + 1);
+    *w++ = ' ';
+    w = fortran::put_i_whole(w, in.code(), 11);
+    *w++ = ' ';
+    w = fortran::put_i_whole(w, std::int64_t(in.pixels), 6);
+    *w++ = '\n';
+    out.commit(w);
+  }
+}
+
+// A pixel line, the bulk of a picture, at w: (3(1X,E14.7)), then 2(1X,F10.4) with T U when `tu`.
+// Where it ends.
+constexpr std::size_t pixel_line_most = 3 * 15 + 2 * 27 + 1;
+char* pixel_line(char* w, const double xyz[3], const double* tu) {
+  for (int i = 0; i < 3; ++i) {
+    *w++ = ' ';
+    w = fortran::put_e_whole(w, xyz[i], 14, 7);
+  }
+  if (tu) {
+    for (int i = 0; i < 2; ++i) {
+      *w++ = ' ';
+      w = fortran::put_f_whole(w, tu[i], 10, 4);
+    }
+  }
+  *w++ = '\n';
+  return w;
+}
+
+// The texts and dimensions after the pixels, when I1 says so.
+void write_tail(const DuctPicture& p, TextOut& out) {
+  if (!p.has_texts()) return;
+  std::string tail;
+  WrittenRecord counts;
+  counts.integer(std::int64_t(p.texts.size()), 6);
+  counts.integer(std::int64_t(p.dimensions.size()), 6);
+  counts.write(tail);
+  tail += '\n';
+  for (const auto& t : p.texts) {
+    // The string starts in column 51 whatever the numbers: values its fields cannot hold (DUCT
+    // could not have written them) are brought into them.
+    WrittenRecord numbers;
+    numbers.integer(std::int64_t(t.pixel), 8);
+    numbers.integer(std::int64_t(t.text.size()), 3);
+    numbers.integer(std::clamp(t.colour, -99, 999), 3);
+    numbers.integer(std::clamp(t.units, -9, 99), 2);
+    numbers.fixed(std::isfinite(t.angle) ? std::fmod(t.angle, 360.0) : 0.0, 8, 3);
+    numbers.fixed(std::isfinite(t.height) ? std::clamp(t.height, -999.999, 9999.999) : 0.0, 8, 3);
+    numbers.write(tail);
+    tail.append(17, ' ');
+    tail.append(t.text, 0, 30);
+    if (t.text.size() > 30) {
+      tail += "\n ";
+      tail.append(t.text, 30);
+    }
+    tail += '\n';
+    if (tail.size() > TextOut::max_room) out.put(tail), tail.clear();
+  }
+  for (const auto& d : p.dimensions) {
+    static constexpr int widths[11] = {2, 8, 8, 2, 8, 8, 8, 3, 3, 3, 2};
+    WrittenRecord dimension;
+    for (int k = 0; k < 11; ++k) dimension.integer(d.k[std::size_t(k)], widths[k]);
+    dimension.fixed(d.t, 8, 3);
+    dimension.write(tail);
+    tail += '\n';
+    if (tail.size() > TextOut::max_room) out.put(tail), tail.clear();
+  }
+  out.put(tail);
+}
+
+// The pixels of a picture written as the layout hands them on, with T U when the picture has
+// them: gathered in blocks, each block's lines made on two threads.
+class WrittenPixels final : public duct::PixelSink {
+ public:
+  WrittenPixels(TextOut& out, bool tu) : out_(out), tu_(tu) { block_.reserve(block); }
+  void shape(double s) override { t_ = s; }
+  void pixel(Vec3 v) override {
+    block_.push_back({v.x, v.y, v.z, t_});
+    t_ = 0;
+    if (block_.size() == block) flush();
+  }
+  void flush() {
+    put_each(out_, block_.size(), pixel_line_most, [&](char* w, std::size_t k) {
+      const double tu[2] = {block_[k][3], 0};
+      return pixel_line(w, block_[k].data(), tu_ ? tu : nullptr);
+    });
+    block_.clear();
+  }
+
+ private:
+  // Pixels at a time: about ten megabytes of text.
+  static constexpr std::size_t block = std::size_t{1} << 18;
+  TextOut& out_;
+  bool tu_;
+  double t_ = 0;                              // the shape factor of the next pixel
+  std::vector<std::array<double, 4>> block_;  // x y z T
+};
+
+// A drawing's picture written without being kept: laid out once for the counts, limits and
+// instructions that come first, then walked again for its pixels.
+template <class P>
+void write_picture(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
+                   TextOut& out) {
+  const DuctPicture p = duct::lay_out(drawing, header, view, nullptr, true);
+  write_head(p, out);
+  WrittenPixels pixels(out, p.has_tu());
+  duct::lay_out(drawing, header, view, &pixels, false);
+  pixels.flush();
+  write_tail(p, out);
+}
+
+}  // namespace
+
+void write_duct(const DuctPicture& p, TextOut& out) {
+  write_head(p, out);
+  const bool tu = !p.tu.empty();
+  put_each(out, p.pixel_count(), pixel_line_most, [&](char* w, std::size_t k) {
+    return pixel_line(w, &p.xyz[3 * k], tu ? &p.tu[2 * k] : nullptr);
+  });
+  write_tail(p, out);
+}
+
+void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
+                TextOut& out) {
+  write_picture(drawing, header, view, out);
+}
+
+void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
+                TextOut& out) {
+  write_picture(drawing, header, duct::image_view(projection), out);
+}
+
+std::string write_duct(const DuctPicture& picture) {
+  StringOut out;
+  write_duct(picture, out);
+  return out.take_text();
+}
+
+}  // namespace igds
