@@ -13,6 +13,7 @@
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
 #include "workspace/exchange/duct.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/limits.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
@@ -100,6 +101,20 @@ Array copied(const RawArray& raw) {
   Array a(raw.shape);
   if (!raw.bytes.empty()) std::memcpy(a.data(), raw.bytes.data(), raw.bytes.size());
   return a;
+}
+
+// The reason of a file whose surface the kernels cannot make, or make only as numbers that are
+// not finite (inputs near the largest numbers), in the words of a report.
+std::string overflow_reason(const DataError& e) {
+  switch (e.problem) {
+    case DataError::Problem::patch_not_finite:
+      return fmt::format("ITS SURFACE OVERFLOWS: PATCH {} IS NOT A FINITE NUMBER", e.number);
+    case DataError::Problem::grid_point_not_finite:
+      return fmt::format("ITS SURFACE OVERFLOWS: INTPN ROW {} COLUMN {} IS NOT A FINITE NUMBER",
+                         e.number, e.column);
+    default:
+      return "ITS SURFACE CANNOT BE INTERPOLATED";
+  }
 }
 
 std::size_t array_bytes(std::size_t rank, double elements) {
@@ -292,8 +307,15 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
                       fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name), kept);
   }
   // PATCHES and INTPN as igds interpolates them are not saved with the session: they are made
-  // again from the inputs. Those of the file are kept as they are when they differ.
-  Surface surface = interpolate(surface_input(in));
+  // again from the inputs. Those of the file are kept as they are when they differ, once every
+  // number was found finite (the interpolation's too: inputs near the largest numbers overflow).
+  Surface surface;
+  try {
+    surface = interpolate(surface_input(in));
+    check_finite(surface.patches, surface.intpn);
+  } catch (const DataError& e) {
+    throw damaged(n, "IGDSDATA", overflow_reason(e), kept);
+  }
   const bool derived =
       !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);
   if (derived) {
@@ -303,6 +325,8 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
     surface = {};
     in.patches = none ? Array{} : copied(patches);
     in.intpn = none ? Array{} : copied(intpn);
+    for (auto [v, a] : {std::pair{Variable::patches, &in.patches}, {Variable::intpn, &in.intpn}})
+      if (auto p = finite_problem(v, *a)) throw damaged(n, "IGDSDATA", p->reason, kept);
   }
   ws.nocur = in.nocur;
   ws.nostr = in.nostr;

@@ -4,6 +4,7 @@
 // points when small. A journal read back is checked like everything else on the disk.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -27,7 +28,8 @@ inline constexpr std::size_t journal_values_limit = 512u << 10;
 std::string encode_journal(const Journal& journal, const Workspace& ws);
 
 // The journal saved with `ws`, checked (Journal::rebuild, image_problem); throws Damage with the
-// reason for anything malformed or that does not fit `ws`.
-Journal decode_journal(std::string_view bytes, const Workspace& ws);
+// reason for anything malformed or that does not fit `ws`. `lost`: the slots (IMAGE, TEMP1,
+// TEMP2) whose image the session could not read back; the states that had it have no image.
+Journal decode_journal(std::string_view bytes, const Workspace& ws, std::array<bool, 3> lost = {});
 
 }  // namespace igds::disk

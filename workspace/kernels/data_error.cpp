@@ -2,6 +2,9 @@
 
 #include "workspace/kernels/array.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
@@ -50,11 +53,37 @@ const char* DataError::what() const noexcept {
       case Problem::view_inside_box:
         text_ = "the view point is inside the bounding box";
         break;
+      case Problem::grid_point_not_finite:
+        text_ = fmt::format("INTPN row {} column {} is not finite", number, column);
+        break;
+      case Problem::image_not_finite:
+        text_ =
+            fmt::format("the image of {} {} (column {}) is not finite", variable, number, column);
+        break;
     }
   } catch (...) {
     return "data error";
   }
   return text_.c_str();
+}
+
+std::size_t first_not_finite(const double* v, std::size_t n) {
+  // A block at a time: x * 0 is 0 for every finite x and NaN for the rest, and the sums of four
+  // independent lanes keep the loop at the speed of memory; a block whose sum is not 0 is
+  // searched number by number.
+  constexpr std::size_t block = 1024;
+  for (std::size_t first = 0; first < n; first += block) {
+    const std::size_t last = std::min(n, first + block);
+    double lane[4] = {0, 0, 0, 0};
+    std::size_t k = first;
+    for (; k + 4 <= last; k += 4)
+      for (int j = 0; j < 4; ++j) lane[j] += v[k + j] * 0.0;
+    for (; k < last; ++k) lane[0] += v[k] * 0.0;
+    if (lane[0] + lane[1] + lane[2] + lane[3] == 0) continue;
+    for (k = first; k < last; ++k)
+      if (!std::isfinite(v[k])) return k;
+  }
+  return n;
 }
 
 void require_shape(const char* variable, const Array* a, std::vector<std::size_t> expected) {
