@@ -372,7 +372,15 @@ Interpreter::Outcome Interpreter::apl_environment() {
       continue;
     }
     const int before = errors_;
-    const auto next = apl_->execute(e.text);
+    auto next = apl::AplSession::Next::stay;
+    // Whatever escapes the APL session, the conversation goes on (as perform() does).
+    try {
+      next = apl_->execute(e.text);
+    } catch (const std::bad_alloc&) {
+      report("WS FULL");
+    } catch (const std::exception& x) {
+      report(upper(x.what()));
+    }
     if (options_.strict && terminal_.command_file() && errors_ > before)
       return Outcome::strict_stop;
     if (next == apl::AplSession::Next::start && leave_apl()) return Outcome::input_ended;

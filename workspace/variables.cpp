@@ -201,6 +201,17 @@ std::optional<VariableProblem> finite_problem(Variable v, const Array& a) {
   return VariableProblem{v, where + " IS NOT A FINITE NUMBER"};
 }
 
+std::string made_surface_reason(const DataError& e) {
+  switch (e.problem) {
+    case DataError::Problem::patch_not_finite:
+      return fmt::format("PATCH {} IS NOT A FINITE NUMBER", e.number);
+    case DataError::Problem::grid_point_not_finite:
+      return fmt::format("INTPN ROW {} COLUMN {} IS NOT A FINITE NUMBER", e.number, e.column);
+    default:
+      return "THE SURFACE CANNOT BE INTERPOLATED";
+  }
+}
+
 std::optional<VariableProblem> size_problem(int nocur, int nostr, int intcu, int intst) {
   if (nocur < 1 || nostr < 1)
     return VariableProblem{nocur < 1 ? Variable::nocur : Variable::nostr,

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -79,6 +80,10 @@ struct VariableProblem {
 // "DESIM[3] ..."; nullopt when every number is finite. The one check of finite numbers wherever
 // a variable comes from (files, the session, END APL's assignments).
 std::optional<VariableProblem> finite_problem(Variable v, const Array& a);
+// Why the kernels refused to make a surface from inputs that passed these checks (a result that
+// overflowed, a view its points do not allow), in the words of a report's reason: "PATCH 1 IS
+// NOT A FINITE NUMBER" (the commands layer words a kernel's refusals of what the user typed).
+std::string made_surface_reason(const DataError& e);
 // The numbers NOCUR NOSTR INTCU INTST alone: in range and within the limits (checked before any
 // array of those sizes is made).
 std::optional<VariableProblem> size_problem(int nocur, int nostr, int intcu, int intst);

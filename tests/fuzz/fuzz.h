@@ -83,6 +83,12 @@ inline bool same_workspace(const Workspace& a, const Workspace& b) {
   return images && x == y;
 }
 
+// What must never happen, said, then a crash (libFuzzer keeps the input).
+[[noreturn]] inline void finding(const std::string& what) {
+  std::fprintf(stderr, "fuzz: %s\n", what.c_str());
+  std::abort();
+}
+
 // libFuzzer's call of a target: an exception that escapes is said and is a crash.
 template <class Target>
 int guarded(Target target, const std::uint8_t* data, std::size_t size) {

@@ -99,7 +99,8 @@ int records(const std::uint8_t* data, std::size_t size) {
   }
   Session again(disk);
   const Workspace back = again.load();
-  if (!again.notices().empty() || !same_workspace(back, ws)) std::abort();
+  if (!again.notices().empty()) finding("a saved session read back with: " + again.notices()[0]);
+  if (!same_workspace(back, ws)) finding("a saved session read back is not the workspace saved");
   return 0;
 }
 

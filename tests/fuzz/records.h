@@ -186,11 +186,13 @@ inline std::int64_t interesting_int(std::minstd_rand& rng, std::int64_t near) {
                                             -0x80000000LL,
                                             1LL << 40,
                                             1LL << 60};
+  // Wrapping arithmetic: a field's neighbours at the ends of its range.
+  const auto n = static_cast<std::uint64_t>(near);
   switch (rng() % 3) {
     case 0:
-      return near + static_cast<std::int64_t>(rng() % 5) - 2;
+      return static_cast<std::int64_t>(n + rng() % 5 - 2);
     case 1:
-      return near * 2;
+      return static_cast<std::int64_t>(n * 2);
     default:
       return values[rng() % std::size(values)];
   }

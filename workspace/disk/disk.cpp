@@ -103,20 +103,6 @@ Array copied(const RawArray& raw) {
   return a;
 }
 
-// The reason of a file whose surface the kernels cannot make, or make only as numbers that are
-// not finite (inputs near the largest numbers), in the words of a report.
-std::string overflow_reason(const DataError& e) {
-  switch (e.problem) {
-    case DataError::Problem::patch_not_finite:
-      return fmt::format("ITS SURFACE OVERFLOWS: PATCH {} IS NOT A FINITE NUMBER", e.number);
-    case DataError::Problem::grid_point_not_finite:
-      return fmt::format("ITS SURFACE OVERFLOWS: INTPN ROW {} COLUMN {} IS NOT A FINITE NUMBER",
-                         e.number, e.column);
-    default:
-      return "ITS SURFACE CANNOT BE INTERPOLATED";
-  }
-}
-
 std::size_t array_bytes(std::size_t rank, double elements) {
   return 4 + 8 * rank + 8 + static_cast<std::size_t>(8 * elements);
 }
@@ -314,7 +300,12 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
     surface = interpolate(surface_input(in));
     check_finite(surface.patches, surface.intpn);
   } catch (const DataError& e) {
-    throw damaged(n, "IGDSDATA", overflow_reason(e), kept);
+    const bool overflow = e.problem == DataError::Problem::patch_not_finite ||
+                          e.problem == DataError::Problem::grid_point_not_finite;
+    throw damaged(
+        n, "IGDSDATA",
+        overflow ? "ITS SURFACE OVERFLOWS: " + made_surface_reason(e) : made_surface_reason(e),
+        kept);
   }
   const bool derived =
       !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);

@@ -111,9 +111,12 @@ const void* identity(const ImageRef& image) {
 }  // namespace
 
 std::string encode_journal(const Journal& journal, const Workspace& ws) {
+  return encode_journal(journal, images_of(ws));
+}
+
+std::string encode_journal(const Journal& journal, const ImageSlots& slots) {
   const std::span<const JournalStep> steps = journal.steps();
   const std::size_t position = journal.position();
-  const ImageSlots slots = images_of(ws);
   if (steps.empty()) return {};
 
   // How each image is kept, for the states first .. last; a step whose image can be kept in no

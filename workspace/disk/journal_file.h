@@ -26,6 +26,9 @@ inline constexpr std::size_t journal_values_limit = 512u << 10;
 
 // The journal saved with `ws` (its images are named by slot, not written again).
 std::string encode_journal(const Journal& journal, const Workspace& ws);
+// The same when the session keeps only `slots` of the workspace's images (one it could not draw
+// is kept out: the journal must not name it by its slot).
+std::string encode_journal(const Journal& journal, const ImageSlots& slots);
 
 // The journal saved with `ws`, checked (Journal::rebuild, image_problem); throws Damage with the
 // reason for anything malformed or that does not fit `ws`. `lost`: the slots (IMAGE, TEMP1,

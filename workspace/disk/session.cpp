@@ -511,6 +511,8 @@ Workspace Session::State::read_session() {
       notices.push_back(
           fmt::format("UNDO JOURNAL IN {} DAMAGED (DATA): NOTHING TO UNDO", session_file()));
     }
+    // Refused, it is written no more: the next save writes the session with the journal then.
+    rewrite = rewrite || !journal;
   }
   drop.kept = true;
   // The current image, when it is a recipe, is made ahead on a thread of its own while igds
@@ -806,7 +808,6 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
   SessionTable next = old;
   next.status = ws.status;
   next.functions = ws.functions;
-  next.journal = journal ? disk::encode_journal(*journal, ws) : std::string();
   State::Writing w{s, next, {}};
   std::vector<UnsavedImage> unsaved;
   try {
@@ -940,6 +941,12 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
       }
     }
 
+    // The journal names the images the session keeps by their slots, and only those (not one
+    // kept out, now or at an earlier save).
+    ImageSlots kept;
+    for (std::size_t k = 0; k < 3; ++k)
+      if (next.images[k].kind != ImageEntry::absent) kept[k] = image_slot(ws, k);
+    next.journal = journal ? disk::encode_journal(*journal, kept) : std::string();
     next.next_number = s.next_number;
     // The new variable files must be on the disk before the session that names them.
     if (!w.written.empty()) disk::sync_folder(s.disk.dir());
@@ -976,7 +983,7 @@ void Session::complete(Workspace& ws) {
   try {
     surface = s.deriving.get();
   } catch (const DataError& d) {
-    throw Report("SURFACE CANNOT BE MADE AGAIN", d.what());
+    throw Report("SURFACE CANNOT BE MADE AGAIN", made_surface_reason(d));
   }
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);

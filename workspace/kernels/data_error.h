@@ -51,7 +51,7 @@ struct Array;
 
 // The first of `n` numbers at `v` that is not finite (a NaN or an infinity), or n when all are:
 // the check of every result before it is kept (docs/kernels.md, "Data checks"). Reads the numbers
-// at the speed of memory; safe to call from several threads on parts of one array.
+// at the speed of memory, a large array on the machine's cores as the kernels make it.
 std::size_t first_not_finite(const double* v, std::size_t n);
 
 // Throws DataError missing (no array) or shape (`a` is not of shape `expected`), naming
