@@ -307,11 +307,19 @@ struct Session::State {
     if (room != 0) throw disk::Damage("FORMAT");
   }
 
-  // An array whose shape was checked against the variables' table: its size is known before
-  // anything of that size is made.
+  // The files of a blob read and checked (mapped, not copied): what its pieces say they hold is
+  // there before anything of that size is made.
+  void check_pieces(const Blob& b) const {
+    for (const Piece& p : b.pieces)
+      if (p.in_file) piece_payload(p);
+  }
+
+  // An array whose shape was checked against the variables' table: its size is known, and held
+  // by its files, before anything of that size is made.
   Array read_array(const StoredArray& s) const {
     const std::size_t bytes = Array::count(s.shape) * sizeof(double);
     if (bytes != s.ravel.size()) throw disk::Damage("FORMAT");
+    check_pieces(s.ravel);
     Array a(s.shape);
     read_blob(s.ravel, reinterpret_cast<char*>(a.data()), bytes);
     return a;
@@ -357,6 +365,7 @@ struct Session::State {
     }
     if (e.kind == ImageEntry::stored) {
       if (e.data.size() > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
+      check_pieces(e.data);
       std::string bytes(e.data.size(), '\0');
       read_blob(e.data, bytes.data(), bytes.size());
       disk::Reader r(bytes);
