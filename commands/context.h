@@ -2,6 +2,7 @@
 // the devices. The interpreter implements it; commands never touch the terminal themselves.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -25,6 +26,9 @@ struct Options {
   TermMode term = TermMode::none;
   TekOptions tek;
   std::string plotter;  // "": a new PLOTnnnn.HPGL on the disk per plot; "tty"; else a path
+  // How long PLOT waits for a plotter (a device, a FIFO) that takes no bytes before it says the
+  // plotter does not answer.
+  std::chrono::milliseconds plotter_patience{30000};
   PlotOptions plot;
   bool strict = false;
 };

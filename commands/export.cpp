@@ -1,5 +1,6 @@
 // EXPORT SVG | TEK | HPGL | DUCT | IGES | STEP [name]: the current image, or the current surface
 // exactly, in a file for other programs.
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
@@ -20,6 +21,7 @@
 #include "workspace/exchange/iges.h"
 #include "workspace/exchange/step.h"
 #include "workspace/exchange/surface_curves.h"
+#include "workspace/kernels/data_error.h"
 
 namespace igds {
 
@@ -76,6 +78,41 @@ bool duct_of_surface(const Workspace& ws) {
   return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
 }
 
+// The DUCT writer refuses item n of a drawing (1-based) that is not finite: the report names what
+// the item stands for, as the user knows it (a surface's curve, a tangent at a point).
+template <class Drawing>
+Report not_finite_in_picture(const Drawing& drawing, const DataError& e) {
+  if (e.problem != DataError::Problem::point_not_finite || e.number == 0 ||
+      e.number > drawing.size())
+    return worded(e, "NO FILE WRITTEN");
+  const Identity id = drawing.items()[e.number - 1].id;
+  std::string what;
+  switch (id.role) {
+    case Role::curve:
+      what = fmt::format("CURVE {}", id.index);
+      break;
+    case Role::stringer:
+      what = fmt::format("STRINGER {}", id.index);
+      break;
+    case Role::tangent:
+      what = fmt::format("THE TANGENT AT POINT {}", id.index);
+      break;
+    case Role::point:
+      what = fmt::format("POINT {}", id.index);
+      break;
+    case Role::border:
+      what = "THE BORDER";
+      break;
+    default:
+      what = fmt::format("ITEM {} OF THE DRAWING", e.number);
+      break;
+  }
+  return Report(reports::incorrect_entry,
+                fmt::format("{} HAS A NUMBER THAT IS NOT FINITE IN THE DUCT PICTURE; NO FILE "
+                            "WRITTEN",
+                            what));
+}
+
 // EXPORT DUCT into `out`, written straight from the surface's curves or the image's drawing.
 void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
   const std::string date = duct_date(export_date());
@@ -83,7 +120,11 @@ void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
     const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
-    write_duct(drawing, {name, date, title}, {}, out);
+    try {
+      write_duct(drawing, {name, date, title}, {}, out);
+    } catch (const DataError& e) {
+      throw not_finite_in_picture(drawing, e);
+    }
     return;
   }
   if (!ws.image) throw Report(reports::surface_not_found);
@@ -91,17 +132,46 @@ void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
   for (const std::string& line : describe(ws.image->desim, 72))
     title += (title.empty() ? "" : " ") + line;
   const Picture picture = picture_of(ws.image);
-  write_duct(picture.drawing, {name, date, title}, ws.image->desim.projection, out);
+  try {
+    write_duct(picture.drawing, {name, date, title}, ws.image->desim.projection, out);
+  } catch (const DataError& e) {
+    throw not_finite_in_picture(picture.drawing, e);
+  }
+}
+
+// The patch (row by row from 1) whose Bézier controls are not finite (finite patches near the
+// largest numbers), the first that holds the control; 0 when there is none.
+std::size_t overflowing_patch(const Workspace& ws) {
+  const BezierNet net = surface_net(input_of(ws), ws.patches);
+  const std::size_t k = first_not_finite(net.xyz.data(), net.xyz.size());
+  if (k == net.xyz.size()) return 0;
+  const std::size_t row = k / 3 / net.cols, column = k / 3 % net.cols;
+  const auto rows = static_cast<std::size_t>(ws.nocur) - 1;
+  const auto columns = static_cast<std::size_t>(ws.nostr) - 1;
+  const std::size_t i = std::min(row == 0 ? 0 : (row - 1) / 3, rows - 1);
+  const std::size_t j = std::min(column == 0 ? 0 : (column - 1) / 3, columns - 1);
+  return i * columns + j + 1;
 }
 
 // EXPORT IGES or STEP into `out`.
 void cad_file(const Workspace& ws, const std::string& name, Option option, TextOut& out) {
   if (!ws.has_surface()) throw Report(reports::surface_not_found);
   const CadHeader header{name, fmt::format("{}.{}", name, types[option]), export_date(), "", ""};
-  if (option == iges)
-    write_iges(input_of(ws), ws.patches, header, out);
-  else
-    write_step(input_of(ws), ws.patches, header, out);
+  try {
+    if (option == iges)
+      write_iges(input_of(ws), ws.patches, header, out);
+    else
+      write_step(input_of(ws), ws.patches, header, out);
+  } catch (const DataError& e) {
+    // The writers say a patch's Bézier controls are not finite without saying which.
+    if (e.problem != DataError::Problem::patch_not_finite) throw;
+    if (const std::size_t patch = overflowing_patch(ws))
+      throw Report(reports::incorrect_entry,
+                   fmt::format("PATCH {} HAS BEZIER CONTROLS THAT ARE NOT FINITE NUMBERS; NO FILE "
+                               "WRITTEN",
+                               patch));
+    throw;
+  }
 }
 
 void run_export(Context& ctx, const Choice* option) {

@@ -12,7 +12,9 @@
 #include "workspace/error.h"
 #include "workspace/exchange/marks_deck.h"
 #include "workspace/exchange/marks_listing.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/limits.h"
+#include "workspace/kernels/surface.h"
 
 namespace igds {
 
@@ -63,16 +65,30 @@ void run_fit(Context& ctx, const Choice*) {
   } catch (const DeckError& e) {
     throw Report(fmt::format("DECK REFUSED: {}.CADADATA ({}); {}", name, deck_reason(e), kept));
   }
-  const exchange::MarksFit fit = exchange::fit_deck(deck);
+  exchange::MarksFit fit;
+  try {
+    fit = exchange::fit_deck(deck);
+  } catch (const DataError& e) {
+    throw worded(e, kept);
+  }
   const int nocur = deck.rows, nostr = deck.columns;
   const Density density = ask_density(ctx, nocur, nostr);
 
   // INTPN from Marks's patches: the interior tangents are his (F-mesh), not IGDS's splines.
+  // Numbers near the largest make results that overflow: each is checked before it is kept.
   Surface surface;
   try {
     const SurfaceInput input{nocur,        nostr,      density.intcu, density.intst,
                              &deck.points, &fit.inptg, true};
     surface.intpn = refit(input, fit.patches);
+    check_finite(fit.patches, surface.intpn);
+    const std::size_t rows = fit.inptg.size() / 4;
+    for (std::size_t r = 0; r < rows; ++r) {
+      if (first_not_finite(fit.inptg.data() + 4 * r, 3) == 3) continue;
+      DataError e(DataError::Problem::tangent_not_finite);
+      e.number = static_cast<std::size_t>(fit.inptg.ravel[4 * r + 3]);
+      throw e;
+    }
   } catch (const DataError& e) {
     throw worded(e, "THE SURFACE IS NOT CHANGED");
   }

@@ -352,7 +352,8 @@ std::vector<std::string> describe(const Description& desim, std::size_t width) {
       for (double v : p) items.push_back(plain_number(v));
       break;
     case Projection::isometric: {
-      int axis = static_cast<int>(p[0]);
+      // Compared as read (a file may say any number, beyond an int's range too).
+      const double axis = p[0];
       const char* name = axis == 1 ? "X" : axis == 2 ? "Y" : axis == 3 ? "Z" : "?";
       items.push_back(fmt::format("AXIS {}", name));
       items.push_back(fmt::format("ANGLE {}", plain_number(p[1])));

@@ -1,8 +1,11 @@
 // PLOT SELECTRIC | EBCDIC (manual 4.5): the current image on the HP-GL pen plotter.
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <functional>
 
 #include <fmt/format.h>
@@ -32,28 +35,61 @@ std::string to_new_file(const Disk& disk, const std::function<void(TextOut& out)
   throw Report("NO FREE PLOT FILE NAME (PLOT0001 TO PLOT9999 ALL USED); NOTHING PLOTTED");
 }
 
-// Appended to a file, plot after plot, or written to a device such as /dev/ttyUSB0.
-void to_path(const std::string& path, std::string_view hpgl) {
-  int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NOCTTY | O_CLOEXEC, 0666);
-  if (fd < 0)
-    throw Report(fmt::format("CANNOT OPEN PLOTTER {} ({}); NOTHING PLOTTED", path,
-                             disk::system_reason(errno)));
+// Appended to a file, plot after plot, or written to a device such as /dev/ttyUSB0. Nothing
+// may hold the conversation: the path is opened without waiting (a FIFO without a reader, a
+// serial line without its carrier), and a device that takes no bytes for `patience` does not
+// answer. A link is followed only to a device (how /dev/serial/by-id names them), never to a file.
+void to_path(const std::string& path, std::string_view hpgl, std::chrono::milliseconds patience) {
+  constexpr int flags = O_WRONLY | O_APPEND | O_NOCTTY | O_CLOEXEC | O_NONBLOCK;
+  auto refused = [&](int error) {
+    if (error == ENXIO)  // a FIFO without a reader, a device that is not there
+      return Report(fmt::format("PLOTTER {} DOES NOT ANSWER; NOTHING PLOTTED", path));
+    return Report(fmt::format("CANNOT OPEN PLOTTER {} ({}); NOTHING PLOTTED", path,
+                              disk::system_reason(error)));
+  };
+  int fd = ::open(path.c_str(), flags | O_CREAT | O_NOFOLLOW, 0666);
+  if (fd < 0 && errno == ELOOP) {
+    struct stat target;
+    if (::stat(path.c_str(), &target) != 0) throw refused(errno);
+    if (!S_ISCHR(target.st_mode) && !S_ISFIFO(target.st_mode))
+      throw Report(
+          fmt::format("CANNOT OPEN PLOTTER {} (A SYMBOLIC LINK TO A FILE); NOTHING PLOTTED", path));
+    fd = ::open(path.c_str(), flags);
+  }
+  if (fd < 0) throw refused(errno);
   std::size_t sent = 0;
   int error = 0;
+  bool answered = true;
   while (sent < hpgl.size()) {
     ssize_t n = ::write(fd, hpgl.data() + sent, hpgl.size() - sent);
     if (n < 0 && errno == EINTR) continue;
+    if (n < 0 && errno == EAGAIN) {
+      // Full: wait for the plotter to take more, as long as it takes some within `patience`.
+      pollfd out{fd, POLLOUT, 0};
+      const int ready = ::poll(&out, 1, static_cast<int>(patience.count()));
+      if (ready < 0 && errno == EINTR) continue;
+      if (ready == 0) {
+        answered = false;
+        break;
+      }
+      if (out.revents & (POLLERR | POLLHUP)) {
+        error = EPIPE;
+        break;
+      }
+      continue;
+    }
     if (n <= 0) {
       error = n < 0 ? errno : EIO;
       break;
     }
     sent += static_cast<std::size_t>(n);
   }
-  if (::close(fd) != 0 && error == 0 && errno != EINTR) error = errno;
+  if (::close(fd) != 0 && error == 0 && answered && errno != EINTR) error = errno;
+  const std::string_view kept = sent == 0 ? "NOTHING PLOTTED" : "THE PLOT IS INCOMPLETE";
+  if (!answered) throw Report(fmt::format("PLOTTER {} DOES NOT ANSWER; {}", path, kept));
   if (error != 0)
-    throw Report(fmt::format("CANNOT WRITE TO PLOTTER {} ({}); {}", path,
-                             disk::system_reason(error),
-                             sent == 0 ? "NOTHING PLOTTED" : "THE PLOT IS INCOMPLETE"));
+    throw Report(
+        fmt::format("CANNOT WRITE TO PLOTTER {} ({}); {}", path, disk::system_reason(error), kept));
 }
 
 enum Option { selectric = 1, ebcdic = 2 };  // STATUS[2]
@@ -83,7 +119,7 @@ void run_plot(Context& ctx, const Choice* option) {
       ctx.send_to_terminal(std::string(plotter_on) + plot.hpgl + std::string(plotter_off));
       where = "PLOTTER";
     } else {
-      to_path(plotter, plot.hpgl);
+      to_path(plotter, plot.hpgl, ctx.options().plotter_patience);
       where = plotter;
     }
   }

@@ -26,6 +26,11 @@ void run_punch(Context& ctx, const Choice*) {
   if (!ws.has_input()) throw Report(reports::input_not_found);
   if (ws.patches.rank() != 5 || ws.patches.empty())
     throw Report("A SINGLE CURVE OR STRINGER HAS NO PATCHES TO PUNCH");
+  // The tape numbers its patches in 18 bits, the number as any other.
+  const std::size_t count = ws.patches.shape[0] * ws.patches.shape[1];
+  if (count > std::size_t(exchange::tape_max))
+    throw Report(fmt::format("{} PATCHES: THE TAPE NUMBERS AT MOST {}; NO FILE WRITTEN", count,
+                             exchange::tape_max));
   const std::string name = ask_file_name(ctx, file_prompt);
   std::string tape;
   try {

@@ -50,6 +50,23 @@ Report worded(const DataError& e) {
       return Report(reports::incorrect_parameter, "THE VIEW POINT IS THE CENTRE OF THE SURFACE");
     case P::view_inside_box:
       return Report(reports::incorrect_parameter, "THE VIEW POINT IS INSIDE THE SURFACE'S BOX");
+    case P::grid_point_not_finite:
+      return Report(
+          reports::incorrect_entry,
+          fmt::format("INTPN ROW {} COLUMN {} IS NOT A FINITE NUMBER", e.number, e.column));
+    case P::image_not_finite: {
+      std::string what;
+      if (e.variable == "INPPN")
+        what = fmt::format("POINT {}", e.number);
+      else if (e.variable == "INPTG")
+        what = fmt::format("THE TANGENT AT POINT {}", e.number);
+      else if (e.variable == "INTPN")
+        what = fmt::format("INTPN ROW {} COLUMN {}", e.number, e.column);
+      else
+        what = fmt::format("ITEM {} OF THE PICTURE", e.number);
+      return Report(reports::incorrect_parameter,
+                    fmt::format("THE IMAGE OF {} IS NOT A FINITE NUMBER", what));
+    }
   }
   return Report(reports::incorrect_entry);
 }

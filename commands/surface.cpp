@@ -5,10 +5,16 @@
 namespace igds {
 
 Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only) {
-  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
+  // The workspace's arrays are lent to the kernels only when they can be made again from its
+  // inputs (PATCHES and INTPN its own interpolation): a result refused after it was computed has
+  // overwritten them. FIT's patches, or those assigned in END APL, are never written over.
+  const bool lend = ws.changes.derived && ws.has_surface();
+  Surface surface;
+  if (lend || refit_only) surface.patches = std::move(ws.patches);
+  if (lend) surface.intpn = std::move(ws.intpn);
   auto give_back = [&] {
-    ws.patches = std::move(surface.patches);
-    ws.intpn = std::move(surface.intpn);
+    if (lend || refit_only) ws.patches = std::move(surface.patches);
+    if (lend) ws.intpn = std::move(surface.intpn);
   };
   try {
     if (refit_only)
@@ -21,6 +27,22 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
   } catch (...) {
     give_back();
     throw;
+  }
+  // Inputs near the largest numbers can make a result that is not finite: refused before it is
+  // kept, and what it overwrote made again as it was (bit for bit: the kernels are exact).
+  try {
+    check_finite(surface.patches, surface.intpn);
+  } catch (const DataError& e) {
+    if (lend) {
+      const SurfaceInput before{ws.nocur,  ws.nostr,  ws.intcu,         ws.intst,
+                                &ws.inppn, &ws.inptg, ws.marks_twists()};
+      if (refit_only)
+        refit_into(before, surface.patches, surface.intpn);
+      else
+        interpolate_into(before, surface);
+    }
+    give_back();
+    throw worded(e, "THE SURFACE IS NOT CHANGED");
   }
   return surface;
 }

@@ -6,8 +6,10 @@
 #include <readline/readline.h>
 #include <signal.h>
 #include <sys/signalfd.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <clocale>
 #include <cstdio>
@@ -16,6 +18,7 @@
 
 #include "interp/apl/keyboard.h"
 #include "interp/words.h"
+#include "workspace/disk/files.h"
 #include "workspace/kernels/interrupt.h"
 
 namespace igds {
@@ -219,12 +222,12 @@ ReadlineSource::ReadlineSource(std::filesystem::path history, Candidates candida
   const char twice[3] = {apl::prefix_key, apl::prefix_key, 0};
   rl_bind_keyseq(twice, rl_insert);  // `` is ` itself
   using_history();
-  stifle_history(1000);
-  read_history(history_.c_str());
+  stifle_history(static_cast<int>(history_lines));
+  load_history();
 }
 
 ReadlineSource::~ReadlineSource() {
-  write_history(history_.c_str());
+  keep_history();
   rl_getc_function = rl_getc;
   rl_input_available_hook = nullptr;
   rl_attempted_completion_function = nullptr;
@@ -289,6 +292,102 @@ char* ReadlineSource::next_completion(const char* text, int state) {
   return nullptr;
 }
 
+// The history is igds's own file: never followed through a link, never waited for (a FIFO put
+// at its name), never written when it is not a plain file with one name; Readline's own
+// read_history and write_history would do all three. When it cannot be kept, the lines typed
+// are kept for this session only.
+namespace {
+
+// A plain file of one name at `path`, opened with `flags` without following a link or waiting;
+// -1 for anything else.
+int own_file(const std::filesystem::path& path, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK, 0644);
+  if (fd < 0) return -1;
+  struct stat st;
+  if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode) || st.st_nlink != 1) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// A history larger than this is not the one igds keeps (1000 lines of what a person types).
+constexpr std::size_t max_history_bytes = 4u << 20;
+
+}  // namespace
+
+void ReadlineSource::load_history() {
+  const int fd = own_file(history_, O_RDONLY);
+  if (fd < 0) return;
+  std::string text;
+  struct stat st;
+  if (::fstat(fd, &st) == 0 && static_cast<std::uint64_t>(st.st_size) <= max_history_bytes) {
+    text.resize(static_cast<std::size_t>(st.st_size));
+    std::size_t got = 0;
+    while (got < text.size()) {
+      const ssize_t n = ::read(fd, text.data() + got, text.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    text.resize(got);
+  }
+  ::close(fd);
+  for (std::size_t at = 0; at < text.size();) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    if (end > at) {
+      add_history(text.substr(at, end - at).c_str());
+      ++history_file_lines_;
+    }
+    at = end + 1;
+  }
+}
+
+void ReadlineSource::keep_line(const std::string& line) {
+  // Appended, so that a session that dies keeps it; the file is cut back to the last lines
+  // when it has grown to twice as many.
+  if (history_file_lines_ >= 2 * history_lines) return keep_history();
+  const int fd = own_file(history_, O_WRONLY | O_APPEND | O_CREAT);
+  if (fd < 0) return;
+  const std::string text = line + '\n';
+  std::size_t sent = 0;
+  while (sent < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + sent, text.size() - sent);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    sent += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  ++history_file_lines_;
+}
+
+void ReadlineSource::keep_history() {
+  // Written whole through the disk's own writing (a temporary created beside it, renamed over
+  // it): only where there is nothing yet or igds's own plain file.
+  struct stat st;
+  if (::lstat(history_.c_str(), &st) == 0) {
+    const int fd = own_file(history_, O_RDONLY);
+    if (fd < 0) return;
+    ::close(fd);
+  } else if (errno != ENOENT) {
+    return;
+  }
+  std::string text;
+  std::size_t lines = 0;
+  if (HIST_ENTRY** entries = history_list()) {
+    for (; entries[lines]; ++lines) {
+      text += entries[lines]->line;
+      text += '\n';
+    }
+  }
+  try {
+    disk::write_file(history_, text);
+    history_file_lines_ = lines;
+  } catch (const disk::IoError&) {
+    // A disk that refuses it: the history is kept for this session only.
+  }
+}
+
 Event ReadlineSource::abandon() {
   // Ctrl-C: the line being typed is dropped, the terminal is as before.
   keys_.clear();
@@ -329,7 +428,7 @@ Event ReadlineSource::line(std::string_view prompt) {
     if (!read_->empty()) {
       add_history(read_->c_str());
       // Kept at once, so that a session that dies keeps its history too.
-      write_history(history_.c_str());
+      keep_line(*read_);
     }
     if (is_comment_line(*read_)) continue;
     return {Event::Kind::line, std::move(*read_)};

@@ -101,8 +101,15 @@ class ReadlineSource final : public EventSource {
  private:
   void read_keys();
   Event abandon();
+  // HISTORY.IGDSHIST: read at start, each line appended as it is typed, written whole at the
+  // end (only ever igds's own plain file: see input.cpp).
+  void load_history();
+  void keep_line(const std::string& line);
+  void keep_history();
 
+  static constexpr std::size_t history_lines = 1000;
   std::filesystem::path history_;
+  std::size_t history_file_lines_ = 0;  // lines in the file as far as this source knows
   Candidates candidates_;
   Interrupts& interrupts_;
   int fd_;

@@ -268,17 +268,35 @@ void Interpreter::end_session(bool apl) {
 }
 
 void Interpreter::save() {
+  // Said once per streak of failures: the same words after every command hide the dialogue.
+  auto failed = [this](const std::string& line) {
+    if (line != save_failure_) report(line);
+    save_failure_ = line;
+  };
+  auto kept = [](std::string_view reason) {
+    return fmt::format("CANNOT SAVE THE SESSION ({}); THE LAST SAVED SESSION IS KEPT", reason);
+  };
+  // Whatever a layer below throws, the conversation goes on and the session on the disk stays.
   try {
     // Here a command that changed the workspace becomes a step of the journal, before the
     // session forgets which parts of the inputs it changed (Workspace::changes).
     journal_.record(ws_, step_name_);
-    session_.save(ws_, &journal_);
+    for (const UnsavedImage& u : session_.save(ws_, &journal_)) {
+      const Report r = worded(u.error);
+      say(fmt::format("{} CANNOT BE DRAWN AGAIN ({}): NOT KEPT IN THE SESSION", info(u.slot).name,
+                      r.reason().empty() ? r.line() : r.reason()));
+    }
     if (!save_failure_.empty()) say("THE SESSION IS SAVED AGAIN");
     save_failure_.clear();
   } catch (const Error& r) {
-    // Said once per streak of failures: the same words after every command hide the dialogue.
-    if (r.what() != save_failure_) report(r.what());
-    save_failure_ = r.what();
+    failed(r.what());
+  } catch (const DataError& e) {
+    const Report r = worded(e);
+    failed(kept(r.reason().empty() ? r.line() : r.reason()));
+  } catch (const std::bad_alloc&) {
+    failed(kept("NOT ENOUGH MEMORY"));
+  } catch (const std::exception& e) {
+    failed(kept(upper(e.what())));
   }
 }
 
@@ -341,7 +359,15 @@ Interpreter::Outcome Interpreter::apl_environment() {
       continue;
     }
     const int before = errors_;
-    const auto next = apl_->execute(e.text);
+    auto next = apl::AplSession::Next::stay;
+    // Whatever escapes the APL session, the conversation goes on (as perform() does).
+    try {
+      next = apl_->execute(e.text);
+    } catch (const std::bad_alloc&) {
+      report("WS FULL");
+    } catch (const std::exception& x) {
+      report(upper(x.what()));
+    }
     if (options_.strict && terminal_.command_file() && errors_ > before)
       return Outcome::strict_stop;
     if (next == apl::AplSession::Next::start && leave_apl()) return Outcome::input_ended;

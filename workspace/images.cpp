@@ -1,6 +1,8 @@
 #include "workspace/images.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 #include <vector>
 
 #include "workspace/drawing/project.h"
@@ -23,6 +25,19 @@ Array projected(Vec3View points, std::vector<std::size_t> shape, const View& vie
   Array out(std::move(shape));
   project(view, centre, points, as_point2(out));
   return out;
+}
+
+// A projection of finite points can overflow (coordinates near the largest numbers, a CONIC eye
+// a hair's breadth from a point's plane): the first point of `image` whose image is not finite
+// is refused, named as the array it was projected from counts it (1-based).
+void check_projected(const Array& image, const std::string& variable, std::size_t columns) {
+  const std::size_t k = first_not_finite(image.data(), image.size());
+  if (k == image.size()) return;
+  DataError e(DataError::Problem::image_not_finite);
+  e.variable = variable;
+  e.number = k / 2 / columns + 1;
+  e.column = k / 2 % columns + 1;
+  throw e;
 }
 
 // Images of the current surface can be made again from it: they remember its generation.
@@ -69,6 +84,14 @@ Image input_image(const Workspace& ws, const View& view) {
     arrows.insert(arrows.end(), {p[0], p[1], (p[2] - p[0]) / h, (p[3] - p[1]) / h, double(k),
                                  r < curve_rows ? 1.0 : 0.0});
   }
+  check_projected(image.points, "INPPN", 1);
+  for (std::size_t a = 0; a < arrows.size(); a += 6) {
+    if (first_not_finite(&arrows[a], 4) == 4) continue;
+    DataError e(DataError::Problem::image_not_finite);
+    e.variable = "INPTG";
+    e.number = static_cast<std::size_t>(arrows[a + 4]);
+    throw e;
+  }
   if (!arrows.empty()) {
     image.arrows.shape = {arrows.size() / 6, 6};
     image.arrows.ravel = std::move(arrows);
@@ -90,6 +113,7 @@ Image surface_image(const Workspace& ws, const View& view) {
   image.desim = {1, view.projection, view.parameters};
   image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view,
                            bounding_box_centre(as_vec3(ws.inppn)));
+  check_projected(image.points, "INTPN", ws.intpn.shape[1]);
   image.drawn_from = recipe_of(ws, true);
   return image;
 }
@@ -110,6 +134,17 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
   picture->text = std::move(text);
   picture->desim = {2, view.projection, view.parameters};
   picture->drawing = project(drawing, view, centre);
+  const auto items = picture->drawing.items();
+  for (std::size_t n = 0; n < items.size(); ++n) {
+    const auto points = picture->drawing.points(items[n]);
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      if (std::isfinite(points[k].x) && std::isfinite(points[k].y)) continue;
+      DataError e(DataError::Problem::image_not_finite);
+      e.variable = "DRAWING";
+      e.number = n + 1;
+      throw e;
+    }
+  }
   Image image;
   image.desim = picture->desim;
   image.picture = std::move(picture);
@@ -121,18 +156,37 @@ Image image_of(const Workspace& ws, const Description& desim) {
   return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
 }
 
+namespace {
+
+// The image `desim` describes of the surface of the inputs `from`, interpolated first for a
+// surface image (and refused when that overflows, as any surface is).
+Image made_from(Workspace from, const Description& desim) {
+  if (desim.what != 0) {
+    Surface s = interpolate(surface_input(from));
+    check_finite(s.patches, s.intpn);
+    from.patches = std::move(s.patches);
+    from.intpn = std::move(s.intpn);
+  }
+  return image_of(from, desim);
+}
+
+}  // namespace
+
 ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Description& desim) {
   const std::uint64_t generation = source->changes.surface;
   return ImageRef::deferred(
       [source = std::move(source), desim] {
         if (desim.what == 0) return image_of(*source, desim);
-        Workspace from = *source;
-        Surface s = interpolate(surface_input(from));
-        from.patches = std::move(s.patches);
-        from.intpn = std::move(s.intpn);
-        return image_of(from, desim);
+        return made_from(*source, desim);
       },
       generation, desim);
+}
+
+ImageRef image_by_recipe(std::function<Workspace()> source, std::uint64_t generation,
+                         const Description& desim) {
+  return ImageRef::deferred(
+      [source = std::move(source), desim] { return made_from(source(), desim); }, generation,
+      desim);
 }
 
 }  // namespace igds

@@ -4,6 +4,8 @@
 // same function makes both, bit for bit.
 #pragma once
 
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -34,5 +36,9 @@ Image image_of(const Workspace& ws, const Description& desim);
 // changes.surface), made when it is first looked at (a surface image interpolates the inputs
 // then): an image the session or the undo journal kept by its recipe.
 ImageRef image_by_recipe(std::shared_ptr<const Workspace> source, const Description& desim);
+// The same with the surface's inputs made only then, by `source` (the state of a journal read
+// from the disk, workspace/journal.h JournalStates); `generation` the one they will say.
+ImageRef image_by_recipe(std::function<Workspace()> source, std::uint64_t generation,
+                         const Description& desim);
 
 }  // namespace igds

@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/variables.h"
 
@@ -238,16 +239,30 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
   if (!apply_change(step.inppn, inppn, back) || !apply_change(step.inptg, inptg, back))
     throw std::logic_error("undo journal out of step with the workspace");
   // PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same), with
-  // the state's twists, into the memory of the current ones (a 4 M-point surface then writes no
-  // fresh pages); on DataError they are left as they were.
-  Surface surface{std::move(ws.patches), std::move(ws.intpn)};
+  // the state's twists, into the memory of the current ones when those are the interpolation of
+  // the current inputs (a 4 M-point surface then writes no fresh pages); on DataError, or a
+  // result that is not finite (a state read from a forged file), they are as they were.
+  const bool lend = ws.changes.derived && ws.has_surface();
+  Surface surface;
+  if (lend) surface = {std::move(ws.patches), std::move(ws.intpn)};
   if (to.nocur > 0) {
     const bool marks = to.status[Workspace::status_twists] == 1;
     try {
       interpolate_into({to.nocur, to.nostr, to.intcu, to.intst, &inppn, &inptg, marks}, surface);
+      try {
+        check_finite(surface.patches, surface.intpn);
+      } catch (const DataError&) {
+        if (lend)
+          interpolate_into(
+              {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()},
+              surface);
+        throw;
+      }
     } catch (...) {
-      ws.patches = std::move(surface.patches);
-      ws.intpn = std::move(surface.intpn);
+      if (lend) {
+        ws.patches = std::move(surface.patches);
+        ws.intpn = std::move(surface.intpn);
+      }
       throw;
     }
   } else {
@@ -289,14 +304,11 @@ std::optional<std::string> Journal::redo(Workspace& ws) {
 }
 
 std::optional<std::string> Journal::rebuild(const Workspace& ws, std::vector<JournalStep> steps,
-                                            std::size_t position,
-                                            std::span<const std::size_t> wanted,
-                                            std::vector<JournalState>& inputs) {
+                                            std::size_t position) {
   if (position > steps.size() || steps.size() > max_steps) return "NUMBER OF STEPS";
   std::size_t bytes = 0;
   for (const JournalStep& s : steps) bytes += s.bytes();
   if (bytes > max_bytes) return "TOO LARGE";
-  inputs.assign(wanted.size(), {});
   // Every state a generation of its own; the current one is the workspace's.
   std::vector<std::uint64_t> generations(steps.size() + 1);
   for (std::size_t k = 0; k < generations.size(); ++k)
@@ -336,9 +348,6 @@ std::optional<std::string> Journal::rebuild(const Workspace& ws, std::vector<Jou
         for (double v : back ? step.inppn.before : step.inppn.after)
           if (!std::isfinite(v)) return "INPPN HOLDS A NUMBER THAT IS NOT FINITE";
       }
-      for (std::size_t w = 0; w < wanted.size(); ++w)
-        if (wanted[w] == state)
-          inputs[w] = {Settings::of(probe), probe.inppn, probe.inptg, generations[state]};
     }
     return std::nullopt;
   };
@@ -346,11 +355,6 @@ std::optional<std::string> Journal::rebuild(const Workspace& ws, std::vector<Jou
     if (s.name.empty()) return "STEP NAME";
   if (auto p = walk(true)) return p;
   if (auto p = walk(false)) return p;
-  for (std::size_t w = 0; w < wanted.size(); ++w) {
-    if (wanted[w] > steps.size()) return "IMAGE OF NO STATE";
-    if (wanted[w] == position)
-      inputs[w] = {Settings::of(ws), ws.inppn, ws.inptg, generations[position]};
-  }
   for (std::size_t k = 0; k < steps.size(); ++k) {
     steps[k].generation_before = generations[k];
     steps[k].generation_after = generations[k + 1];
@@ -374,6 +378,43 @@ std::optional<std::pair<std::uint64_t, Description>> Journal::recipe_of(
   for (const Remembered& r : remembered_)
     if (image.is(r.image)) return std::pair{r.generation, r.desim};
   return image.recipe();  // a deferred image is not made for it
+}
+
+JournalStates::JournalStates(const Journal& journal, const Workspace& ws)
+    : settings_(Settings::of(ws)),
+      inppn_(ws.inppn),
+      inptg_(ws.inptg),
+      generation_(ws.changes.surface),
+      position_(journal.position()) {
+  for (const JournalStep& s : journal.steps())
+    steps_.push_back(
+        {s.before, s.after, s.inppn, s.inptg, s.generation_before, s.generation_after});
+}
+
+const Settings& JournalStates::settings_of(std::size_t k) const {
+  if (k == position_) return settings_;
+  return k < steps_.size() ? steps_[k].before : steps_[k - 1].after;
+}
+
+std::uint64_t JournalStates::generation_of(std::size_t k) const {
+  if (k == position_) return generation_;
+  return k < steps_.size() ? steps_[k].generation_before : steps_[k - 1].generation_after;
+}
+
+Workspace JournalStates::inputs_of(std::size_t k) const {
+  Workspace ws;
+  settings_of(k).apply_to(ws);
+  ws.inppn = inppn_;
+  ws.inptg = inptg_;
+  // Every step was found to fit the state it starts from when the journal was read.
+  for (std::size_t state = position_; state > k; --state)
+    if (!steps_[state - 1].inppn.backward(ws.inppn) || !steps_[state - 1].inptg.backward(ws.inptg))
+      throw std::logic_error("undo journal out of step with its states");
+  for (std::size_t state = position_; state < k; ++state)
+    if (!steps_[state].inppn.forward(ws.inppn) || !steps_[state].inptg.forward(ws.inptg))
+      throw std::logic_error("undo journal out of step with its states");
+  ws.changes.surface = generation_of(k);
+  return ws;
 }
 
 }  // namespace igds

@@ -65,13 +65,6 @@ struct JournalStep {
   std::size_t bytes() const;
 };
 
-// The inputs of one state of the journal (for an image drawn from it).
-struct JournalState {
-  Settings settings;
-  Array inppn, inptg;
-  std::uint64_t generation = 0;
-};
-
 class Journal {
  public:
   // Bounds: the steps kept, and the bytes of their values (the oldest steps go first). A step
@@ -112,11 +105,8 @@ class Journal {
   // steps[position - 1], before steps[position]). Checks that every step fits the state it
   // starts from and that every state is a surface igds accepts (workspace/variables.h); returns
   // the problem, in the words of a report's reason, and leaves the journal as it was then.
-  // `wanted` names states (0 = before steps[0], k = after steps[k - 1]) whose inputs are put in
-  // `inputs` (for the images drawn from them).
   std::optional<std::string> rebuild(const Workspace& ws, std::vector<JournalStep> steps,
-                                     std::size_t position, std::span<const std::size_t> wanted,
-                                     std::vector<JournalState>& inputs);
+                                     std::size_t position);
   // The steps' images set (once rebuild() gave the states they are drawn from).
   std::span<JournalStep> steps_to_complete() { return steps_; }
 
@@ -136,7 +126,12 @@ class Journal {
   std::size_t position_ = 0;
   std::size_t bytes_ = 0;
   // The current state: settings, inputs, images and generation, as the last step left them.
-  JournalState current_;
+  struct State {
+    Settings settings;
+    Array inppn, inptg;
+    std::uint64_t generation = 0;
+  };
+  State current_;
   ImageSlots images_;
   struct Remembered {
     std::weak_ptr<const void> image;
@@ -144,6 +139,33 @@ class Journal {
     Description desim;
   };
   std::vector<Remembered> remembered_;
+};
+
+// The inputs of the states of a journal just read from the disk (Journal::rebuild), made again
+// when one is wanted (an image drawn from that state is first made): from the state current at
+// the reading and the steps' changes, so that a journal naming many states holds their changes
+// and one copy of the inputs, not a copy of INPPN for each.
+class JournalStates {
+ public:
+  JournalStates(const Journal& journal, const Workspace& ws);
+  std::size_t count() const { return steps_.size() + 1; }
+  // State k (0: before the first step, k: after step k - 1): its settings, INPPN and INPTG, and
+  // its generation in changes.surface (an image drawn from it is that recipe).
+  Workspace inputs_of(std::size_t k) const;
+  const Settings& settings_of(std::size_t k) const;
+  std::uint64_t generation_of(std::size_t k) const;
+
+ private:
+  struct Change {
+    Settings before, after;
+    ArrayChange inppn, inptg;
+    std::uint64_t generation_before = 0, generation_after = 0;
+  };
+  Settings settings_;
+  Array inppn_, inptg_;
+  std::uint64_t generation_ = 0;
+  std::size_t position_ = 0;
+  std::vector<Change> steps_;
 };
 
 }  // namespace igds

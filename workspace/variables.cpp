@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/limits.h"
 
 namespace igds {
@@ -52,13 +53,6 @@ std::optional<VariableProblem> wrong_shape(Variable v, const Array& a,
   if (a.shape == expected) return std::nullopt;
   return VariableProblem{v, fmt::format("{} IS {}, NOT {}", info(v).name, shape_words(a.shape),
                                         shape_words(expected))};
-}
-
-std::optional<VariableProblem> not_finite(Variable v, const Array& a) {
-  for (double x : a.ravel)
-    if (!std::isfinite(x))
-      return VariableProblem{v, fmt::format("{} HOLDS A NUMBER THAT IS NOT FINITE", info(v).name)};
-  return std::nullopt;
 }
 
 }  // namespace
@@ -135,6 +129,42 @@ std::vector<std::size_t> expected_shape(const Workspace& ws, Variable v) {
   }
 }
 
+std::optional<VariableProblem> finite_problem(Variable v, const Array& a) {
+  const std::size_t k = first_not_finite(a.data(), a.size());
+  if (k == a.size()) return std::nullopt;
+  const std::string_view name = info(v).name;
+  const auto& s = a.shape;
+  std::string where;
+  if (v == Variable::inppn && s.size() == 2 && s[1] > 0) {
+    where = fmt::format("POINT {} OF {}", k / s[1] + 1, name);
+  } else if (v == Variable::patches && s.size() == 5) {
+    where = fmt::format("PATCH {} OF {}", k / 48 + 1, name);
+  } else if (s.size() == 3 && s[1] > 0 && s[2] > 0) {
+    const std::size_t point = k / s[2];
+    where = v == Variable::intpn
+                ? fmt::format("ROW {} COLUMN {} OF {}", point / s[1] + 1, point % s[1] + 1, name)
+                : fmt::format("PLANE {} ROW {} OF {}", point / s[1] + 1, point % s[1] + 1, name);
+  } else if (s.size() == 2 && s[1] > 0) {
+    where = fmt::format("ROW {} OF {}", k / s[1] + 1, name);
+  } else if (s.size() == 1) {
+    where = fmt::format("{}[{}]", name, k + 1);
+  } else {
+    where = fmt::format("NUMBER {} OF {}", k + 1, name);
+  }
+  return VariableProblem{v, where + " IS NOT A FINITE NUMBER"};
+}
+
+std::string made_surface_reason(const DataError& e) {
+  switch (e.problem) {
+    case DataError::Problem::patch_not_finite:
+      return fmt::format("PATCH {} IS NOT A FINITE NUMBER", e.number);
+    case DataError::Problem::grid_point_not_finite:
+      return fmt::format("INTPN ROW {} COLUMN {} IS NOT A FINITE NUMBER", e.number, e.column);
+    default:
+      return "THE SURFACE CANNOT BE INTERPOLATED";
+  }
+}
+
 std::optional<VariableProblem> size_problem(int nocur, int nostr, int intcu, int intst) {
   if (nocur < 1 || nostr < 1)
     return VariableProblem{nocur < 1 ? Variable::nocur : Variable::nostr,
@@ -165,8 +195,8 @@ std::optional<VariableProblem> surface_problem(const Workspace& ws, bool allow_e
   for (Variable v : {Variable::inppn, Variable::inptg})
     if (auto p = wrong_shape(v, v == Variable::inppn ? ws.inppn : ws.inptg, expected_shape(ws, v)))
       return p;
-  if (auto p = not_finite(Variable::inppn, ws.inppn)) return p;
-  if (auto p = not_finite(Variable::inptg, ws.inptg)) return p;
+  if (auto p = finite_problem(Variable::inppn, ws.inppn)) return p;
+  if (auto p = finite_problem(Variable::inptg, ws.inptg)) return p;
   // Column 4 of INPTG: the number of an input point.
   for (std::size_t r = 0; r < ws.inptg.shape[0]; ++r) {
     const double k = ws.inptg.ravel[4 * r + 3];
@@ -200,10 +230,10 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
   if (p < 1 || p > 4)
     return VariableProblem{view,
                            fmt::format("{}[2] IS NOT A PROJECTION (1 TO 4)", info(view).name)};
-  for (double x : d.parameters)
-    if (!std::isfinite(x))
+  for (std::size_t k = 0; k < d.parameters.size(); ++k)
+    if (!std::isfinite(d.parameters[k]))
       return VariableProblem{view,
-                             fmt::format("{} HOLDS A NUMBER THAT IS NOT FINITE", info(view).name)};
+                             fmt::format("{}[{}] IS NOT A FINITE NUMBER", info(view).name, k + 3)};
   const auto& s = image.points.shape;
   if (!(s.empty() || (s.size() == 3 && s[2] == 2)))
     return VariableProblem{points, fmt::format("{} IS {}, NOT PLANES BY ROWS BY 2",
@@ -215,8 +245,12 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
   if (!(a.empty() || (a.size() == 2 && (a[1] == 6 || a[1] == 4))))
     return VariableProblem{points, fmt::format("THE ARROWS OF {} ARE {}, NOT K BY 6",
                                                info(points).name, shape_words(a))};
-  if (auto q = not_finite(points, image.points)) return q;
-  return not_finite(points, image.arrows);
+  if (auto q = finite_problem(points, image.points)) return q;
+  if (const std::size_t k = first_not_finite(image.arrows.data(), image.arrows.size());
+      k < image.arrows.size())
+    return VariableProblem{points, fmt::format("ARROW {} OF {} IS NOT A FINITE NUMBER",
+                                               k / a[1] + 1, info(points).name)};
+  return std::nullopt;
 }
 
 std::optional<VariableProblem> status_problem(const std::array<int, 10>& status) {

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/state.h"
 
 namespace igds {
@@ -67,11 +68,22 @@ std::vector<std::size_t> expected_shape(const Workspace& ws, Variable v);
 // What is wrong with a surface, in the words of a report's reason ("INPPN IS 8 BY 3, NOT 1600 BY
 // 3"), naming the variable; nullopt when NOCUR ... INTPN agree with each other and with the
 // limits (workspace/kernels/limits.h) and every input number is finite. PATCHES and INTPN may be
-// empty (not interpolated) when `allow_empty_surface`.
+// empty (not interpolated) when `allow_empty_surface`. Their numbers are not read (a save checks
+// every surface so): whoever brings them from outside checks them with finite_problem.
 struct VariableProblem {
   Variable variable;
   std::string reason;
 };
+// The first number of `a`, the value of `v`, that is not finite (a NaN or an infinity), said with
+// its place counted from 1: "POINT 7 OF INPPN IS NOT A FINITE NUMBER", "ROW 3 OF INPTG ...",
+// "PATCH 4 OF PATCHES ...", "ROW 3 COLUMN 5 OF INTPN ...", "PLANE 2 ROW 9 OF IMAGE ...",
+// "DESIM[3] ..."; nullopt when every number is finite. The one check of finite numbers wherever
+// a variable comes from (files, the session, END APL's assignments).
+std::optional<VariableProblem> finite_problem(Variable v, const Array& a);
+// Why the kernels refused to make a surface from inputs that passed these checks (a result that
+// overflowed, a view its points do not allow), in the words of a report's reason: "PATCH 1 IS
+// NOT A FINITE NUMBER" (the commands layer words a kernel's refusals of what the user typed).
+std::string made_surface_reason(const DataError& e);
 // The numbers NOCUR NOSTR INTCU INTST alone: in range and within the limits (checked before any
 // array of those sizes is made).
 std::optional<VariableProblem> size_problem(int nocur, int nostr, int intcu, int intst);

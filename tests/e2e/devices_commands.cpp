@@ -2,9 +2,13 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include <chrono>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -164,6 +168,55 @@ TEST_CASE("PLOT: a plotter that cannot be written, a full disk, words left: noth
         reports::incorrect_command);
   CHECK(ctx.ws.status[1] == 0);
   CHECK(ctx.said.empty());
+}
+
+TEST_CASE("PLOT: a plotter that does not answer holds nothing: a FIFO without a reader, or full") {
+  TempDir dir, elsewhere;
+  DeviceContext ctx(dir.path());
+  ctx.ws.image = std::make_shared<const Image>(surface_image(200, 200));
+  const auto fifo = elsewhere.path() / "plotter";
+  REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+  ctx.opts.plotter = fifo.string();
+  // No reader: the open does not wait for one.
+  CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
+        fmt::format("PLOTTER {} DOES NOT ANSWER; NOTHING PLOTTED", fifo.string()));
+  CHECK(ctx.ws.status[1] == 0);
+  // A reader that takes nothing: the plot (far more than a pipe holds) waits as long as the
+  // plotter's patience, then breaks off.
+  const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  REQUIRE(reader >= 0);
+  ctx.opts.plotter_patience = std::chrono::milliseconds(50);
+  CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
+        fmt::format("PLOTTER {} DOES NOT ANSWER; THE PLOT IS INCOMPLETE", fifo.string()));
+  ::close(reader);
+  CHECK(ctx.ws.status[1] == 0);
+  CHECK(ctx.said.empty());
+}
+
+TEST_CASE("PLOT: a link is followed to a device, never to a file") {
+  TempDir dir, elsewhere;
+  DeviceContext ctx(dir.path());
+  ctx.ws.image = std::make_shared<const Image>(surface_image(3, 3));
+  const auto file = elsewhere.path() / "someone's.txt", link = elsewhere.path() / "plotter";
+  write_file(file, "kept\n");
+  std::filesystem::create_symlink(file, link);
+  ctx.opts.plotter = link.string();
+  CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }) ==
+        fmt::format("CANNOT OPEN PLOTTER {} (A SYMBOLIC LINK TO A FILE); NOTHING PLOTTED",
+                    link.string()));
+  CHECK(read_file(file) == "kept\n");
+  // A dangling link makes nothing where it points.
+  const auto dangling = elsewhere.path() / "dangling";
+  std::filesystem::create_symlink(elsewhere.path() / "made", dangling);
+  ctx.opts.plotter = dangling.string();
+  CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }).starts_with("CANNOT OPEN PLOTTER"));
+  CHECK(!std::filesystem::exists(elsewhere.path() / "made"));
+  // A link to a device (as /dev/serial/by-id names serial lines) is the device.
+  const auto device = elsewhere.path() / "device";
+  std::filesystem::create_symlink("/dev/null", device);
+  ctx.opts.plotter = device.string();
+  CHECK(report_of([&] { ctx.run(plot_command, "EBCDIC"); }).empty());
+  CHECK(ctx.ws.status[1] == 2);
 }
 
 TEST_CASE("PLOT: every PLOTnnnn number taken") {

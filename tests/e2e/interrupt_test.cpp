@@ -34,12 +34,16 @@ struct Threads {
   int seen = 0, receiving = 0;
 };
 // Whether the thread whose status file this is blocks SIGINT; a thread that has ended (its file
-// gone, or read as it went) is not counted.
+// gone, or read as it went, or its state dead or zombie: the kernel then shows no signal blocked)
+// is not counted.
 bool blocks_interrupts(const fs::path& status_file) {
   std::ifstream status(status_file);
-  for (std::string line; std::getline(status, line);)
+  for (std::string line; std::getline(status, line);) {
+    if (line.starts_with("State:") && line.find_first_of("XZ", 6) != std::string::npos)
+      return true;
     if (line.starts_with("SigBlk:"))
       return std::stoull(line.substr(7), nullptr, 16) & (1ull << (SIGINT - 1));
+  }
   return true;
 }
 Threads threads_of(pid_t pid) {

@@ -10,6 +10,8 @@
 
 #include "interp/apl/apl_session.h"
 
+#include "tests/fuzz/fuzz.h"
+
 namespace {
 
 using igds::apl::Value;
@@ -37,7 +39,9 @@ struct FuzzHost : igds::apl::Host {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+namespace igds::fuzz {
+
+int apl(const std::uint8_t* data, std::size_t size) {
   std::deque<std::string> lines;
   std::string_view text(reinterpret_cast<const char*>(data), size);
   while (!text.empty()) {
@@ -65,3 +69,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(apl)

@@ -3,9 +3,7 @@
 // returns draws, writes and reads back; its drawing, in space and projected, writes and reads
 // back, and written straight from the drawing (as EXPORT DUCT writes) is the same text. Seeds:
 // tests/fuzz/corpus/duct (the golden and the hand-written pictures).
-//   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DIGDS_FUZZ=ON
-//   cmake --build build-fuzz --target fuzz_duct
-//   build-fuzz/fuzz_duct -max_total_time=300 fuzz-work tests/fuzz/corpus/duct
+//   scripts/fuzz 300 duct
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -17,7 +15,11 @@
 #include "workspace/kernels/data_error.h"
 #include "workspace/text_out.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+#include "tests/fuzz/fuzz.h"
+
+namespace igds::fuzz {
+
+int duct(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   DuctPicture picture;
@@ -53,3 +55,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(duct)

@@ -10,7 +10,11 @@
 
 #include "devices/gin.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+#include "tests/fuzz/fuzz.h"
+
+namespace igds::fuzz {
+
+int gin(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   for (const int bits : {10, 12}) {
@@ -26,3 +30,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(gin)

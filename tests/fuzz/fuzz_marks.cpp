@@ -13,7 +13,11 @@
 #include "workspace/exchange/mpdp_tape.h"
 #include "workspace/kernels/data_error.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+#include "tests/fuzz/fuzz.h"
+
+namespace igds::fuzz {
+
+int marks(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
   using namespace igds::exchange;
   if (size == 0) return 0;
@@ -42,3 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(marks)

@@ -4,11 +4,8 @@
 // Whatever they say, igds answers each with READY or a report and never stops otherwise, and the
 // session it saves reads back as the workspace it had. Seeds: tests/fuzz/corpus/session (the
 // examples' command files).
-//   cmake -S . -B build-fuzz -G Ninja -DCMAKE_CXX_COMPILER=clang++ -DIGDS_FUZZ=ON
-//   cmake --build build-fuzz --target fuzz_session
-//   build-fuzz/tests/fuzz_session -max_total_time=300 fuzz-work tests/fuzz/corpus/session
-#include <unistd.h>
-
+//   scripts/fuzz 300 session
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -17,20 +14,20 @@
 
 #include "interp/interpreter.h"
 #include "interp/terminal.h"
+#include "tests/fuzz/fuzz.h"
 #include "tests/support/scripted.h"
 #include "workspace/disk/session.h"
+#include "workspace/variables.h"
 
 namespace fs = std::filesystem;
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+namespace igds::fuzz {
+
+int session(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
   if (size == 0) return 0;
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("igds-fuzz-session-" + std::to_string(::getpid()));
-    fs::create_directories(d);
-    return d;
-  }();
-  for (const auto& e : fs::directory_iterator(dir)) fs::remove_all(e.path());
+  const fs::path& dir = scratch("session");
+  empty(dir);
 
   const std::string_view text(reinterpret_cast<const char*>(data) + 1, size - 1);
   test::ScriptedSource lines(false, true);
@@ -56,7 +53,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     kept = interpreter.workspace();
     if (!interpreter.saved()) std::abort();  // the scratch disk has room
   }
+  // Whatever was typed, nothing that is not a finite number entered the workspace.
+  if (surface_problem(kept) || finite_problem(Variable::patches, kept.patches) ||
+      finite_problem(Variable::intpn, kept.intpn))
+    std::abort();
+  const Variable slots[] = {Variable::image, Variable::temp1, Variable::temp2};
+  const ImageRef* images[] = {&kept.image, &kept.temp1, &kept.temp2};
+  for (int k = 0; k < 3; ++k)
+    if (*images[k] && images[k]->made() && image_problem(**images[k], slots[k])) std::abort();
   Session again(disk);
-  if (!(again.load() == kept)) std::abort();
+  if (!same_workspace(again.load(), kept)) std::abort();
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(session)

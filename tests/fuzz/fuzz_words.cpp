@@ -14,7 +14,11 @@
 #include "interp/words.h"
 #include "workspace/numbers/typed.h"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+#include "tests/fuzz/fuzz.h"
+
+namespace igds::fuzz {
+
+int words(const std::uint8_t* data, std::size_t size) {
   using namespace igds;
   const std::string_view line(reinterpret_cast<const char*>(data), size);
   (void)is_comment_line(line);
@@ -31,3 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   return 0;
 }
+
+}  // namespace igds::fuzz
+
+IGDS_FUZZ_ENTRY(words)

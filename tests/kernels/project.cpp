@@ -261,3 +261,19 @@ TEST_CASE("project() is the four projections, and projection_map() the same as a
           project({Projection::conic, {0, 0, 0}}, centre, in, out);
         }) == DataError::Problem::behind_eye);
 }
+
+TEST_CASE("an axis or plane beyond an int's range is refused before it is made an integer") {
+  const double points[] = {0, 0, 0, 1, 2, 3};
+  double out[4];
+  for (const Projection projection : {Projection::isometric, Projection::orthogonal}) {
+    for (const double code : {-1e308, 1e308, 4294967297.0, 1.5}) {
+      CAPTURE(code);
+      try {
+        project({projection, {code, 30, 0}}, {}, Vec3View(points, 2), MutablePoint2View(out, 2));
+        FAIL("projected");
+      } catch (const DataError& e) {
+        CHECK(e.problem == DataError::Problem::projection_parameters);
+      }
+    }
+  }
+}

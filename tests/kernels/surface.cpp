@@ -520,3 +520,22 @@ TEST_CASE("a single curve or stringer is the spline of its points, without patch
     CHECK(again.shape[curve ? 1 : 0] == std::size_t(n + (n - 1)));
   }
 }
+
+TEST_CASE("first_not_finite finds the first number that is not finite, in large arrays too") {
+  // Large enough to be read on several cores: the first of the whole array, not of a slice.
+  for (const std::size_t n :
+       {std::size_t(0), std::size_t(5), std::size_t(1) << 20, (std::size_t(3) << 20) + 7}) {
+    CAPTURE(n);
+    std::vector<double> v(n);
+    for (std::size_t k = 0; k < n; ++k) v[k] = (k % 3 == 0 ? -1.0 : 1.0) * double(k % 1000) * 1e300;
+    CHECK(first_not_finite(v.data(), n) == n);
+    if (n == 0) continue;
+    for (const std::size_t at : {std::size_t(0), n / 3, n / 2, n / 2 + 1, n - 1}) {
+      std::vector<double> w = v;
+      w[at] = std::nan("");
+      if (at + 5 < n) w[at + 5] = HUGE_VAL;
+      if (at > 0) w[n - 1] = -HUGE_VAL;
+      CHECK(first_not_finite(w.data(), n) == at);
+    }
+  }
+}

@@ -1,5 +1,5 @@
 // Workspaces with every variable filled, for the disk tests: values that a careless copy would
-// change (-0.0, denormals, NaN payloads, huge and tiny numbers) in every array.
+// change (-0.0, denormals, huge and tiny numbers) in every array.
 #pragma once
 
 #include <bit>
@@ -19,8 +19,8 @@
 
 namespace igds::test {
 
-// Deterministic values, a few of them special; NaNs only where `finite` is false (the inputs
-// and images of a surface must be finite numbers: workspace/variables.h).
+// Deterministic values, a few of them special; NaNs only where `finite` is false (no variable of
+// the workspace holds a number that is not finite: workspace/variables.h, finite_problem).
 inline void fill(Array& a, std::uint64_t seed, bool finite = true) {
   std::uint64_t x = seed * 0x9E3779B97F4A7C15ull + 1;
   for (std::size_t i = 0; i < a.ravel.size(); ++i) {
@@ -39,7 +39,7 @@ inline void fill(Array& a, std::uint64_t seed, bool finite = true) {
         if (!finite) v = std::bit_cast<double>(0x7FF8000000000123ull);  // NaN with a payload
         break;
       case 11:
-        v = 1e300;
+        v = 1e150;  // large, yet the surface of such points interpolates to finite numbers
         break;
       case 13:
         v = -1.0 / 3.0;
@@ -81,10 +81,10 @@ inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool
   for (std::size_t r = 0; r < 2 * (cu + st); ++r)  // column 4: a point number
     ws.inptg.ravel[4 * r + 3] = double(r % (cu * st) + 1);
   ws.patches = Array({cu - 1, st - 1, 3, 4, 4});
-  fill(ws.patches, 3, false);
+  fill(ws.patches, 3);
   ws.intpn = Array({cu + static_cast<std::size_t>(intcu) * (cu - 1),
                     st + static_cast<std::size_t>(intst) * (st - 1), 3});
-  fill(ws.intpn, 4, false);
+  fill(ws.intpn, 4);
   ws.changes.derived = false;
   if (images) {
     ws.image = std::make_shared<const Image>(

@@ -3,6 +3,9 @@
 
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
+#include "tests/workspace/disk_fixtures.h"
 #include "workspace/kernels/data_error.h"
 
 namespace igds {
@@ -34,6 +37,28 @@ TEST_CASE("a deferred image is made once, at its first look; a failed make again
   CHECK(makes == 2);
   CHECK(shared.made());
   CHECK(ref.recipe() == std::pair{std::uint64_t{5}, desim});
+}
+
+TEST_CASE("a projection that overflows is refused, naming the point, row or tangent it came from") {
+  // Finite points near the largest numbers: the isometric view adds coordinates that overflow.
+  Workspace ws = test::make_interpolated(3, 3, 1, 1);
+  const View isometric{Projection::isometric, {3, 30, 0}};
+  auto refused = [](auto&& make) {
+    try {
+      make();
+    } catch (const DataError& e) {
+      CHECK(e.problem == DataError::Problem::image_not_finite);
+      return fmt::format("{} {} {}", e.variable, e.number, e.column);
+    }
+    return std::string("MADE");
+  };
+  CHECK(refused([&] { return input_image(ws, isometric); }) == "MADE");
+  Workspace huge = ws;
+  for (std::size_t c = 0; c < 3; ++c) huge.inppn.ravel[3 * 4 + c] = c == 1 ? -1.7e308 : 1.7e308;
+  CHECK(refused([&] { return input_image(huge, isometric); }) == "INPPN 5 1");
+  for (std::size_t c = 0; c < 3; ++c)
+    huge.intpn.ravel[3 * (5 * 2 + 3) + c] = c == 1 ? -1.7e308 : 1.7e308;
+  CHECK(refused([&] { return surface_image(huge, isometric); }) == "INTPN 3 4");
 }
 
 }  // namespace

@@ -274,15 +274,23 @@ TEST_CASE("the session keeps the journal: read back at start, a damaged one refu
     table.journal = disk::encode_journal(j, loaded);
   }
   test::rewrite_file(file, disk::frame("IGDSCONT", disk::encode_session(table), 2));
+  {
+    Session session(disk);
+    Workspace loaded = session.load();
+    REQUIRE(session.notices().size() == 1);
+    CHECK(session.notices()[0] ==
+          "UNDO JOURNAL IN BINSAVE.IGDSCONT DAMAGED (JOURNAL: STEPS DO "
+          "NOT FOLLOW): NOTHING TO UNDO");
+    // The workspace itself is kept.
+    test::check_same_workspace(loaded, states[0]);
+    Journal j = session.take_journal(loaded);
+    CHECK(j.undo_count() + j.redo_count() == 0);
+    // The next save writes the session without it, though nothing else changed.
+    session.save(loaded, &j);
+  }
   Session session(disk);
-  Workspace loaded = session.load();
-  REQUIRE(session.notices().size() == 1);
-  CHECK(session.notices()[0] ==
-        "UNDO JOURNAL IN BINSAVE.IGDSCONT DAMAGED (JOURNAL: STEPS DO NOT FOLLOW): NOTHING TO UNDO");
-  // The workspace itself is kept.
-  test::check_same_workspace(loaded, states[0]);
-  Journal j = session.take_journal(loaded);
-  CHECK(j.undo_count() + j.redo_count() == 0);
+  session.load();
+  CHECK(session.notices().empty());
 }
 
 TEST_CASE("an image the session keeps by its recipe is not made to be put in the journal") {
@@ -465,4 +473,40 @@ TEST_CASE("an UNDO whose state does not interpolate leaves PATCHES and INTPN as 
   CHECK(ws.patches == mended.patches);
   CHECK(ws.intpn == mended.intpn);
   CHECK(ws.inppn == mended.inppn);
+}
+
+TEST_CASE("an UNDO whose state overflows is refused, PATCHES and INTPN as they were bit for bit") {
+  // A state whose tangent is finite but so large that its patches are not (read from a forged
+  // journal, or left by END APL): the interpolation into the workspace's own arrays is refused
+  // after it wrote them, and they are made again as they were.
+  Workspace ws = test::make_interpolated(5, 6, 2, 3);
+  saved(ws);
+  Journal j(ws);
+  CHECK(command(j, ws, "APL", [&] {
+    ws.inptg.ravel[0] = 1e308;
+    ws.changes.edited(Edits::none(), [] {
+      Edits e = Edits::none();
+      e.part(0, 4);
+      return e;
+    }());
+  }));
+  CHECK(command(j, ws, "CHANGE TANGENTS", [&] {
+    ws.inptg.ravel[0] = 1;
+    Edits e = Edits::none();
+    e.part(0, 4);
+    ws.changes.edited(Edits::none(), e);
+    Surface s = interpolate(surface_input(ws));
+    ws.patches = std::move(s.patches);
+    ws.intpn = std::move(s.intpn);
+  }));
+  const Workspace mended = ws;
+  try {
+    j.undo(ws);
+    FAIL("the state was not refused");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::patch_not_finite);
+    CHECK(e.number == 1);
+  }
+  test::check_same_surface(ws, mended);
+  CHECK(j.undo_count() == 2);
 }

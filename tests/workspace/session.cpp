@@ -260,7 +260,7 @@ TEST_CASE("an interpolated surface is saved as its inputs, its images as recipes
   CHECK(back.temp2->drawn_from != 0);
 }
 
-TEST_CASE("an image read from a file is kept as a second name of that file") {
+TEST_CASE("an image read from a file is kept as the session's own copy of that file") {
   Scratch s;
   Workspace ws = test::make_interpolated(40, 40, 10, 10);
   store_image(s.disk, "PIC", *ws.image);
@@ -269,15 +269,62 @@ TEST_CASE("an image read from a file is kept as a second name of that file") {
   open->save(ws);
   ws.image = std::make_shared<const Image>(load_image(s.disk, "PIC"));
   ws.temp1 = ws.image;
-  std::size_t w0 = bytes_written_so_far();
   open->save(ws);
-  CHECK(bytes_written_so_far() - w0 < 4096);
-  // The user's file may go: the session has its own name for it.
-  fs::remove(s.disk.path("PIC", "IGDSIMAG"));
+  const auto copies = files_of_type(s.dir.path(), ".IGDSVIMG");
+  REQUIRE(copies.size() == 1);
+  // Its own file, never a second name of the user's (which a copy over it in place changes).
+  struct stat user, kept;
+  REQUIRE(::stat(s.disk.path("PIC", "IGDSIMAG").c_str(), &user) == 0);
+  REQUIRE(::stat((s.dir.path() / *copies.begin()).c_str(), &kept) == 0);
+  CHECK(user.st_ino != kept.st_ino);
+  CHECK(user.st_nlink == 1);
+  SUBCASE("the user's file copied over in place, as cp does") {
+    store_image(s.disk, "OTHER", *ws.temp2);
+    const std::string other = test::read_file(s.disk.path("OTHER", "IGDSIMAG"));
+    std::ofstream(s.disk.path("PIC", "IGDSIMAG"), std::ios::binary | std::ios::trunc)
+        .write(other.data(), static_cast<long>(other.size()));
+  }
+  SUBCASE("the user's file removed") {
+    fs::remove(s.disk.path("PIC", "IGDSIMAG"));
+  }
   open.reset();
-  const Workspace back = load_fresh(s.disk);
+  std::vector<std::string> notices;
+  const Workspace back = load_fresh(s.disk, &notices);
+  CHECK(notices.empty());
   test::check_same_workspace(back, ws);
   CHECK(back.image == back.temp1);  // one image, as before
+}
+
+TEST_CASE("a damaged copy of an image file costs that image alone, kept aside with a notice") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(40, 40, 10, 10);
+  store_image(s.disk, "PIC", *ws.temp2);
+  {
+    Session session(s.disk);
+    session.load();
+    ws.temp1 = std::make_shared<const Image>(load_image(s.disk, "PIC"));
+    session.save(ws);
+  }
+  const auto copies = files_of_type(s.dir.path(), ".IGDSVIMG");
+  REQUIRE(copies.size() == 1);
+  const fs::path copy = s.dir.path() / *copies.begin();
+  std::string bytes = test::read_file(copy);
+  bytes[bytes.size() / 2] ^= 1;
+  test::rewrite_file(copy, bytes);
+  std::vector<std::string> notices;
+  Workspace back = load_fresh(s.disk, &notices);
+  const std::string name = copies.begin()->substr(0, 8);
+  REQUIRE(notices.size() == 1);
+  CHECK(notices[0] == fmt::format("TEMP1 IN BINSAVE.IGDSCONT DAMAGED ({}.IGDSVIMG: CHECKSUM): "
+                                  "KEPT AS {}.IGDSBAD; TEMP1 STARTS EMPTY",
+                                  name, name));
+  // The rest of the workspace is there: surface, the other images.
+  test::check_same_surface(back, ws);
+  CHECK(test::same_bits(back.image, ws.image));
+  CHECK(!back.temp1);
+  CHECK(test::same_bits(back.temp2, ws.temp2));
+  CHECK(fs::exists(s.dir.path() / (name + ".IGDSBAD")));
+  CHECK(!fs::exists(copy));
 }
 
 TEST_CASE("a damaged session is never half-loaded: kept aside, empty start, notice") {
@@ -584,21 +631,44 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
         t.intpn.shape = {2, 2};
       },
       "FORMAT");
-  crafted(
+  // An image that does not read costs that image alone (its slot starts empty, said), and a
+  // claim of a huge one costs nothing before it is refused.
+  auto image_crafted = [&](auto&& change, const std::string& notice) {
+    CAPTURE(notice);
+    disk::SessionTable t = table;
+    change(t);
+    test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(t), 2));
+    std::vector<std::string> notices;
+    Workspace back = load_fresh(s.disk, &notices);
+    test::check_same_surface(back, small);
+    CHECK(!back.image);
+    CHECK(!back.temp1);
+    CHECK(notices == std::vector<std::string>{notice});
+    // The session without it is written at the next save, the notice not said again.
+    {
+      Session session(s.disk);
+      Workspace ws = session.load();
+      session.save(ws);
+    }
+    notices.clear();
+    load_fresh(s.disk, &notices);
+    CHECK(notices.empty());
+  };
+  image_crafted(
       [](disk::SessionTable& t) {
         t.images[0].kind = disk::ImageEntry::recipe;
         t.images[0].record = t.current;
         t.images[0].desim.projection = static_cast<Projection>(9);
       },
-      "IMAGE: DESIM[2] IS NOT A PROJECTION (1 TO 4)");
-  // A claim of a huge image costs nothing before it is refused.
-  crafted(
+      "IMAGE IN BINSAVE.IGDSCONT DAMAGED (IMAGE: DESIM[2] IS NOT A PROJECTION (1 TO 4)): IMAGE "
+      "STARTS EMPTY");
+  image_crafted(
       [](disk::SessionTable& t) {
         t.images[1].kind = disk::ImageEntry::stored;
         t.images[1].data.pieces = {
             disk::Piece{true, {}, {1, (std::uint64_t(1) << 40) + 32, 0}, std::uint64_t(1) << 40}};
       },
-      "IMAGE: TOO LARGE");
+      "TEMP1 IN BINSAVE.IGDSCONT DAMAGED (IMAGE: TOO LARGE): TEMP1 STARTS EMPTY");
 }
 
 TEST_CASE("images kept by recipe are made when first looked at, not at start") {
@@ -649,6 +719,30 @@ TEST_CASE("an image kept by a recipe that cannot be made: nothing said at start,
   CHECK(!back.image.made());
   // Every look says it again.
   CHECK_THROWS_AS(static_cast<void>(*back.image), DataError);
+}
+
+TEST_CASE("an image refused at start costs that image, not the surface") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  auto table =
+      disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
+  REQUIRE(table.derived);
+  table.images[0].kind = disk::ImageEntry::recipe;
+  table.images[0].record = table.current;
+  table.images[0].desim.projection = static_cast<Projection>(9);
+  test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
+  Session session(s.disk);
+  Workspace loaded = session.load();
+  REQUIRE(session.notices().size() == 1);
+  CHECK(session.notices()[0].starts_with("IMAGE IN BINSAVE.IGDSCONT DAMAGED (IMAGE: "));
+  test::check_same_surface(loaded, ws);
+  CHECK(!loaded.image);
+  CHECK(test::same_bits(loaded.temp2, ws.temp2));
 }
 
 TEST_CASE("the session never saves a workspace that the next start would refuse") {

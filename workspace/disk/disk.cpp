@@ -13,6 +13,7 @@
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
 #include "workspace/exchange/duct.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/interrupt.h"
 #include "workspace/kernels/limits.h"
 #include "workspace/kernels/surface.h"
@@ -293,8 +294,20 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
                       fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name), kept);
   }
   // PATCHES and INTPN as igds interpolates them are not saved with the session: they are made
-  // again from the inputs. Those of the file are kept as they are when they differ.
-  Surface surface = interpolate(surface_input(in));
+  // again from the inputs. Those of the file are kept as they are when they differ, once every
+  // number was found finite (the interpolation's too: inputs near the largest numbers overflow).
+  Surface surface;
+  try {
+    surface = interpolate(surface_input(in));
+    check_finite(surface.patches, surface.intpn);
+  } catch (const DataError& e) {
+    const bool overflow = e.problem == DataError::Problem::patch_not_finite ||
+                          e.problem == DataError::Problem::grid_point_not_finite;
+    throw damaged(
+        n, "IGDSDATA",
+        overflow ? "ITS SURFACE OVERFLOWS: " + made_surface_reason(e) : made_surface_reason(e),
+        kept);
+  }
   const bool derived =
       !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);
   if (derived) {
@@ -304,6 +317,8 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
     surface = {};
     in.patches = none ? Array{} : copied(patches);
     in.intpn = none ? Array{} : copied(intpn);
+    for (auto [v, a] : {std::pair{Variable::patches, &in.patches}, {Variable::intpn, &in.intpn}})
+      if (auto p = finite_problem(v, *a)) throw damaged(n, "IGDSDATA", p->reason, kept);
   }
   ws.nocur = in.nocur;
   ws.nostr = in.nostr;

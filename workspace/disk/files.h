@@ -80,9 +80,11 @@ std::vector<std::string> folder_entries(const std::filesystem::path& dir);
 std::string put_aside(const std::filesystem::path& dir, std::string_view name,
                       std::string_view file);
 
-// A second name for a file of the same folder (a hard link), for a file igds never writes again;
-// false when the file system has no such links (the caller copies instead).
-bool link_file(const std::filesystem::path& from, const std::filesystem::path& to);
+// A copy of the file `from` as the new file `to` (created as write_new_file creates, and synced):
+// the same blocks shared where the file system can (a reflink, FICLONE), else the bytes copied by
+// the system. Never a second name of `from`: a file changed in place later changes no copy.
+// False, and nothing made, when `from` is not there, is a link or is not a plain file.
+bool copy_file(const std::filesystem::path& from, const std::filesystem::path& to);
 
 // Test hooks. The writes of this process fail with ENOSPC once `limit` more bytes have been
 // written (nullopt: no limit): a full disk where no small file system can be mounted.

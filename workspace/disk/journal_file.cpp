@@ -111,9 +111,12 @@ const void* identity(const ImageRef& image) {
 }  // namespace
 
 std::string encode_journal(const Journal& journal, const Workspace& ws) {
+  return encode_journal(journal, images_of(ws));
+}
+
+std::string encode_journal(const Journal& journal, const ImageSlots& slots) {
   const std::span<const JournalStep> steps = journal.steps();
   const std::size_t position = journal.position();
-  const ImageSlots slots = images_of(ws);
   if (steps.empty()) return {};
 
   // How each image is kept, for the states first .. last; a step whose image can be kept in no
@@ -237,7 +240,7 @@ std::string encode_journal(const Journal& journal, const Workspace& ws) {
   return w.str();
 }
 
-Journal decode_journal(std::string_view bytes, const Workspace& ws) {
+Journal decode_journal(std::string_view bytes, const Workspace& ws, std::array<bool, 3> lost) {
   Reader r(bytes);
   if (r.u32() != journal_version) throw Damage("FORMAT");
   const std::uint32_t count = r.u32(), position = r.u32();
@@ -248,12 +251,12 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
     Description desim;
     ImageRef image;
   };
-  // Each count is checked against what is left before anything is made of that size.
+  // Each count is checked before anything is made of that size: the steps name six images
+  // each, so the table holds no more than that.
   const std::uint32_t image_count = r.u32();
-  if (image_count > r.left()) throw Damage("FORMAT");
+  if (image_count > 6 * std::size_t(count) || image_count > r.left() / 5) throw Damage("FORMAT");
   std::vector<Entry> entries(image_count);
   const ImageSlots slots = images_of(ws);
-  std::vector<std::size_t> wanted;
   for (Entry& e : entries) {
     const std::uint8_t kind = r.u8();
     if (kind < slot_image || kind > stored_image) throw Damage("FORMAT");
@@ -270,7 +273,7 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
     }
     e.number = r.u32();
     if (e.kind == slot_image) {
-      if (e.number >= slots.size() || !slots[e.number]) throw Damage("FORMAT");
+      if (e.number >= slots.size() || (!slots[e.number] && !lost[e.number])) throw Damage("FORMAT");
       e.image = slots[e.number];
     } else {
       if (e.number > count) throw Damage("FORMAT");
@@ -278,7 +281,6 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
       Image probe;
       probe.desim = e.desim;
       if (auto p = image_problem(probe)) throw Damage("IMAGE: " + p->reason);
-      wanted.push_back(e.number);
     }
   }
   std::vector<JournalStep> steps(count);
@@ -303,22 +305,18 @@ Journal decode_journal(std::string_view bytes, const Workspace& ws) {
   r.finish();
 
   Journal journal;
-  std::vector<JournalState> inputs;
-  if (auto p = journal.rebuild(ws, std::move(steps), position, wanted, inputs))
-    throw Damage("JOURNAL: " + *p);
-  // Images drawn from a state: made when first looked at, from that state's inputs.
-  std::size_t w = 0;
+  if (auto p = journal.rebuild(ws, std::move(steps), position)) throw Damage("JOURNAL: " + *p);
+  // Images drawn from a state: made when first looked at, from that state's inputs, which are
+  // made again then from the steps (one copy of the inputs however many states are named).
+  std::shared_ptr<const JournalStates> states;
   for (Entry& e : entries) {
     if (e.kind != recipe_image) continue;
-    auto source = std::make_shared<Workspace>();
-    const JournalState& state = inputs[w++];
-    state.settings.apply_to(*source);
-    source->inppn = state.inppn;
-    source->inptg = state.inptg;
-    source->changes.surface = state.generation;
-    if (!source->has_input()) throw Damage("JOURNAL: IMAGE OF NO SURFACE");
-    e.image = image_by_recipe(std::move(source), e.desim);
-    journal.remember(e.image, state.generation, e.desim);
+    if (!states) states = std::make_shared<const JournalStates>(journal, ws);
+    const std::size_t k = e.number;
+    if (states->settings_of(k).nocur <= 0) throw Damage("JOURNAL: IMAGE OF NO SURFACE");
+    const std::uint64_t generation = states->generation_of(k);
+    e.image = image_by_recipe([states, k] { return states->inputs_of(k); }, generation, e.desim);
+    journal.remember(e.image, generation, e.desim);
   }
   std::span<JournalStep> filled = journal.steps_to_complete();
   for (std::size_t k = 0; k < filled.size(); ++k) {

@@ -4,6 +4,7 @@
 // points when small. A journal read back is checked like everything else on the disk.
 #pragma once
 
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -25,9 +26,13 @@ inline constexpr std::size_t journal_values_limit = 512u << 10;
 
 // The journal saved with `ws` (its images are named by slot, not written again).
 std::string encode_journal(const Journal& journal, const Workspace& ws);
+// The same when the session keeps only `slots` of the workspace's images (one it could not draw
+// is kept out: the journal must not name it by its slot).
+std::string encode_journal(const Journal& journal, const ImageSlots& slots);
 
 // The journal saved with `ws`, checked (Journal::rebuild, image_problem); throws Damage with the
-// reason for anything malformed or that does not fit `ws`.
-Journal decode_journal(std::string_view bytes, const Workspace& ws);
+// reason for anything malformed or that does not fit `ws`. `lost`: the slots (IMAGE, TEMP1,
+// TEMP2) whose image the session could not read back; the states that had it have no image.
+Journal decode_journal(std::string_view bytes, const Workspace& ws, std::array<bool, 3> lost = {});
 
 }  // namespace igds::disk

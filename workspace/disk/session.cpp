@@ -5,13 +5,17 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstring>
 #include <map>
+#include <new>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "workspace/disk/files.h"
 #include "workspace/disk/frame.h"
@@ -84,11 +88,18 @@ struct Session::State {
   std::unique_ptr<disk::DiskLock> lock;
   SessionTable saved;
   bool saved_known = false;        // false: the next save writes everything
+  bool rewrite = false;            // the session file differs from `saved`: written at next save
   std::set<std::string> obsolete;  // files of a version 1 session, removed after the next save
   std::uint32_t next_number = 1;
   std::optional<Journal> journal;  // the undo journal read by the last load
-  // During a load: the variable files read and checked so far, and their payloads.
-  mutable std::map<std::uint32_t, std::pair<disk::MappedFile, std::string_view>> checked_;
+  // During a load: the variable files read and checked so far, their payloads and the reference
+  // they were checked against.
+  struct Checked {
+    disk::MappedFile file;
+    std::string_view payload;
+    FileRef ref;
+  };
+  mutable std::map<std::uint32_t, Checked> checked_;
 
   explicit State(const Disk& d) : disk(d) {}
 
@@ -188,19 +199,29 @@ struct Session::State {
       return b;
     }
 
-    // A second name for the IGDSIMAG file an image was read from, if it is still that file.
-    std::optional<FileRef> link(const Image& image) {
+    // The session's own copy of the IGDSIMAG file an image was read from (a reflink where the
+    // file system shares blocks), if that file is still the one read: never a second name of
+    // the user's file, which a copy over it in place would change under the session.
+    std::optional<FileRef> copy(const Image& image) {
       const std::uint32_t n = state.new_number({&state.saved, &next});
       const auto to = state.file_path(n, linked_type);
-      if (!disk::link_file(image.file, to)) return std::nullopt;
       written.emplace_back(n, linked_type);
+      if (!disk::copy_file(image.file, to)) {
+        written.pop_back();
+        return std::nullopt;
+      }
+      disk::Writer encoded;
+      encoded.image(image);
+      const std::uint64_t expected =
+          encoded.size() + disk::frame_header_bytes + disk::frame_trailer_bytes;
       struct stat st;
       std::uint64_t sum = 0;
       bool same = false;
       int fd = ::open(to.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
       if (fd >= 0) {
         char tail[8];
-        same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 8 &&
+        same = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+               static_cast<std::uint64_t>(st.st_size) == expected &&
                ::pread(fd, tail, 8, st.st_size - 8) == 8;
         if (same) sum = disk::trailing_checksum(std::string_view(tail, 8));
         ::close(fd);
@@ -210,7 +231,7 @@ struct Session::State {
         written.pop_back();
         return std::nullopt;
       }
-      return FileRef{n, static_cast<std::uint64_t>(st.st_size), sum};
+      return FileRef{n, expected, sum};
     }
 
     void undo() {
@@ -233,13 +254,17 @@ struct Session::State {
 
   // ---- reading -------------------------------------------------------------------------
 
-  // The bytes of a blob into `out` (blob.size() bytes), each file checked.
-  // The payload of a piece's file, checked once per load (records share pieces).
+  // The payload of a piece's file, read and checked once per load (records share pieces); a
+  // piece that names a file already read with another length or checksum, or another size than
+  // the file holds, is damage (a session is checked, never trusted: docs/disk.md).
   std::string_view piece_payload(const Piece& p) const {
-    if (auto known = checked_.find(p.file.number); known != checked_.end())
-      return known->second.second;
     const std::string name =
         fmt::format("{}.{}", disk::variable_file_name(p.file.number), pieces_type);
+    if (auto known = checked_.find(p.file.number); known != checked_.end()) {
+      if (!(known->second.ref == p.file) || known->second.payload.size() != p.size)
+        throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
+      return known->second.payload;
+    }
     std::optional<disk::MappedFile> file;
     try {
       file.emplace(file_path(p.file.number, pieces_type), max_piece_file_bytes);
@@ -257,26 +282,38 @@ struct Session::State {
     if (bytes.size() != p.file.length || disk::trailing_checksum(bytes) != p.file.sum ||
         payload.size() != p.size)
       throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
-    checked_.emplace(p.file.number, std::pair{std::move(*file), payload});
+    checked_.emplace(p.file.number, Checked{std::move(*file), payload, p.file});
     return payload;
   }
 
-  void read_blob(const Blob& b, char* out) const {
+  // The bytes of a blob into `out`, which holds `room` bytes: each piece is copied only once
+  // its size is known to be what its bytes are and to fit what is left.
+  void read_blob(const Blob& b, char* out, std::size_t room) const {
     for (const Piece& p : b.pieces) {
-      if (!p.in_file) {
-        std::memcpy(out, p.bytes.data(), p.bytes.size());
-      } else {
-        const std::string_view payload = piece_payload(p);
-        std::memcpy(out, payload.data(), payload.size());
-      }
-      out += p.size;
+      const std::string_view bytes = p.in_file ? piece_payload(p) : std::string_view(p.bytes);
+      if (bytes.size() != p.size || bytes.size() > room) throw disk::Damage("FORMAT");
+      if (!bytes.empty()) std::memcpy(out, bytes.data(), bytes.size());
+      out += bytes.size();
+      room -= bytes.size();
     }
+    if (room != 0) throw disk::Damage("FORMAT");
   }
 
+  // The files of a blob read and checked (mapped, not copied): what its pieces say they hold is
+  // there before anything of that size is made.
+  void check_pieces(const Blob& b) const {
+    for (const Piece& p : b.pieces)
+      if (p.in_file) piece_payload(p);
+  }
+
+  // An array whose shape was checked against the variables' table: its size is known, and held
+  // by its files, before anything of that size is made.
   Array read_array(const StoredArray& s) const {
+    const std::size_t bytes = Array::count(s.shape) * sizeof(double);
+    if (bytes != s.ravel.size()) throw disk::Damage("FORMAT");
+    check_pieces(s.ravel);
     Array a(s.shape);
-    if (a.size() * sizeof(double) != s.ravel.size()) throw disk::Damage("FORMAT");
-    read_blob(s.ravel, reinterpret_cast<char*>(a.data()));
+    read_blob(s.ravel, reinterpret_cast<char*>(a.data()), bytes);
     return a;
   }
 
@@ -320,8 +357,9 @@ struct Session::State {
     }
     if (e.kind == ImageEntry::stored) {
       if (e.data.size() > max_image_file_bytes()) throw disk::Damage("IMAGE: TOO LARGE");
+      check_pieces(e.data);
       std::string bytes(e.data.size(), '\0');
-      read_blob(e.data, bytes.data());
+      read_blob(e.data, bytes.data(), bytes.size());
       disk::Reader r(bytes);
       image = r.image();
       r.finish();
@@ -355,6 +393,12 @@ struct Session::State {
 
   Workspace read_session();
   Workspace read_legacy(std::string_view payload);
+  // An image of the session that could not be read: its entry as the file had it, and why.
+  struct Lost {
+    ImageEntry entry;
+    std::string reason;
+  };
+  void keep_lost_images_aside(SessionTable& t, const std::array<std::optional<Lost>, 3>& lost);
   void collect_garbage(const SessionTable& table);
 };
 
@@ -403,6 +447,8 @@ Workspace Session::State::read_session() {
       ws.patches = read_array(t.patches);
       ws.intpn = read_array(t.intpn);
       if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+      for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
+        if (auto p = finite_problem(v, *a)) throw disk::Damage(p->reason);
     }
   } else if (!t.derived) {
     throw disk::Damage("FORMAT");
@@ -410,18 +456,22 @@ Workspace Session::State::read_session() {
   ws.changes.surface = generation;
   ws.changes.derived = t.derived;
   // PATCHES and INTPN, when they are igds's interpolation of the inputs, are not stored: they are
-  // made again from the inputs just read and checked. A surface the kernels refuse was not saved
-  // by igds.
+  // made again from the inputs just read and checked. A surface the kernels refuse, or one that
+  // overflows (inputs near the largest numbers), was not saved by igds: the reason is the
+  // kernels'.
   if (t.current != 0 && t.derived) {
     try {
       Surface made = interpolate(surface_input(ws));
+      check_finite(made.patches, made.intpn);
       ws.patches = std::move(made.patches);
       ws.intpn = std::move(made.intpn);
-    } catch (const DataError&) {
-      throw disk::Damage("SURFACE CANNOT BE MADE AGAIN");
+    } catch (const DataError& e) {
+      throw disk::Damage(made_surface_reason(e));
     }
   }
   std::map<std::uint32_t, std::shared_ptr<const Workspace>> sources;
+  // A damaged image costs that image alone: its slot starts empty and its files are kept aside.
+  std::array<std::optional<Lost>, 3> lost;
   for (std::size_t k = 0; k < 3; ++k) {
     ImageEntry& e = t.images[k];
     if (e.kind == ImageEntry::absent) continue;
@@ -429,18 +479,27 @@ Workspace Session::State::read_session() {
     ImageRef image;
     for (std::size_t j = 0; j < k; ++j)
       if (same_entry(t.images[j], e)) image = image_slot(ws, j);
-    if (!image) image = read_image(e, image_variables[k], t, sources);
+    if (!image) {
+      try {
+        image = read_image(e, image_variables[k], t, sources);
+      } catch (const disk::Damage& d) {
+        lost[k] = Lost{std::exchange(e, ImageEntry{}), d.reason()};
+        continue;
+      }
+    }
     e.shown = image.watch();
     image_slot(ws, k) = image;
   }
+  if (lost[0] || lost[1] || lost[2]) keep_lost_images_aside(t, lost);
   ws.changes.inppn.saved();
   ws.changes.inptg.saved();
   checked_.clear();
-  // The undo journal: refused alone (with a notice) when it does not fit the workspace.
+  // The undo journal: refused alone (with a notice) when it does not fit the workspace; the
+  // images lost above are no images in the states that had them.
   journal.reset();
   if (!t.journal.empty()) {
     try {
-      journal = disk::decode_journal(t.journal, ws);
+      journal = disk::decode_journal(t.journal, ws, {!!lost[0], !!lost[1], !!lost[2]});
     } catch (const disk::Damage& d) {
       notices.push_back(fmt::format("UNDO JOURNAL IN {} DAMAGED ({}): NOTHING TO UNDO",
                                     session_file(), d.reason()));
@@ -448,6 +507,8 @@ Workspace Session::State::read_session() {
       notices.push_back(
           fmt::format("UNDO JOURNAL IN {} DAMAGED (DATA): NOTHING TO UNDO", session_file()));
     }
+    // Refused, it is written no more: the next save writes the session with the journal then.
+    rewrite = rewrite || !journal;
   }
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
@@ -515,6 +576,8 @@ Workspace Session::State::read_legacy(std::string_view payload) {
   r.finish();
   if (auto p = status_problem(ws.status)) throw disk::Damage("STATUS: " + p->reason);
   if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
+  for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
+    if (auto p = finite_problem(v, *a)) throw disk::Damage(p->reason);
   // PATCHES and INTPN igds's own interpolation: made again from now on, not saved.
   bool derived = false;
   if (ws.has_input() && ws.has_surface()) {
@@ -530,6 +593,54 @@ Workspace Session::State::read_legacy(std::string_view payload) {
   saved_known = false;
   collect_garbage(SessionTable{});
   return ws;
+}
+
+// The images that could not be read (`lost`) are gone from `t`: the records only they were
+// drawn from go too, the variable files nothing else names are kept aside (Bnnnnnnn.IGDSBAD),
+// each loss is said, and the next save writes the session without them.
+void Session::State::keep_lost_images_aside(SessionTable& t,
+                                            const std::array<std::optional<Lost>, 3>& lost) {
+  // What each lost image named: its own files, and those of a record that nothing else needs.
+  std::array<SessionTable, 3> only;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!lost[k]) continue;
+    only[k].images[k] = lost[k]->entry;
+    const Record* r = t.record(lost[k]->entry.record);
+    if (lost[k]->entry.kind == ImageEntry::recipe && r && r->id != t.current &&
+        std::none_of(t.images.begin(), t.images.end(), [&](const ImageEntry& e) {
+          return e.kind == ImageEntry::recipe && e.record == r->id;
+        }))
+      only[k].records.push_back(*r);
+  }
+  std::erase_if(t.records, [&](const Record& r) {
+    return r.id != t.current &&
+           std::none_of(t.images.begin(), t.images.end(), [&](const ImageEntry& e) {
+             return e.kind == ImageEntry::recipe && e.record == r.id;
+           });
+  });
+  std::set<std::uint32_t> kept;
+  for (const auto& [f, type] : t.files()) kept.insert(f.number);
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (!lost[k]) continue;
+    std::vector<std::string> aside;
+    for (const auto& [f, type] : only[k].files()) {
+      if (kept.count(f.number)) continue;
+      kept.insert(f.number);  // another lost slot may name it too
+      const std::string name = fmt::format("{}.{}", disk::variable_file_name(f.number), type);
+      struct stat st;
+      if (::lstat((disk.dir() / name).c_str(), &st) != 0) continue;
+      try {
+        aside.push_back(disk::put_aside(disk.dir(), name.substr(0, 8), name));
+      } catch (const disk::IoError&) {
+        // Left where it is: a save removes only the files a session named.
+      }
+    }
+    const std::string_view slot = info(image_variables[k]).name;
+    notices.push_back(fmt::format(
+        "{} IN {} DAMAGED ({}): {}{} STARTS EMPTY", slot, session_file(), lost[k]->reason,
+        aside.empty() ? "" : fmt::format("KEPT AS {}; ", fmt::join(aside, ", ")), slot));
+  }
+  rewrite = true;
 }
 
 // Removes what a crash can leave behind: temporaries, and the variable files the session does
@@ -573,6 +684,12 @@ Workspace Session::load() {
     what = fmt::format("SESSION FILE {} DAMAGED ({})", session_file(), d.reason());
   } catch (const disk::IoError& e) {
     what = fmt::format("SESSION FILE {} CANNOT BE READ ({})", session_file(), e.reason());
+  } catch (const std::bad_alloc&) {
+    s.checked_.clear();
+    what = fmt::format("SESSION FILE {} CANNOT BE READ (NOT ENOUGH MEMORY)", session_file());
+  } catch (const DataError&) {
+    s.checked_.clear();
+    what = fmt::format("SESSION FILE {} DAMAGED (DATA)", session_file());
   }
   // Never half-loaded: the bad session and its variable files go aside, nothing is deleted. The
   // session goes first: a crash after that leaves variable files without a session, which the
@@ -607,7 +724,7 @@ Journal Session::take_journal(const Workspace& ws) {
   return j ? std::move(*j) : Journal(ws);
 }
 
-void Session::save(Workspace& ws, const Journal* journal) {
+std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
   State& s = *state_;
   const SessionTable& old = s.saved;
   const Record* current = old.record(old.current);
@@ -621,22 +738,27 @@ void Session::save(Workspace& ws, const Journal* journal) {
   for (std::size_t k = 0; k < 3; ++k) {
     const ImageRef& now = image_slot(ws, k);
     const ImageEntry& e = old.images[k];
-    images_same = images_same && (now ? e.kind != ImageEntry::absent && now.is(e.shown)
-                                      : e.kind == ImageEntry::absent);
+    // An image kept out as one that cannot be made is the same as long as it is there.
+    images_same = images_same && (now ? now.is(e.shown) : e.kind == ImageEntry::absent);
   }
-  if (surface_same && images_same && old.status == ws.status && old.functions == ws.functions)
-    return;
+  if (!s.rewrite && surface_same && images_same && old.status == ws.status &&
+      old.functions == ws.functions)
+    return {};
 
-  // Never a session that the next start would refuse.
-  if (auto p = surface_problem(ws))
-    throw Report(
-        fmt::format("CANNOT SAVE THE SESSION ({}); THE LAST SAVED SESSION IS KEPT", p->reason));
+  // Never a session that the next start would refuse (PATCHES and INTPN are read only when the
+  // session keeps them: made again, they are checked where they are made).
+  auto problem = surface_problem(ws);
+  for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
+    if (!problem && !ws.changes.derived) problem = finite_problem(v, *a);
+  if (problem)
+    throw Report(fmt::format("CANNOT SAVE THE SESSION ({}); THE LAST SAVED SESSION IS KEPT",
+                             problem->reason));
 
   SessionTable next = old;
   next.status = ws.status;
   next.functions = ws.functions;
-  next.journal = journal ? disk::encode_journal(*journal, ws) : std::string();
   State::Writing w{s, next, {}};
+  std::vector<UnsavedImage> unsaved;
   try {
     // The surface: a new record when it changed, sharing the pieces its edits left alone. A
     // record whose files went missing behind igds's back is written again.
@@ -687,10 +809,18 @@ void Session::save(Workspace& ws, const Journal* journal) {
           return s.present(e.data);
       }
     };
+    // An image that has to be made to be kept and cannot be (a recipe its surface does not
+    // allow: only a forged session or journal holds one) is kept out, once, and said.
+    auto unmade = [&](std::size_t k, const DataError& error) {
+      unsaved.push_back({image_variables[k], error});
+      next.images[k] = ImageEntry{};
+      next.images[k].shown = image_slot(ws, k).watch();
+    };
     for (std::size_t k = 0; k < 3; ++k) {
       const ImageRef& now = image_slot(ws, k);
       ImageEntry& e = next.images[k];
       if (s.saved_known && usable(e, now)) continue;
+      if (s.saved_known && now && e.kind == ImageEntry::absent && now.is(e.shown)) continue;
       e = ImageEntry{};
       e.shown = now.watch();
       if (!now) continue;
@@ -711,15 +841,20 @@ void Session::save(Workspace& ws, const Journal* journal) {
           }
         }
       }
-      if (e.kind == ImageEntry::absent && !now->file.empty()) {
-        if (auto f = w.link(*now)) {
-          e.kind = ImageEntry::linked_file;
-          e.linked = *f;
+      if (e.kind != ImageEntry::absent) continue;
+      try {
+        const Image& image = *now;  // made now when it was not yet
+        if (!image.file.empty()) {
+          if (auto f = w.copy(image)) {
+            e.kind = ImageEntry::linked_file;
+            e.linked = *f;
+            continue;
+          }
         }
-      }
-      if (e.kind == ImageEntry::absent) {
         e.kind = ImageEntry::stored;
-        e.data = w.image_data(*now);
+        e.data = w.image_data(image);
+      } catch (const DataError& error) {
+        unmade(k, error);
       }
     }
 
@@ -739,9 +874,13 @@ void Session::save(Workspace& ws, const Journal* journal) {
         const ImageRef& now = image_slot(ws, k);
         const std::uint32_t gone = e.record;
         e = ImageEntry{};
-        e.kind = ImageEntry::stored;
-        e.data = w.image_data(*now);
-        e.shown = now.watch();
+        try {
+          e.data = w.image_data(*now);
+          e.kind = ImageEntry::stored;
+          e.shown = now.watch();
+        } catch (const DataError& error) {
+          unmade(k, error);
+        }
         std::erase_if(next.records, [&](const Record& o) {
           return o.id == gone &&
                  std::none_of(next.images.begin(), next.images.end(), [&](const ImageEntry& i) {
@@ -751,6 +890,12 @@ void Session::save(Workspace& ws, const Journal* journal) {
       }
     }
 
+    // The journal names the images the session keeps by their slots, and only those (not one
+    // kept out, now or at an earlier save).
+    ImageSlots kept;
+    for (std::size_t k = 0; k < 3; ++k)
+      if (next.images[k].kind != ImageEntry::absent) kept[k] = image_slot(ws, k);
+    next.journal = journal ? disk::encode_journal(*journal, kept) : std::string();
     next.next_number = s.next_number;
     // The new variable files must be on the disk before the session that names them.
     if (!w.written.empty()) disk::sync_folder(s.disk.dir());
@@ -760,6 +905,9 @@ void Session::save(Workspace& ws, const Journal* journal) {
     w.undo();
     throw Report(fmt::format("CANNOT SAVE THE SESSION IN {} ({}); THE LAST SAVED SESSION IS KEPT",
                              session_file(), e.reason()));
+  } catch (...) {
+    w.undo();  // no memory, say: the files of a save that did not happen go
+    throw;
   }
 
   // The new session is durable: the files only the old one named can go.
@@ -771,8 +919,10 @@ void Session::save(Workspace& ws, const Journal* journal) {
   s.obsolete.clear();
   s.saved = std::move(next);
   s.saved_known = true;
+  s.rewrite = false;
   ws.changes.inppn.saved();
   ws.changes.inptg.saved();
+  return unsaved;
 }
 
 const std::vector<std::string>& Session::notices() const {

@@ -9,9 +9,19 @@
 
 #include "workspace/disk/disk.h"
 #include "workspace/journal.h"
+#include "workspace/kernels/data_error.h"
 #include "workspace/state.h"
+#include "workspace/variables.h"
 
 namespace igds {
+
+// An image a save had to make to keep it and could not (a recipe its surface does not allow,
+// which only a forged session or journal holds): kept out of the session, said once; the
+// workspace keeps it as it is (whoever looks at it meets the same error).
+struct UnsavedImage {
+  Variable slot;  // IMAGE, TEMP1 or TEMP2
+  DataError error;
+};
 
 class Session {
  public:
@@ -36,8 +46,8 @@ class Session {
   // only what changed since the last save or load (ws.changes says what; it is reset here once
   // the new session is on disk). Throws Report when the disk refuses; the previous session
   // stays on disk and the next save writes everything since it. The undo `journal` is saved with
-  // it (none: the session has none).
-  void save(Workspace& ws, const Journal* journal = nullptr);
+  // it (none: the session has none). Returns the images it kept out (see UnsavedImage).
+  std::vector<UnsavedImage> save(Workspace& ws, const Journal* journal = nullptr);
 
   // What load() and the lock had to tell the user, in IGDS style, to print before READY.
   const std::vector<std::string>& notices() const;

@@ -11,6 +11,10 @@ namespace {
 // Far more than any legal session needs; a count beyond is a damaged file.
 constexpr std::uint32_t max_records = 16;
 constexpr std::uint32_t max_pieces = 1u << 16;
+// A piece is far smaller than this (2 MB, or a whole image): sizes added up never overflow.
+constexpr std::uint64_t max_piece_bytes = std::uint64_t(1) << 40;
+// The fewest bytes a piece takes in the file (an empty one kept in the session file).
+constexpr std::size_t min_piece_bytes = 9;
 // The tag of the journal's section ("JRNL").
 constexpr std::uint32_t journal_tag = 0x4c4e524a;
 
@@ -44,13 +48,14 @@ void write_blob(Writer& w, const Blob& b) {
 Blob read_blob(Reader& r) {
   Blob b;
   const std::uint32_t n = r.u32();
-  if (n > max_pieces) throw Damage("FORMAT");
+  if (n > max_pieces || n > r.left() / min_piece_bytes) throw Damage("FORMAT");
   for (std::uint32_t k = 0; k < n; ++k) {
     Piece p;
     const std::uint8_t kind = r.u8();
     if (kind > 1) throw Damage("FORMAT");
     p.in_file = kind == 1;
     p.size = r.u64();
+    if (p.size > max_piece_bytes) throw Damage("FORMAT");
     if (p.in_file) {
       p.file = read_ref(r);
       // A piece's file is its frame around its bytes.
@@ -239,7 +244,7 @@ SessionTable decode_session(std::string_view payload) {
   if (!r.at_end()) {
     // Each count is checked against what is left, so a crafted count cannot make a huge table.
     const std::uint32_t functions = r.u32();
-    if (functions > r.left() / 4) throw Damage("FORMAT");
+    if (functions > r.left() / 8) throw Damage("FORMAT");  // a count of lines and one line
     t.functions.resize(functions);
     for (auto& f : t.functions) {
       const std::uint32_t lines = r.u32();

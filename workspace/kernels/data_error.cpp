@@ -1,9 +1,14 @@
 #include "workspace/kernels/data_error.h"
 
-#include "workspace/kernels/array.h"
+#include <algorithm>
+#include <atomic>
+#include <cmath>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include "workspace/kernels/array.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -50,11 +55,53 @@ const char* DataError::what() const noexcept {
       case Problem::view_inside_box:
         text_ = "the view point is inside the bounding box";
         break;
+      case Problem::grid_point_not_finite:
+        text_ = fmt::format("INTPN row {} column {} is not finite", number, column);
+        break;
+      case Problem::image_not_finite:
+        text_ =
+            fmt::format("the image of {} {} (column {}) is not finite", variable, number, column);
+        break;
     }
   } catch (...) {
     return "data error";
   }
   return text_.c_str();
+}
+
+namespace {
+
+// first_not_finite on [first, last): a block at a time, x * 0 is 0 for every finite x and NaN for
+// the rest, and the sums of four independent lanes keep the loop at the speed of memory; a block
+// whose sum is not 0 is searched number by number.
+std::size_t first_not_finite_in(const double* v, std::size_t first, std::size_t last) {
+  constexpr std::size_t block = 1024;
+  for (std::size_t from = first; from < last; from += block) {
+    const std::size_t to = std::min(last, from + block);
+    double lane[4] = {0, 0, 0, 0};
+    std::size_t k = from;
+    for (; k + 4 <= to; k += 4)
+      for (int j = 0; j < 4; ++j) lane[j] += v[k + j] * 0.0;
+    for (; k < to; ++k) lane[0] += v[k] * 0.0;
+    if (lane[0] + lane[1] + lane[2] + lane[3] == 0) continue;
+    for (k = from; k < to; ++k)
+      if (!std::isfinite(v[k])) return k;
+  }
+  return last;
+}
+
+}  // namespace
+
+std::size_t first_not_finite(const double* v, std::size_t n) {
+  // Large arrays (INTPN, an image) on the cores the kernels made them with.
+  std::atomic<std::size_t> found{n};
+  parallel_for(n, threads_for(n), [&](std::size_t first, std::size_t last) {
+    const std::size_t k = first_not_finite_in(v, first, last);
+    if (k == last) return;  // every number of this slice is finite
+    for (std::size_t seen = found.load(); k < seen && !found.compare_exchange_weak(seen, k);) {
+    }
+  });
+  return found.load();
 }
 
 void require_shape(const char* variable, const Array* a, std::vector<std::size_t> expected) {

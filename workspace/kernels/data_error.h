@@ -24,10 +24,17 @@ struct DataError : std::exception {
     behind_eye,             // CONIC: a point behind (or beside) the eye
     view_at_centre,         // CONIC: the view point is the centre
     view_inside_box,        // CONIC: the view point is inside the points' bounding box
+    // A result that overflowed (finite inputs near the largest numbers): `number` and `column`
+    // the row and column of INTPN (1-based) whose point is not finite.
+    grid_point_not_finite,
+    // A projected image that overflowed: the image of `variable`'s point `number` (INPPN), of
+    // the tangent at point `number` (INPTG), of INTPN's row `number` and `column`, or of item
+    // `number` of a picture's drawing (DRAWING).
+    image_not_finite,
   };
 
   Problem problem;
-  std::size_t number = 0;
+  std::size_t number = 0, column = 0;
   std::string variable;
   std::vector<std::size_t> shape, expected;
   double count = 0, limit = 0;
@@ -41,6 +48,11 @@ struct DataError : std::exception {
 };
 
 struct Array;
+
+// The first of `n` numbers at `v` that is not finite (a NaN or an infinity), or n when all are:
+// the check of every result before it is kept (docs/kernels.md, "Data checks"). Reads the numbers
+// at the speed of memory, a large array on the machine's cores as the kernels make it.
+std::size_t first_not_finite(const double* v, std::size_t n);
 
 // Throws DataError missing (no array) or shape (`a` is not of shape `expected`), naming
 // `variable`: the check every kernel makes of the arrays it is given.

@@ -92,6 +92,8 @@ bool view_parameters_valid(const View& view) {
 
 void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
   const auto& p = view.parameters;
+  // Checked before the plane or axis becomes an integer: a number beyond an int's range is none.
+  if (!view_parameters_valid(view)) refuse(DataError::Problem::projection_parameters);
   switch (view.projection) {
     case Projection::conic:
       conic(in, {p[0], p[1], p[2]}, centre, out);

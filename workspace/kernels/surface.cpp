@@ -133,6 +133,18 @@ void interpolate_into(const SurfaceInput& input, Surface& out) {
   fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
 }
 
+void check_finite(const Array& patches, const Array& intpn) {
+  if (const std::size_t k = first_not_finite(patches.data(), patches.size()); k < patches.size())
+    refuse(DataError::Problem::patch_not_finite, k / 48 + 1);
+  if (const std::size_t k = first_not_finite(intpn.data(), intpn.size()); k < intpn.size()) {
+    const std::size_t columns = intpn.rank() == 3 ? intpn.shape[1] : 1;
+    DataError e(DataError::Problem::grid_point_not_finite);
+    e.number = k / 3 / columns + 1;
+    e.column = k / 3 % columns + 1;
+    throw e;
+  }
+}
+
 Array refit(const SurfaceInput& input, const Array& patches) {
   Array intpn;
   refit_into(input, patches, intpn);

@@ -26,6 +26,12 @@ struct Surface {
 // tangent (naming the point), shapes that do not match.
 Surface interpolate(const SurfaceInput& input);
 
+// A surface computed from finite inputs can still overflow when they are near the largest
+// numbers (a tangent of 1E308): throws DataError for its first number that is not finite,
+// patch_not_finite naming the patch (row by row from 1), or grid_point_not_finite naming INTPN's
+// row and column. Every surface computed is checked so before it is kept.
+void check_finite(const Array& patches, const Array& intpn);
+
 // FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
 // points are copied bit-exactly to their places in the grid. A single curve or stringer has no
 // patches: its grid is made from INPPN and INPTG again.
