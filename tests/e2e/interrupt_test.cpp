@@ -39,8 +39,7 @@ struct Threads {
 bool blocks_interrupts(const fs::path& status_file) {
   std::ifstream status(status_file);
   for (std::string line; std::getline(status, line);) {
-    if (line.starts_with("State:") && line.find_first_of("XZ", 6) != std::string::npos)
-      return true;
+    if (line.starts_with("State:") && line.find_first_of("XZ", 6) != std::string::npos) return true;
     if (line.starts_with("SigBlk:"))
       return std::stoull(line.substr(7), nullptr, 16) & (1ull << (SIGINT - 1));
   }
