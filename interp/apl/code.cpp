@@ -4,6 +4,8 @@
 #include <utility>
 
 #include "interp/apl/error.h"
+#include "interp/apl/glyphs.h"
+#include "interp/apl/scalar.h"
 
 namespace igds::apl {
 
@@ -115,7 +117,6 @@ class Compiler {
     code_.instrs.push_back(i);
   }
 
- private:
   std::uint32_t symbol(const Node& n) { return resolve_(n.name).index; }
 
   void monadic(const Node& n, bool needed) {
@@ -132,7 +133,9 @@ class Compiler {
           if (axis) syntax_at(f.column);
           emit(Op::execute, f.column, 0, 0, needed ? needs_value : 0);
         } else {
-          emit(Op::monadic, f.column, f.glyph, 0, axis);
+          const bool scalar_fn = has_role(f.glyph, Role::scalar_monadic);
+          emit(Op::monadic, f.column, f.glyph, 0,
+               static_cast<std::uint8_t>(axis | (scalar_fn ? scalar : 0)));
         }
         return;
       case FunctionNode::Kind::defined:
@@ -156,8 +159,52 @@ class Compiler {
     syntax_at(f.column);
   }
 
+  // The arguments of a dyadic primitive (without axis) or of →A/B: read straight from a local
+  // or a constant where that gives the same values as pushing them. The left argument is read
+  // last in any case (APL reads right to left); the right one is read early only when nothing is
+  // evaluated between, or when it cannot change (a constant, a label).
+  std::pair<Operand, Operand> arguments(const Node& left, const Node& right) {
+    const Operand l = operand(left), r = operand(right);
+    const bool fixed_right =
+        r.from == Operand::constant || (r.from == Operand::local && label(right));
+    Operand rr = l.from != Operand::stack || fixed_right ? r : Operand{};
+    if (rr.from == Operand::stack) expression(right, true);
+    if (l.from == Operand::stack) expression(left, true);
+    return {l, rr};
+  }
+
+  Operand operand(const Node& n) {
+    Operand o;
+    o.column = static_cast<std::uint32_t>(n.column);
+    if (n.kind == Node::Kind::constant) {
+      o.from = Operand::constant;
+      code_.constants.push_back(n.value);
+      o.index = static_cast<std::uint32_t>(code_.constants.size() - 1);
+    } else if (n.kind == Node::Kind::variable) {
+      const NameRef r = resolve_(n.name);
+      if (r.local) {
+        o.from = Operand::local;
+        o.index = r.index;
+      }
+    }
+    return o;
+  }
+
+  bool label(const Node& n) { return resolve_(n.name).label; }
+
   void dyadic(const Node& n, bool needed) {
     const FunctionNode& f = *n.function;
+    if (f.kind == FunctionNode::Kind::primitive && !f.axis) {
+      const auto [l, r] = arguments(*n.left, *n.right);
+      emit(Op::dyadic, f.column, f.glyph);
+      code_.instrs.back().left = l;
+      code_.instrs.back().right = r;
+      if (has_role(f.glyph, Role::scalar_dyadic)) {
+        code_.instrs.back().flags |= scalar;
+        code_.instrs.back().loops = &dyadic_loops(f.glyph);
+      }
+      return;
+    }
     expression(*n.right, true);
     std::uint8_t axis = 0;
     if (f.axis) {
@@ -168,6 +215,10 @@ class Compiler {
     switch (f.kind) {
       case FunctionNode::Kind::primitive:
         emit(Op::dyadic, f.column, f.glyph, 0, axis);
+        if (has_role(f.glyph, Role::scalar_dyadic)) {
+          code_.instrs.back().flags |= scalar;
+          code_.instrs.back().loops = &dyadic_loops(f.glyph);
+        }
         return;
       case FunctionNode::Kind::defined:
         emit(Op::call_dyadic, f.column, resolve_(f.name).index, 0, needed ? needs_value : 0);
@@ -241,8 +292,25 @@ Code compile(const Statement& statement, const Resolver& resolve) {
       c.emit(Op::naked_branch, 0);
       return code;
     }
-    c.expression(*statement.expr, true);
-    c.emit(Op::branch, statement.expr->column);
+    const Node& e = *statement.expr;
+    // →A/B, the loops' idiom: the branch taken straight from A and B when they are numbers.
+    if (e.kind == Node::Kind::dyadic && e.function->kind == FunctionNode::Kind::primitive &&
+        e.function->glyph == U'/' && !e.function->axis) {
+      const auto [l, r] = c.arguments(*e.left, *e.right);
+      // →(I<N)/L: the comparison's result goes to the frame's scratch place, not the stack.
+      Instr& before = code.instrs.back();
+      const bool test = l.from == Operand::stack && r.from != Operand::stack &&
+                        before.op == Op::dyadic && before.result.from == Operand::stack &&
+                        !(before.flags & has_axis);
+      if (test) before.result.from = Operand::scratch;
+      c.emit(Op::branch_compress, e.column);
+      code.instrs.back().left = l;
+      code.instrs.back().right = r;
+      if (test) code.instrs.back().left.from = Operand::scratch;
+      return code;
+    }
+    c.expression(e, true);
+    c.emit(Op::branch, e.column);
     return code;
   }
   if (!statement.expr) {
@@ -251,6 +319,20 @@ Code compile(const Statement& statement, const Resolver& resolve) {
   }
   const Node& e = *statement.expr;
   c.expression(e, false);
+  if (shy(e) && code.instrs.back().op == Op::assign_local) {
+    // Z←A f B: the result straight into the slot.
+    const std::size_t n = code.instrs.size();
+    if (n >= 2 && code.instrs[n - 2].op == Op::dyadic && !(code.instrs[n - 2].flags & has_axis)) {
+      Instr& f = code.instrs[n - 2];
+      f.result.from = Operand::local;
+      f.result.index = code.instrs.back().a;
+      f.flags |= ends;
+      code.instrs.pop_back();
+      return code;
+    }
+    code.instrs.back().flags |= ends;
+    return code;
+  }
   std::uint8_t flags = shy(e) ? 0 : shows;
   if (!e.parenthesized && e.kind == Node::Kind::monadic &&
       e.function->kind == FunctionNode::Kind::primitive && e.function->glyph == U'⍎')

@@ -15,6 +15,8 @@
 
 namespace igds::apl {
 
+struct DyadicLoops;
+
 enum class Op : std::uint8_t {
   constant,            // push constants[a]
   local,               // push the running function's slot a
@@ -42,6 +44,7 @@ enum class Op : std::uint8_t {
   index_assign_local,  // slot a [indices] ← value below them
   index_assign_name,   // symbol a [indices] ← value below them
   branch,              // → top
+  branch_compress,     // → A/B, A and B as for dyadic (the loops' idiom, no array made for it)
   naked_branch,        // → alone
   end,                 // the end of the statement: its value shown when flagged
 };
@@ -52,7 +55,19 @@ enum InstrFlag : std::uint8_t {
   shows = 4,        // end: the statement's value is displayed
   shy_execute = 8,  // end: the statement is ⍎B, shown unless what ⍎ ran was an assignment
   first_axis = 16,  // reduce, scan: ⌿ ⍀
-  label_slot = 32,  // assign_local: a label, which cannot be assigned
+  scalar = 32,      // monadic, dyadic: a scalar function (dyadic: `loops` are its loops)
+  ends = 64,        // assign_local, dyadic into a slot: the statement ends with it (not shown)
+};
+
+// Where an argument of dyadic and branch_compress comes from: the stack, or straight from a
+// slot of the running function or a constant (no copy of it pushed), read when the instruction
+// runs.
+struct Operand {
+  // scratch: the frame's own place for one value, from a dyadic's result to →A/B's A.
+  enum From : std::uint8_t { stack, local, constant, scratch };
+  From from = stack;
+  std::uint32_t index = 0;
+  std::uint32_t column = 0;  // for VALUE ERROR at an unset local
 };
 
 struct Instr {
@@ -62,6 +77,11 @@ struct Instr {
   std::uint32_t a = 0;
   std::uint32_t b = 0;
   std::uint32_t column = 0;  // of the token, for the caret under a failure
+  const DyadicLoops* loops = nullptr;
+  Operand left, right;
+  // dyadic: where the result goes: the stack, or (with `ends`) a slot, the statement `Z←A f B`
+  // ending there.
+  Operand result;
 };
 
 // The system names igds's APL has: variables, then functions.

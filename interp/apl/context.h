@@ -96,20 +96,20 @@ struct Context {
 // Tolerant equality (APL2 Language Reference, "comparison tolerance"): |A-B| ≤ ⎕CT × (|A|⌈|B|).
 inline bool tolerant_equal(double a, double b, double ct) {
   if (a == b) return true;
-  return std::fabs(a - b) <= ct * std::fmax(std::fabs(a), std::fabs(b));
+  return std::fabs(a - b) <= ct * std::max(std::fabs(a), std::fabs(b));  // no NaN in APL
 }
 
 // Tolerant floor (APL2 Language Reference, "floor"): the nearest integer N, less one when N
 // exceeds B by more than the tolerance.
 inline double tolerant_floor(double b, double ct) {
   double n = std::floor(b + 0.5);
-  if (n - b > ct * std::fmax(1.0, std::fabs(b))) n -= 1;
+  if (n - b > ct * std::max(1.0, std::fabs(b))) n -= 1;
   return n;
 }
 
 // An integer within the tolerance (a near-integer is accepted where APL wants an integer).
 inline bool near_integer(double x, double ct = 1e-13) {
-  return std::fabs(x - std::round(x)) <= ct * std::fmax(1.0, std::fabs(x));
+  return std::fabs(x - std::round(x)) <= ct * std::max(1.0, std::fabs(x));
 }
 
 // The integer a number stands for; DOMAIN ERROR when it is not one (or is too large).

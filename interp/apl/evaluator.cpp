@@ -442,14 +442,15 @@ std::shared_ptr<const Code> Evaluator::compile_text(std::u32string_view text, bo
   return code;
 }
 
-std::shared_ptr<const Code> Evaluator::function_line(const Frame& f) {
+const Code* Evaluator::function_line(Frame& f) {
   const DefinedFunction& fn = *f.function;
   const std::size_t i = f.line - 1;
   if (fn.line_errors[i]) throw Error(*fn.line_errors[i]);
   // A line is compiled once for the definitions it was compiled with; while a running function's
   // local hides a function's name the names' classes depend on the calls, and lines are compiled
   // each time.
-  if (shadowing_ == 0 && fn.compiled_for == generation_ && fn.compiled[i]) return fn.compiled[i];
+  if (shadowing_ == 0 && fn.compiled_for == generation_ && fn.compiled[i])
+    return fn.compiled[i].get();
   const bool cache = shadowing_ == 0;
   const Classifier classify = [&](const std::string& name) {
     if (fn.slot_of(name) >= 0) return NameClass::variable;
@@ -464,14 +465,17 @@ std::shared_ptr<const Code> Evaluator::function_line(const Frame& f) {
     return NameRef{false, false, symbol(name)};
   };
   auto code = std::make_shared<const Code>(compile(statement, resolve));
-  if (cache) {
-    if (fn.compiled_for != generation_) {
-      std::fill(fn.compiled.begin(), fn.compiled.end(), nullptr);
-      fn.compiled_for = generation_;
-    }
-    fn.compiled[i] = code;
+  if (!cache) {
+    f.owned = std::move(code);
+    return f.owned.get();
   }
-  return code;
+  if (fn.compiled_for != generation_) {
+    for (auto& c : fn.compiled)
+      if (c) fn.retired.push_back(std::move(c));
+    fn.compiled_for = generation_;
+  }
+  fn.compiled[i] = std::move(code);
+  return fn.compiled[i].get();
 }
 
 void Evaluator::run_line(std::string_view line) {
@@ -482,7 +486,8 @@ void Evaluator::run_line(std::string_view line) {
   try {
     try {
       bool nothing = false;
-      f.code = compile_text(decode_utf8(line), nothing);
+      f.owned = compile_text(decode_utf8(line), nothing);
+      f.code = f.owned.get();
       push_frame(std::move(f));
     } catch (const std::bad_alloc&) {
       throw Error(ErrorKind::ws_full);
@@ -515,24 +520,66 @@ void Evaluator::run() {
   }
 }
 
+namespace {
+
+[[noreturn, gnu::noinline]] void unset_local(const Operand& o) {
+  throw with_column(ErrorKind::value, o.column);
+}
+
+}  // namespace
+
+[[gnu::always_inline]] inline const Value& Evaluator::argument(const Frame& f,
+                                                               const Operand& o) const {
+  if (o.from == Operand::local) {
+    const auto& slot = f.slots[o.index];
+    if (!slot) [[unlikely]]
+      unset_local(o);
+    return *slot;
+  }
+  if (o.from == Operand::constant) return f.code->constants[o.index];
+  return f.scratch;
+}
+
 void Evaluator::start_statement(Frame& f) {
-  const std::size_t n = f.function->lines.size();
-  if (f.line < 1 || f.line > n) {
+  const DefinedFunction& fn = *f.function;
+  if (f.line < 1 || f.line > fn.lines.size()) {
     return_from_function();
     return;
   }
   f.pc = 0;
   ctx.charge(statement_work);
+  // The line compiled already for these definitions: the loops' case.
+  if (shadowing_ == 0 && fn.compiled_for == generation_) {
+    if (const Code* code = fn.compiled[f.line - 1].get()) {
+      f.code = code;
+      return;
+    }
+  }
   f.code = function_line(f);
 }
 
-// Runs the top frame until its statement ends or the frames change (a call, a return).
+// Runs the top frame until the frames change (a call, a return, a line typed that ends): a
+// function's statements one after the other.
 void Evaluator::step() {
   Frame* f = &frames_.back();
+next_statement:
   if (!f->code) {
-    const std::size_t depth = frames_.size();
-    start_statement(*f);
-    if (frames_.size() != depth) return;
+    // The next line of a function, compiled already for these definitions (the loops' case),
+    // or as start_statement finds it.
+    const DefinedFunction& fn = *f->function;
+    const Code* known = nullptr;
+    if (f->line >= 1 && f->line <= fn.lines.size() && shadowing_ == 0 &&
+        fn.compiled_for == generation_ && ctx.work + statement_work < ctx.next_poll)
+      known = fn.compiled[f->line - 1].get();
+    if (known) {
+      ctx.work += statement_work;
+      f->pc = 0;
+      f->code = known;
+    } else {
+      const std::size_t depth = frames_.size();
+      start_statement(*f);
+      if (frames_.size() != depth) return;
+    }
   }
   const Code& code = *f->code;
   for (;;) {
@@ -574,7 +621,7 @@ void Evaluator::step() {
         Value b = pop();
         const auto glyph = static_cast<char32_t>(in.a);
         if (axis && !has_role(glyph, Role::axis_monadic)) syntax_error();
-        if (has_role(glyph, Role::scalar_monadic)) {
+        if (in.flags & scalar) {
           stack_.push_back(scalar_monadic(ctx, glyph, std::move(b)));
           break;
         }
@@ -616,85 +663,62 @@ void Evaluator::step() {
         break;
       }
       case Op::dyadic: {
-        Value a = pop();
-        std::optional<Value> axis;
-        if (in.flags & has_axis) axis = pop();
-        Value b = pop();
-        const auto glyph = static_cast<char32_t>(in.a);
-        if (axis && !has_role(glyph, Role::axis_dyadic)) syntax_error();
-        if (has_role(glyph, Role::scalar_dyadic)) {
-          stack_.push_back(scalar_dyadic(ctx, glyph, std::move(a), std::move(b)));
-          break;
+        // The arguments: from the stack, or read here from a slot or a constant (right first).
+        const Value* right = in.right.from == Operand::stack ? nullptr : &argument(*f, in.right);
+        const Value* left = in.left.from == Operand::stack ? nullptr : &argument(*f, in.left);
+        if (!right) right = &stack_[stack_.size() - (left ? 1 : 2)];
+        if (!left) left = &stack_.back();
+        const std::size_t on_stack =
+            (in.left.from == Operand::stack) + (in.right.from == Operand::stack);
+        if ((in.flags & scalar) && left->is_one_number() && right->is_one_number() &&
+            left->rank() == 0 && right->rank() == 0) {
+          // Two numbers, the loops' case: no array made.
+          const double r = in.loops->one(ctx, left->one_number(), right->one_number());
+          if (in.result.from == Operand::scratch) {
+            if (f->scratch.is_one_number() && f->scratch.rank() == 0)
+              f->scratch.set_one_number(r);
+            else
+              f->scratch = Value(r);
+            for (std::size_t k = 0; k < on_stack; ++k) stack_.pop_back();
+            break;
+          }
+          if (in.result.from == Operand::local) {
+            auto& slot = f->slots[in.result.index];
+            if (slot && slot->is_one_number() && slot->rank() == 0)
+              slot->set_one_number(r);
+            else
+              slot.emplace(r);
+            for (std::size_t k = 0; k < on_stack; ++k) stack_.pop_back();
+          } else if (on_stack == 0) {
+            stack_.emplace_back(r);
+            break;
+          } else {
+            if (on_stack == 2) stack_.pop_back();
+            stack_.back().set_one_number(r);
+            break;
+          }
+        } else {
+          Value r = dyadic_primitive(
+              in, in.left.from == Operand::stack ? pop() : *left,
+              in.right.from == Operand::stack ? std::nullopt : std::optional(*right));
+          if (in.result.from == Operand::scratch) {
+            f->scratch = std::move(r);
+            break;
+          }
+          if (in.result.from != Operand::local) {
+            stack_.push_back(std::move(r));
+            break;
+          }
+          f->slots[in.result.index] = std::move(r);
         }
-        const Value* k = axis ? &*axis : nullptr;
-        switch (glyph) {
-          case U'⍴':
-            stack_.push_back(reshape(ctx, a, b));
-            break;
-          case U',':
-            stack_.push_back(catenate(ctx, a, b, k));
-            break;
-          case U'⍳':
-            stack_.push_back(index_of(ctx, a, b));
-            break;
-          case U'↑':
-            stack_.push_back(take(ctx, a, b, k));
-            break;
-          case U'↓':
-            stack_.push_back(drop(ctx, a, b, k));
-            break;
-          case U'⌽':
-            stack_.push_back(rotate(ctx, a, b, k, false));
-            break;
-          case U'⊖':
-            stack_.push_back(rotate(ctx, a, b, k, true));
-            break;
-          case U'⍉':
-            stack_.push_back(transpose(ctx, a, b));
-            break;
-          case U'∊':
-            stack_.push_back(member_of(ctx, a, b));
-            break;
-          case U'⍋':
-            stack_.push_back(grade(ctx, a, b, true));
-            break;
-          case U'⍒':
-            stack_.push_back(grade(ctx, a, b, false));
-            break;
-          case U'⊥':
-            stack_.push_back(decode(ctx, a, b));
-            break;
-          case U'⊤':
-            stack_.push_back(encode(ctx, a, b));
-            break;
-          case U'⌹':
-            stack_.push_back(matrix_divide(ctx, a, b));
-            break;
-          case U'?':
-            stack_.push_back(deal(ctx, a, b));
-            break;
-          case U'~':
-            stack_.push_back(without(ctx, a, b));
-            break;
-          case U'/':
-            stack_.push_back(replicate(ctx, a, b, k, false));
-            break;
-          case U'⌿':
-            stack_.push_back(replicate(ctx, a, b, k, true));
-            break;
-          case U'\\':
-            stack_.push_back(expand(ctx, a, b, k, false));
-            break;
-          case U'⍀':
-            stack_.push_back(expand(ctx, a, b, k, true));
-            break;
-          case U'⍕':
-            stack_.push_back(format_by_specification(ctx, a, b));
-            break;
-          default:
-            syntax_error();
+        // Z←A f B: the statement ends with the assignment.
+        if (f->kind != Frame::Kind::function) {
+          end_statement(in);
+          return;
         }
-        break;
+        ++f->line;
+        f->code = nullptr;
+        goto next_statement;
       }
       case Op::execute:
         execute_text(in);
@@ -745,9 +769,24 @@ void Evaluator::step() {
         stack_.push_back(index(ctx, b, indices));
         break;
       }
-      case Op::assign_local:
-        f->slots[in.a] = stack_.back();
-        break;
+      case Op::assign_local: {
+        auto& slot = f->slots[in.a];
+        const Value& v = stack_.back();
+        if (slot && slot->is_one_number() && v.is_one_number() && slot->rank() == 0 &&
+            v.rank() == 0)
+          slot->set_one_number(v.one_number());  // a loop's counter: no value made
+        else
+          slot = v;
+        if (!(in.flags & ends)) break;
+        if (f->kind != Frame::Kind::function) {
+          end_statement(in);
+          return;
+        }
+        stack_.pop_back();
+        ++f->line;
+        f->code = nullptr;
+        goto next_statement;
+      }
       case Op::assign_name:
         store(in.a, stack_.back());
         break;
@@ -766,13 +805,105 @@ void Evaluator::step() {
         break;
       case Op::branch:
         branch(*f, pop());
-        return;
+        if (f->kind != Frame::Kind::function) return;
+        goto next_statement;
+      case Op::branch_compress: {
+        const Value* right = in.right.from == Operand::stack ? nullptr : &argument(*f, in.right);
+        const Value* left = in.left.from == Operand::stack ? nullptr : &argument(*f, in.left);
+        if (in.left.from == Operand::scratch) left = &f->scratch;
+        if (!right) right = &stack_[stack_.size() - (left ? 1 : 2)];
+        if (!left) left = &stack_.back();
+        // →A/B with A a whole number of copies of the line number B, in a function: B, or the
+        // next line for none; the loops' case, no array made.
+        const double copies = left->one_number(), to = right->one_number();
+        if (f->kind == Frame::Kind::function && left->is_one_number() && right->is_one_number() &&
+            (copies == 0 || copies == 1) && to == std::floor(to)) {
+          const auto n = static_cast<double>(f->function->lines.size());
+          f->line = copies == 0          ? f->line + 1
+                    : to >= 1 && to <= n ? static_cast<std::size_t>(to)
+                                         : 0;
+          f->code = nullptr;
+          while (stack_.size() > f->base) stack_.pop_back();
+          goto next_statement;
+        }
+        Value a = in.left.from == Operand::stack ? pop() : *left;  // A is above B
+        Value b = in.right.from == Operand::stack ? pop() : *right;
+        branch(*f, replicate(ctx, a, b, nullptr, false));
+        if (f->kind != Frame::Kind::function) return;
+        goto next_statement;
+      }
       case Op::naked_branch:
         throw Escape{f->kind == Frame::Kind::immediate};
       case Op::end:
-        end_statement(in);
-        return;
+        if (f->kind != Frame::Kind::function) {
+          end_statement(in);
+          return;
+        }
+        if (stack_.size() > f->base) {
+          const bool shy = (in.flags & shows) == 0 || ((in.flags & shy_execute) && f->executed_shy);
+          if (!shy) show(stack_.back());
+          while (stack_.size() > f->base) stack_.pop_back();
+        }
+        ++f->line;
+        f->code = nullptr;
+        goto next_statement;
     }
+  }
+}
+
+Value Evaluator::dyadic_primitive(const Instr& in, Value a, std::optional<Value> right) {
+  std::optional<Value> axis;
+  if (in.flags & has_axis) axis = pop();
+  Value b = right ? std::move(*right) : pop();
+  const auto glyph = static_cast<char32_t>(in.a);
+  if (axis && !has_role(glyph, Role::axis_dyadic)) syntax_error();
+  if (in.flags & scalar) return scalar_dyadic(ctx, glyph, std::move(a), std::move(b));
+  const Value* k = axis ? &*axis : nullptr;
+  switch (glyph) {
+    case U'⍴':
+      return reshape(ctx, a, b);
+    case U',':
+      return catenate(ctx, a, b, k);
+    case U'⍳':
+      return index_of(ctx, a, b);
+    case U'↑':
+      return take(ctx, a, b, k);
+    case U'↓':
+      return drop(ctx, a, b, k);
+    case U'⌽':
+      return rotate(ctx, a, b, k, false);
+    case U'⊖':
+      return rotate(ctx, a, b, k, true);
+    case U'⍉':
+      return transpose(ctx, a, b);
+    case U'∊':
+      return member_of(ctx, a, b);
+    case U'⍋':
+      return grade(ctx, a, b, true);
+    case U'⍒':
+      return grade(ctx, a, b, false);
+    case U'⊥':
+      return decode(ctx, a, b);
+    case U'⊤':
+      return encode(ctx, a, b);
+    case U'⌹':
+      return matrix_divide(ctx, a, b);
+    case U'?':
+      return deal(ctx, a, b);
+    case U'~':
+      return without(ctx, a, b);
+    case U'/':
+      return replicate(ctx, a, b, k, false);
+    case U'⌿':
+      return replicate(ctx, a, b, k, true);
+    case U'\\':
+      return expand(ctx, a, b, k, false);
+    case U'⍀':
+      return expand(ctx, a, b, k, true);
+    case U'⍕':
+      return format_by_specification(ctx, a, b);
+    default:
+      syntax_error();
   }
 }
 
@@ -788,7 +919,7 @@ void Evaluator::end_statement(const Instr& in) {
     case Frame::Kind::function:
       if (has_value && !shy) show(stack_.back());
       ++f.line;
-      f.code.reset();
+      f.code = nullptr;
       stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(f.base), stack_.end());
       return;
     case Frame::Kind::execute: {
@@ -822,8 +953,8 @@ void Evaluator::branch(Frame& f, const Value& target) {
   if (target.empty()) {  // no branch: the next statement
     if (f.kind == Frame::Kind::function) {
       ++f.line;
-      f.code.reset();
-      stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(f.base), stack_.end());
+      f.code = nullptr;
+      while (stack_.size() > f.base) stack_.pop_back();
     } else {
       pop_frame();
     }
@@ -835,8 +966,8 @@ void Evaluator::branch(Frame& f, const Value& target) {
     // →N goes to line N; a number that is no line of the function leaves it (→0).
     const auto n = static_cast<double>(f.function->lines.size());
     f.line = t >= 1 && t <= n ? static_cast<std::size_t>(t) : 0;
-    f.code.reset();
-    stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(f.base), stack_.end());
+    f.code = nullptr;
+    while (stack_.size() > f.base) stack_.pop_back();
     return;
   }
   // Typed at the prompt: →N resumes the function suspended last at its line N (APL\360), and
@@ -848,7 +979,7 @@ void Evaluator::branch(Frame& f, const Value& target) {
   const auto n = static_cast<double>(s.function->lines.size());
   s.suspended = false;
   s.line = t >= 1 && t <= n ? static_cast<std::size_t>(t) : 0;
-  s.code.reset();
+  s.code = nullptr;
   ctx.start_line();
 }
 
@@ -952,7 +1083,8 @@ void Evaluator::execute_text(const Instr& in) {
   frame.needs_value = (in.flags & needs_value) != 0;
   frame.call_column = in.column;
   frame.text = text.utf8();
-  frame.code = std::move(code);
+  frame.owned = std::move(code);
+  frame.code = frame.owned.get();
   push_frame(std::move(frame));
 }
 
@@ -984,7 +1116,8 @@ void Evaluator::quad_input(const Instr&) {
     Frame frame;
     frame.kind = Frame::Kind::quad;
     frame.text = *line;
-    frame.code = std::move(code);
+    frame.owned = std::move(code);
+    frame.code = frame.owned.get();
     push_frame(std::move(frame));
     return;
   }
@@ -1019,7 +1152,7 @@ void Evaluator::fail(Error e) {
         }
         report(e, {});
         f.suspended = true;
-        f.code.reset();
+        f.code = nullptr;
         stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(f.base), stack_.end());
         return;
       }

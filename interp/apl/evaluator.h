@@ -101,11 +101,13 @@ class Evaluator {
     bool executed_shy = false;      // what the last ⍎ of this frame ran was an assignment
     std::uint32_t call_column = 0;  // the caller's call, for that VALUE ERROR
     std::shared_ptr<const DefinedFunction> function;
-    std::shared_ptr<const Code> code;  // the statement running
+    const Code* code = nullptr;         // the statement running
+    std::shared_ptr<const Code> owned;  // its owner, unless the function's lines keep it
     std::size_t pc = 0;
     std::size_t line = 0;  // a function's: 1, 2, ...
     std::size_t base = 0;  // its first value on the stack
     std::vector<std::optional<Value>> slots;
+    Value scratch{0.0};  // a dyadic's result for the →A/B that follows (code.h, Operand)
     std::vector<std::pair<SystemName, double>> saved;  // localized system variables
     std::string text;  // a typed, executed or ⎕ line, as reports show it
   };
@@ -127,13 +129,16 @@ class Evaluator {
   void definitions_changed();
 
   std::shared_ptr<const Code> compile_text(std::u32string_view text, bool& branch_or_empty);
-  std::shared_ptr<const Code> function_line(const Frame& f);
+  const Code* function_line(Frame& f);
   void push_frame(Frame f);
   void pop_frame();
   void run();
   void step();
   void start_statement(Frame& f);
   void end_statement(const Instr& in);
+  // A dyadic primitive not done on the spot: A, and B when it was not on the stack (with the axis,
+  // it is below it).
+  Value dyadic_primitive(const Instr& in, Value a, std::optional<Value> right);
   void branch(Frame& f, const Value& target);
   void return_from_function();
   void call(std::uint32_t id, const Instr& in, int valence);
@@ -148,6 +153,8 @@ class Evaluator {
   void report(const Error& e, std::string_view typed);
   void flush();
   Value pop();
+  // An argument read straight from a slot or a constant (code.h, Operand).
+  const Value& argument(const Frame& f, const Operand& o) const;
 
   Value system_variable(SystemName s) const;
   void set_system_variable(SystemName s, const Value& v);

@@ -48,6 +48,8 @@ struct DefinedFunction {
   // `compiled_for` (a cache: the function itself never changes).
   mutable std::vector<std::shared_ptr<const Code>> compiled;
   mutable std::uint64_t compiled_for = 0;
+  // Lines compiled for earlier definitions: a frame may still run one (by its address).
+  mutable std::vector<std::shared_ptr<const Code>> retired;
 
   // The source: the header, then the lines (as ∇ would show them, without numbers).
   std::vector<std::string> source() const;

@@ -94,10 +94,18 @@ char32_t canonical_glyph(char32_t c) {
 }
 
 const Glyph* find_glyph(char32_t c) {
-  c = canonical_glyph(c);
-  for (const auto& g : table)
-    if (g.glyph == c) return &g;
-  return nullptr;
+  // Looked up for every character of every statement: an index of the table, made once, for
+  // the characters below U+2600 (every glyph is one).
+  constexpr char32_t limit = 0x2600;
+  static const auto index = [] {
+    std::array<std::uint8_t, limit> at{};
+    for (std::size_t i = 0; i < table.size(); ++i)
+      at[table[i].glyph] = static_cast<std::uint8_t>(i + 1);
+    for (const auto& a : alternatives) at[a.typed] = at[a.glyph];
+    return at;
+  }();
+  if (c >= limit || index[c] == 0) return nullptr;
+  return &table[index[c] - 1];
 }
 
 std::string_view glyph_name(char32_t c) {

@@ -280,3 +280,33 @@ TEST_CASE("∇ at the start of a line closes the definition; `∇G` then opens G
 }
 
 }  // namespace igds::apl::test
+
+namespace igds::apl::test {
+
+TEST_CASE("the loops' shortcuts give APL's results whatever the arguments") {
+  Apl a;
+  // Z←Z+I on numbers, then on vectors; →(I<N)/L on numbers, then on a vector test.
+  a.run({"∇Z←SUM N;I", "Z←I←0", "L:Z←Z+I", "I←I+1", "→(I<N)/L∇"});
+  CHECK(a("SUM 5") == Lines{"10"});
+  CHECK(a("SUM 1") == Lines{"0"});
+  a.run({"∇Z←VSUM N;I", "Z←0 0", "I←0", "L:Z←Z+I,2×I", "I←I+1", "→(1↑I<N)/L∇"});
+  CHECK(a("VSUM 4") == Lines{"6 12"});
+  a.run({"∇Z←TWICE;I", "Z←0", "I←0", "L:Z←Z+1", "I←I+1", "→(2×I<2)/L∇"});
+  CHECK(a("TWICE") == Lines{"2"});  // two copies of L: still a branch to L
+  a.run({"∇Z←ODD;V", "Z←0", "V←1 0 1", "→(0≠+/V)/(2+3)", "Z←99", "Z←Z+1∇"});
+  CHECK(a("ODD") == Lines{"1"});
+  a.run({"∇Z←NONE", "Z←1", "→(0×Z)/3", "Z←2∇"});
+  CHECK(a("NONE") == Lines{"2"});
+  a.run({"∇Z←BAD N", "L:Z←Z+N∇"});
+  CHECK(a("BAD 1") == Lines{"VALUE ERROR", "BAD[1] L:Z←Z+N", "           ^"});
+  a("→");
+  a.run({"∇Z←ORDER;X", "X←1", "Z←(X←3)+X∇"});
+  CHECK(a("ORDER") == Lines{"4"});  // X on the right is read first
+  a.run({"∇Z←LEN;A", "A←1 2", "Z←A+1 2 3∇"});
+  CHECK(a("LEN") == Lines{"LENGTH ERROR", "LEN[2] Z←A+1 2 3", "          ^"});
+  a("→");
+  a.run({"∇Z←CH;I", "I←'A'", "→(I='A')/3", "Z←1", "Z←2∇"});
+  CHECK(a("CH") == Lines{"2"});
+}
+
+}  // namespace igds::apl::test
