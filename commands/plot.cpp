@@ -13,6 +13,7 @@
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/picture.h"
+#include "commands/plot.h"
 #include "devices/hpgl_plot.h"
 #include "workspace/disk/files.h"
 #include "workspace/error.h"
@@ -103,7 +104,14 @@ void run_plot(Context& ctx, const Choice* option) {
   Workspace& ws = ctx.workspace();
   if (!ws.image) throw Report(reports::image_not_found);
   expect_no_more_words(ctx);
-  const Picture picture = picture_of(ws.image);
+  plot_picture(ctx, picture_of(ws.image));
+  // STATUS[2]: the keyboard of the last PLOT, 1 SELECTRIC, 2 EBCDIC.
+  ws.status[1] = option->code;
+}
+
+}  // namespace
+
+void plot_picture(Context& ctx, const Picture& picture) {
   const PlotOptions& options = ctx.options().plot;
   const std::string& plotter = ctx.options().plotter;
   std::string where;
@@ -123,13 +131,9 @@ void run_plot(Context& ctx, const Choice* option) {
       where = plotter;
     }
   }
-  // STATUS[2]: the keyboard of the last PLOT, 1 SELECTRIC, 2 EBCDIC.
-  ws.status[1] = option->code;
   ctx.say(plot_summary(where, stats));
   if (stats.clipped) ctx.say(plot_clipped_notice);
 }
-
-}  // namespace
 
 extern const Command plot_command{
     .name = "PLOT",

@@ -31,6 +31,16 @@ std::string tek_address(int x, int y, int bits) {
   return s;
 }
 
+std::optional<DevicePoint> tek_address_point(std::string_view bytes) {
+  if (bytes.size() != 4) return std::nullopt;
+  // Each byte's tag (its two high bits) says which part of the address it is.
+  const auto b = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  if ((b(0) & 0x60) != 0x20 || (b(1) & 0x60) != 0x60 || (b(2) & 0x60) != 0x20 ||
+      (b(3) & 0x60) != 0x40 || ((b(0) | b(1) | b(2) | b(3)) & 0x80) != 0)
+    return std::nullopt;
+  return DevicePoint{(b(2) & 31) << 5 | (b(3) & 31), (b(0) & 31) << 5 | (b(1) & 31)};
+}
+
 char* TekEncoder::address(DevicePoint p, char* w) {
   Address a = split(p.x, p.y, bits_);
   // The terminal keeps the bytes it last received: send only what changed, LoY also before a

@@ -2,6 +2,7 @@
 // allows, one GS per polyline, 7-bit bytes only, no CR or LF inside graph data.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,6 +14,9 @@ inline constexpr char tek_gs = 0x1D, tek_us = 0x1F, tek_esc = 0x1B, tek_ff = 0x0
 
 // The whole address of (x, y): HiY LoY HiX LoX for 10 bits, HiY Extra LoY HiX LoX for 12.
 std::string tek_address(int x, int y, int bits = 10);
+// The point of a whole 10-bit address (four bytes, as tek_address writes it), or nullopt when
+// the bytes are no address.
+std::optional<DevicePoint> tek_address_point(std::string_view bytes);
 
 // A Device that writes 4013 bytes. Coordinates are 0..1023 x 0..779 (10 bits) or four times
 // that (12 bits); callers clip before (out-of-range values would corrupt the tag bits).

@@ -8,19 +8,19 @@
 #include <limits>
 
 #include "commands/command.h"
-#include "commands/picture.h"
 #include "commands/reports.h"
 #include "interp/apl/array_bridge.h"
+#include "interp/apl/keyboard.h"
+#include "interp/apl_args.h"
 #include "interp/words.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/project.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
 #include "workspace/variables.h"
 
 namespace igds {
 
-extern const Command help_command, end_command;
+extern const Command save_command, restore_command;
 
 namespace {
 
@@ -38,20 +38,6 @@ Array vector(std::vector<double> values) {
   a.shape = {values.size()};
   a.ravel = std::move(values);
   return a;
-}
-
-// DESIM as the manual's 5-element vector.
-Array desim(const Description& d) {
-  return vector({static_cast<double>(d.what), static_cast<double>(static_cast<int>(d.projection)),
-                 d.parameters[0], d.parameters[1], d.parameters[2]});
-}
-
-Description description_of(std::span<const double> v) {
-  Description d;
-  d.what = static_cast<int>(v[0]);
-  d.projection = static_cast<Projection>(static_cast<int>(v[1]));
-  d.parameters = {v[2], v[3], v[4]};
-  return d;
 }
 
 // The image slot a name reads or writes: IMAGE and DESIM, TEMP1 and DEST1, TEMP2 and DEST2.
@@ -75,48 +61,34 @@ bool whole(double x) {
   return std::isfinite(x) && std::floor(x) == x;
 }
 
-// A kernel's refusal as an APL report in igds's words.
-[[noreturn]] void refuse(const DataError& e) {
-  throw apl::Error(ErrorKind::domain, worded(e).what());
-}
-
-// The points of a projection function's left argument: any rank, 3 on the last axis.
-Array points_argument(const Value* v) {
-  if (!v || v->is_character()) throw apl::Error(ErrorKind::domain);
-  if (v->rank() == 0 || v->shape().back() != 3) throw apl::Error(ErrorKind::length);
-  return apl::to_array(*v);
-}
-
-// The projection of `points` by one of the manual's four functions: the same shape with 2 on
-// the last axis.
-template <typename F>
-Value projected(const Array& points, F project) {
-  Array out;
-  out.shape = points.shape;
-  out.shape.back() = 2;
-  out.ravel.assign(points.size() / 3 * 2, 0.0);
-  try {
-    project(as_vec3(points), as_point2(out));
-  } catch (const DataError& e) {
-    refuse(e);
-  }
-  return apl::to_value(out);
-}
-
-std::vector<double> numbers_of(const Value* v, std::size_t count) {
-  if (!v || v->is_character()) throw apl::Error(ErrorKind::domain);
-  if (v->rank() > 1) throw apl::Error(ErrorKind::rank);
-  if (v->size() != count) throw apl::Error(ErrorKind::length);
-  auto x = v->numbers();
-  return {x.begin(), x.end()};
-}
-
-// The words of a COMxxx function's argument: a character vector, or an empty vector.
-std::vector<std::string> words_of(const Value* v) {
-  if (!v || v->empty()) return {};
-  if (!v->is_character() || v->rank() > 1) throw apl::Error(ErrorKind::domain);
-  return split_words(v->utf8());
-}
+// The explanation of the APL environment: SHORT, then LONG.
+constexpr std::string_view short_help =
+    "Type an APL statement (the IGDS variables are APL variables), )VARS, )FNS, START to go back "
+    "to IGDS or )OFF to leave; )HELP LONG explains.";
+constexpr std::string_view long_help =
+    R"(The APL environment is APL\360: any statement, on the IGDS workspace variables
+(manual section 7) and on variables and functions of your own.
+  NOCUR NOSTR INTCU INTST   the grid: input curves and stringers, interpolated ones
+  INPPN    input points, (NOCUR x NOSTR) x 3      INPTG   border tangents and point numbers
+  PATCHES  the Coons matrices of every patch      INTPN   the interpolated grid
+  IMAGE DESIM               the current image and its description
+  TEMP1 DEST1 TEMP2 DEST2   the copies of STORE FIRST and SECOND
+  STATUS   STATUS[1] is 1 for HELP LONG, 0 for SHORT
+The manual's functions (section 7) are there: FIT COONS CURVILINEO DISTA F0 F1 G0 G1
+ASSON CONIC ISOM ORTHOG PROSPAR SCALE DESCR DISPLA PLOTHP STATE WRT ... ()FNS lists
+them); COMDIS 'SURFACE ISOMETRIC 3 30' or COMDIS 5 3 3 30 runs that command.
+A function that fails, or that Ctrl-C stops, is suspended: )SI lists it, its local
+names are there, →N goes on at its line N, → leaves it.
+START goes back to IGDS (READY): what was made from a changed variable is made again
+(PATCHES from the inputs, INTPN from PATCHES); a workspace that does not agree with
+itself is refused, with the reason, and APL goes on. )SAVE NAME and )LOAD NAME keep
+and bring back the surface with your variables and functions; )OFF leaves.
+Here HELP is a name like any other, and a line starting with * a statement.
+Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).
+Example:
+      INPPN[5;3]←2
+      ⍴INTPN
+9 9 3)";
 
 bool is_error_report(std::string_view line) {
   for (auto kind : {ErrorKind::syntax, ErrorKind::value, ErrorKind::domain, ErrorKind::length,
@@ -155,7 +127,7 @@ std::optional<Array> workspace_variable(const Workspace& ws, std::string_view ty
   }
   const ImageRef* image = image_slot(const_cast<Workspace&>(ws), info->id);
   if (!image || !*image) return std::nullopt;
-  if (info->kept == Kept::image_view) return desim((*image)->desim);
+  if (info->kept == Kept::image_view) return apl_args::desim_array((*image)->desim);
   return (*image)->points;
 }
 
@@ -182,7 +154,33 @@ AplEnvironment::AplEnvironment(Workspace& ws, Hooks hooks)
   ws_.functions = session_.defined_functions();
 }
 
+std::string AplEnvironment::help(bool long_text) {
+  if (!long_text) return std::string(short_help);
+  std::string text(long_help);
+  text += "\nThe prefix keys:";
+  for (const auto& line : apl::keyboard_help()) text += "\n" + line;
+  return text;
+}
+
 apl::AplSession::Next AplEnvironment::execute(std::string_view line) {
+  // )HELP, )HELP SHORT, )HELP LONG (or )H S ...): the explanation, its length kept in STATUS[1]
+  // as HELP keeps it (HELP itself is a name in APL).
+  std::vector<std::string> words = split_words(line);
+  const std::string command = words.empty() ? "" : upper(std::string_view(words[0]).substr(1));
+  if (!session_.defining() && !words.empty() && words.size() <= 2 && words[0].starts_with(')') &&
+      command.size() > 0 && help_word().starts_with(command)) {
+    if (words.size() == 2) {
+      const Choice* length = choose(help_lengths(), words[1]);
+      if (!length) {
+        hooks_.report("INCORRECT COMMAND");
+        return apl::AplSession::Next::stay;
+      }
+      ws_.status[0] = length->code;  // STATUS[1], as HELP SHORT and HELP LONG set it
+    }
+    values_.erase("STATUS");
+    hooks_.document(help(ws_.status[0] == 1));
+    return apl::AplSession::Next::stay;
+  }
   const auto next = session_.execute(line);
   // Defined functions are part of the workspace: the session keeps them.
   if (!session_.defining()) {
@@ -218,6 +216,9 @@ void AplEnvironment::check(std::string_view name, const Value& value) {
   const VariableInfo& info = *find_variable(name);
   if (value.is_character()) throw apl::Error(ErrorKind::domain);
   const auto x = value.numbers();
+  // No infinity or NaN enters the workspace (APL makes none; a native function might).
+  if (!std::all_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); }))
+    throw apl::Error(ErrorKind::domain);
   if (info.integer && !std::all_of(x.begin(), x.end(), whole)) throw apl::Error(ErrorKind::domain);
   switch (info.kept) {
     case Kept::surface_number:
@@ -249,7 +250,6 @@ void AplEnvironment::check(std::string_view name, const Value& value) {
 
 void AplEnvironment::set(std::string_view name, const Value& value) {
   const VariableInfo& info = *find_variable(name);
-  values_.clear();  // an image and its description change together; START may remake others
   Array a = apl::to_array(value);
   switch (info.id) {
     case Variable::nocur:
@@ -286,17 +286,56 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
       image.drawn_from = 0;
       image.file.clear();
       if (info.kept == Kept::image_view) {
-        image.desim = description_of(a.ravel);
+        image.desim = apl_args::description_of(a.ravel);
       } else {
         image.points = std::move(a);
         image.arrows = Array();
       }
       slot = std::make_shared<const Image>(std::move(image));
+      values_.clear();  // an image and its description change together
       break;
     }
   }
+  // The value stays as APL has it: the next statement reads it without a copy.
+  values_.insert_or_assign(std::string(info.name), value);
   assigned_.insert(std::string(info.name));
 }
+
+namespace {
+
+// The input point a derived array does not pass through (1, 2, ...), or 0. PATCHES holds each
+// patch's corners as they are in INPPN and INTPN the input points at its nodes, bit for bit
+// (docs/kernels.md), whoever made them.
+std::size_t point_off_inputs(const Workspace& ws, Variable v) {
+  const std::size_t nc = ws.nocur, ns = ws.nostr;
+  if (nc < 2 || ns < 2 || ws.inppn.size() != nc * ns * 3) return 0;
+  auto point = [&](std::size_t k, std::size_t c) { return ws.inppn.ravel[k * 3 + c]; };
+  if (v == Variable::patches) {
+    if (ws.patches.size() != (nc - 1) * (ns - 1) * 48) return 0;
+    for (std::size_t i = 0; i + 1 < nc; ++i)
+      for (std::size_t j = 0; j + 1 < ns; ++j)
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double* m = ws.patches.ravel.data() + ((i * (ns - 1) + j) * 3 + c) * 16;
+          const std::size_t k00 = i * ns + j, k10 = k00 + 1, k01 = k00 + ns, k11 = k01 + 1;
+          const std::pair<std::size_t, double> corners[] = {
+              {k00, m[0]}, {k01, m[1]}, {k10, m[4]}, {k11, m[5]}};
+          for (const auto& [k, x] : corners)
+            if (x != point(k, c)) return k + 1;
+        }
+    return 0;
+  }
+  const std::size_t rows = nc + ws.intcu * (nc - 1), cols = ns + ws.intst * (ns - 1);
+  if (ws.intpn.size() != rows * cols * 3) return 0;
+  for (std::size_t i = 0; i < nc; ++i)
+    for (std::size_t j = 0; j < ns; ++j)
+      for (std::size_t c = 0; c < 3; ++c) {
+        const std::size_t node = (i * (ws.intcu + 1) * cols + j * (ws.intst + 1)) * 3 + c;
+        if (ws.intpn.ravel[node] != point(i * ns + j, c)) return i * ns + j + 1;
+      }
+  return 0;
+}
+
+}  // namespace
 
 std::optional<std::string> AplEnvironment::start() {
   if (assigned_.empty()) return std::nullopt;
@@ -305,38 +344,75 @@ std::optional<std::string> AplEnvironment::start() {
     return std::any_of(names.begin(), names.end(),
                        [&](std::string_view n) { return assigned_.count(std::string(n)) > 0; });
   };
-  const bool inputs = was({"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG"});
-  // PATCHES or INTPN given values of their own are kept; emptied, they are made again.
-  const bool assigned_derived = was({"PATCHES", "INTPN"});
-  const bool emptied = assigned_derived && (ws_.patches.empty() || ws_.intpn.empty());
-  const bool derived = assigned_derived && !emptied;
+  // Each derived variable given a value of its own is kept (checked against the inputs below);
+  // otherwise it is made again when what it is made from changed: PATCHES from NOCUR NOSTR
+  // INPPN INPTG (COONS), INTPN from PATCHES and INTCU INTST (FIT). An emptied one is made again,
+  // and what is made from it.
+  // An emptied PATCHES takes INTPN with it.
+  const bool own_patches = was({"PATCHES"}) && !ws_.patches.empty();
+  const bool own_intpn =
+      was({"INTPN"}) && !ws_.intpn.empty() && !(was({"PATCHES"}) && ws_.patches.empty());
+  const bool patch_inputs = was({"NOCUR", "NOSTR", "INPPN", "INPTG"});
+  const bool remake_patches = !own_patches && (patch_inputs || was({"PATCHES"}));
+  const bool remake_intpn =
+      !own_intpn && (remake_patches || own_patches || was({"INTCU", "INTST", "INTPN"}));
   auto reason = [](const VariableProblem& p) { return p.reason; };
-  if ((inputs || emptied) && !derived) {
-    // The inputs changed: PATCHES and INTPN are made again from them, as CHANGE does.
+  const bool surface = remake_patches || remake_intpn || own_patches || own_intpn ||
+                       was({"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG"});
+  if (surface) {
     if (auto p = size_problem(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) return reason(*p);
-    Array patches = std::move(ws_.patches), intpn = std::move(ws_.intpn);
+    // The inputs are checked alone first, then what is made from them; a refusal gives back
+    // PATCHES and INTPN as they were.
+    Array old_patches = std::move(ws_.patches), old_intpn = std::move(ws_.intpn);
     ws_.patches = Array();
     ws_.intpn = Array();
-    auto problem = surface_problem(ws_, true);
-    if (!problem && ws_.nocur > 0) {
+    auto give_back = [&] {
+      ws_.patches = std::move(old_patches);
+      ws_.intpn = std::move(old_intpn);
+    };
+    if (auto p = surface_problem(ws_, true)) {
+      give_back();
+      return reason(*p);
+    }
+    Array patches, intpn;
+    if (ws_.nocur > 0) {
       try {
-        Surface s = interpolate(igds::surface_input(ws_));
-        ws_.patches = std::move(s.patches);
-        ws_.intpn = std::move(s.intpn);
+        if (remake_patches) {
+          Surface s = interpolate(igds::surface_input(ws_));
+          patches = std::move(s.patches);
+          intpn = std::move(s.intpn);
+        } else if (remake_intpn) {
+          intpn = refit(igds::surface_input(ws_), old_patches);
+        }
       } catch (const DataError& e) {
-        ws_.patches = std::move(patches);
-        ws_.intpn = std::move(intpn);
+        give_back();
         return std::string(worded(e).reason());
       }
-    } else if (problem) {
-      ws_.patches = std::move(patches);
-      ws_.intpn = std::move(intpn);
-      return reason(*problem);
     }
-    ws_.changes.replaced(true);
-  } else if (inputs || derived) {
-    if (auto p = surface_problem(ws_, true)) return reason(*p);
-    ws_.changes.replaced(!derived);
+    // What is kept is moved back; what was made replaces it (the old kept aside, for a refusal).
+    if (remake_patches) std::swap(patches, old_patches);
+    if (remake_intpn) std::swap(intpn, old_intpn);
+    ws_.patches = std::move(old_patches);
+    ws_.intpn = std::move(old_intpn);
+    old_patches = std::move(patches);
+    old_intpn = std::move(intpn);
+    auto keep_original = [&] {
+      if (!remake_patches) old_patches = std::move(ws_.patches);
+      if (!remake_intpn) old_intpn = std::move(ws_.intpn);
+      give_back();
+    };
+    std::optional<std::string> problem;
+    if (auto p = surface_problem(ws_, true)) problem = reason(*p);
+    for (Variable v : {Variable::patches, Variable::intpn}) {
+      if (problem || !(v == Variable::patches ? own_patches : own_intpn)) continue;
+      if (const std::size_t k = point_off_inputs(ws_, v))
+        problem = fmt::format("{} DOES NOT PASS THROUGH INPPN AT POINT {}", info(v).name, k);
+    }
+    if (problem) {
+      keep_original();
+      return problem;
+    }
+    ws_.changes.replaced(!own_patches && !own_intpn);
   }
   for (Variable v : {Variable::image, Variable::temp1, Variable::temp2}) {
     const ImageRef& slot = *image_slot(ws_, v);
@@ -348,10 +424,29 @@ std::optional<std::string> AplEnvironment::start() {
   return std::nullopt;
 }
 
+void AplEnvironment::surface_replaced() {
+  values_.clear();
+  for (const char* n : {"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG", "PATCHES", "INTPN"})
+    assigned_.erase(n);
+}
+
+void AplEnvironment::run_command(std::vector<std::string> words) {
+  // The command sees the workspace whole: what APL changed is made consistent first.
+  if (auto problem = start())
+    throw apl::Error(ErrorKind::domain, fmt::format("CANNOT START: {}", *problem));
+  ReadingFor igds(false);
+  const bool done = hooks_.command(words);
+  values_.clear();
+  // The command's own report was printed; the function fails with it.
+  if (!done) throw apl::Error(ErrorKind::domain, fmt::format("{} FAILED", words.front()));
+}
+
 std::vector<std::string> AplEnvironment::names() const {
   std::vector<std::string> out = defined_variables(ws_);
   for (auto& f : session_.function_names()) out.push_back(f);
-  for (const char* c : {")VARS", ")FNS", ")ERASE", ")DIGITS", ")ORIGIN", ")SAVE", ")LOAD", ")OFF"})
+  for (const auto& [name, v] : session_.variables()) out.push_back(name);
+  for (const char* c : {")VARS", ")FNS", ")ERASE", ")DIGITS", ")ORIGIN", ")WIDTH", ")SI", ")SIC",
+                        ")SAVE", ")LOAD", ")COPY", ")CLEAR", ")HELP", ")OFF"})
     out.emplace_back(c);
   return out;
 }
@@ -360,174 +455,22 @@ std::vector<std::string> AplEnvironment::variable_names() const {
   return defined_variables(ws_);
 }
 
-std::string AplEnvironment::save_workspace(std::string_view name) {
+std::vector<std::string> AplEnvironment::save_workspace(std::string_view name) {
   // A surface that does not agree with itself is never written.
-  if (auto problem = start()) return fmt::format("NOT SAVED: {}", *problem);
-  return hooks_.save(name);
+  if (auto problem = start()) return {fmt::format("NOT SAVED: {}", *problem)};
+  if (!hooks_.command({std::string(save_command.name), std::string(name)})) return {};
+  return {fmt::format("SAVED {}", upper(name))};
 }
 
-std::string AplEnvironment::load_workspace(std::string_view name) {
-  return hooks_.load(name);
+std::vector<std::string> AplEnvironment::load_workspace(std::string_view name) {
+  if (!hooks_.command({std::string(restore_command.name), std::string(name)})) return {};
+  surface_replaced();
+  return {fmt::format("LOADED {}", upper(name))};
 }
 
-void AplEnvironment::define_manual_functions() {
-  using Args = const Value*;
-  auto surface_input = [this] {
-    if (ws_.nocur == 0) throw apl::Error(ErrorKind::value);
-    return igds::surface_input(ws_);
-  };
-  session_.define_native(
-      "FIT", 0,
-      [this, surface_input](Args, Args) -> std::optional<Value> {
-        if (ws_.patches.empty()) throw apl::Error(ErrorKind::value);
-        try {
-          return apl::to_value(refit(surface_input(), ws_.patches));
-        } catch (const DataError& e) {
-          refuse(e);
-        }
-      },
-      "FIT: the grid INTPN from NOCUR NOSTR INTCU INTST INPPN PATCHES (the result)");
-  session_.define_native(
-      "COONS", 0,
-      [this, surface_input](Args, Args) -> std::optional<Value> {
-        try {
-          session_.assign("PATCHES", apl::to_value(interpolate(surface_input()).patches));
-        } catch (const DataError& e) {
-          refuse(e);
-        }
-        return std::nullopt;
-      },
-      "COONS: PATCHES from NOCUR NOSTR INPPN INPTG");
-  session_.define_native(
-      "ORTHOG", 2,
-      [](Args points, Args dropped) -> std::optional<Value> {
-        const double d = numbers_of(dropped, 1)[0];
-        if (d != 1 && d != 2 && d != 3) throw apl::Error(ErrorKind::domain);
-        const int plane = d == 3 ? 1 : d == 2 ? 2 : 3;  // the plane of the other two coordinates
-        return projected(points_argument(points),
-                         [&](Vec3View in, MutablePoint2View out) { orthog(in, plane, out); });
-      },
-      "P ORTHOG K: the points P (last axis 3) without their coordinate K (1 X, 2 Y, 3 Z)");
-  session_.define_native(
-      "ISOM", 2,
-      [](Args points, Args parameters) -> std::optional<Value> {
-        const auto p = numbers_of(parameters, 2);
-        if (p[0] != 1 && p[0] != 2 && p[0] != 3) throw apl::Error(ErrorKind::domain);
-        return projected(points_argument(points), [&](Vec3View in, MutablePoint2View out) {
-          isom(in, static_cast<int>(p[0]), p[1], out);
-        });
-      },
-      "P ISOM AXIS ANGLE: the isometric projection of the points P");
-  session_.define_native(
-      "ASSON", 2,
-      [](Args points, Args angles) -> std::optional<Value> {
-        const auto a = numbers_of(angles, 3);
-        return projected(points_argument(points), [&](Vec3View in, MutablePoint2View out) {
-          asson(in, {a[0], a[1], a[2]}, out);
-        });
-      },
-      "P ASSON A B C: the axonometric projection of the points P, angles in degrees");
-  session_.define_native(
-      "CONIC", 2,
-      [](Args points, Args view) -> std::optional<Value> {
-        const auto v = numbers_of(view, 3);
-        const Array p = points_argument(points);
-        return projected(p, [&](Vec3View in, MutablePoint2View out) {
-          conic(in, {v[0], v[1], v[2]}, bounding_box_centre(in), out);
-        });
-      },
-      "P CONIC V: the perspective of the points P seen from V towards their centre");
-  session_.define_native(
-      "SCALE", 2,
-      [](Args box, Args points) -> std::optional<Value> {
-        // The points' bounding box into the rectangle from (X0, Y0) to (XMAX, YMAX), one scale
-        // for both axes, from the corner (X0, Y0), as DISPLA scaled IMAGE for the screen.
-        const auto b = numbers_of(box, 4);
-        if (!points || points->is_character()) throw apl::Error(ErrorKind::domain);
-        if (points->rank() == 0 || points->shape().back() != 2) throw apl::Error(ErrorKind::length);
-        Array p = apl::to_array(*points);
-        double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
-        for (std::size_t i = 0; i < p.size(); ++i) {
-          lo[i % 2] = std::min(lo[i % 2], p.ravel[i]);
-          hi[i % 2] = std::max(hi[i % 2], p.ravel[i]);
-        }
-        const double w = hi[0] - lo[0], h = hi[1] - lo[1];
-        const double sx = w > 0 ? (b[2] - b[0]) / w : INFINITY,
-                     sy = h > 0 ? (b[3] - b[1]) / h : INFINITY;
-        double s = std::min(sx, sy);
-        if (!std::isfinite(s)) s = 1;
-        for (std::size_t i = 0; i < p.size(); ++i)
-          p.ravel[i] = b[i % 2] + s * (p.ravel[i] - lo[i % 2]);
-        return apl::to_value(p);
-      },
-      "X0 Y0 XMAX YMAX SCALE P: the points P (last axis 2) scaled into that rectangle");
-  session_.define_native(
-      "DESCR", 1,
-      [](Args, Args d) -> std::optional<Value> {
-        const auto v = numbers_of(d, 5);
-        Image image;
-        image.desim = description_of(v);
-        if (image_problem(image)) throw apl::Error(ErrorKind::domain);
-        return Value::text(describe_line(image.desim));
-      },
-      "DESCR DESIM: the description of an image, as DISPLAY writes it");
-  session_.define_native(
-      "LUT", 2,
-      [](Args table, Args word) -> std::optional<Value> {
-        // The first row of the character matrix that starts with the word (its row number,
-        // from 1), else 0: how GETCOM looked commands up in their table.
-        if (!table || !word || !table->is_character() || !word->is_character())
-          throw apl::Error(ErrorKind::domain);
-        if (table->rank() != 2 || word->rank() > 1) throw apl::Error(ErrorKind::rank);
-        const auto t = table->characters();
-        const auto w = word->characters();
-        const std::size_t rows = table->shape()[0], cols = table->shape()[1];
-        for (std::size_t r = 0; r < rows; ++r)
-          if (w.size() <= cols && std::equal(w.begin(), w.end(), t.begin() + r * cols))
-            return Value::number(static_cast<double>(r + 1));
-        return Value::number(0);
-      },
-      "TABLE LUT WORD: the first row of TABLE that starts with WORD, else 0");
-  session_.define_native(
-      "INIT", 0,
-      [this](Args, Args) -> std::optional<Value> {
-        hooks_.say("INIT: THE SESSION WAS RESTORED WHEN IGDS STARTED; RESTORE READS A SURFACE");
-        return std::nullopt;
-      },
-      "INIT: done by igds when it starts (the session comes back by itself)");
-  // The command functions of the manual's commands (those before HELP in the table): COM and
-  // the command's first three letters (COMBUI is BUILD, COMDIS DISPLAY, ...); the argument is
-  // the words that follow the command, as typed after READY.
-  std::vector<std::pair<std::string, std::string>> commands;
-  for (const Command* c : command_table()) {
-    if (c == &help_command) break;
-    commands.emplace_back("COM" + std::string(c->name.substr(0, 3)), std::string(c->name));
-  }
-  for (const auto& [function, command] : commands) {
-    const std::string word = command;
-    const bool end = word == end_command.name;
-    session_.define_native(
-        function, 1,
-        [this, word, end](Args, Args argument) -> std::optional<Value> {
-          std::vector<std::string> line{word};
-          for (auto& w : words_of(argument)) line.push_back(std::move(w));
-          if (end) {
-            // Already in APL: END APL stays, END CMS leaves igds.
-            const Choice* option = line.size() > 1 ? choose(end_command.options, line[1]) : nullptr;
-            if (!option) throw apl::Error(ErrorKind::domain, reports::incorrect_choice);
-            if (option != &end_command.options.front())  // END APL stays
-              session_.request(apl::AplSession::Next::off);
-            return std::nullopt;
-          }
-          // The command sees the workspace whole: what APL changed is made consistent first.
-          if (auto problem = start())
-            throw apl::Error(ErrorKind::domain, fmt::format("CANNOT START: {}", *problem));
-          hooks_.command(line);
-          values_.clear();
-          return std::nullopt;
-        },
-        fmt::format("{} 'WORDS': the command {} with those words", function, command));
-  }
+std::vector<std::string> AplEnvironment::copy_workspace(std::string_view,
+                                                        const std::vector<std::string>&) {
+  return {"INCORRECT COMMAND"};
 }
 
 }  // namespace igds

@@ -9,6 +9,7 @@
 
 #include "commands/entries.h"
 #include "commands/picture.h"
+#include "commands/plot.h"
 #include "commands/reports.h"
 #include "interp/apl/keyboard.h"
 #include "interp/apl_env.h"
@@ -21,33 +22,7 @@ namespace igds {
 
 extern const Command save_command, restore_command;
 
-namespace {
-
-constexpr std::string_view apl_short_help =
-    "Type an APL statement (the IGDS variables are APL variables), )VARS, )FNS, START to go back "
-    "to IGDS or )OFF to leave.";
-constexpr std::string_view apl_long_help =
-    R"(The APL environment is APL\360: any statement, on the IGDS workspace variables
-(manual section 7) and on variables and functions of your own.
-  NOCUR NOSTR INTCU INTST   the grid: input curves and stringers, interpolated ones
-  INPPN    input points, (NOCUR x NOSTR) x 3      INPTG   border tangents and point numbers
-  PATCHES  the Coons matrices of every patch      INTPN   the interpolated grid
-  IMAGE DESIM               the current image and its description
-  TEMP1 DEST1 TEMP2 DEST2   the copies of STORE FIRST and SECOND
-  STATUS   STATUS[1] is 1 for HELP LONG, 0 for SHORT
-The manual's functions: FIT COONS ASSON CONIC ISOM ORTHOG SCALE DESCR LUT INIT, and
-COMDIS 'SURFACE ISOMETRIC 3 30' (COMBUI COMCHA COMSTO COMSAV COMRES COMPLO COMWRI
-COMEND) runs that command. )VARS and )FNS list the names.
-START goes back to IGDS (READY): a changed INPPN, INPTG, NOCUR ... INTST makes PATCHES
-and INTPN again; a workspace that does not agree with itself is refused, with the
-reason, and APL goes on. )SAVE NAME and )LOAD NAME are SAVE and RESTORE; )OFF leaves.
-Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).
-Example:
-      INPPN[5;3]←2
-      ⍴INTPN
-9 9 3)";
-
-}  // namespace
+namespace {}  // namespace
 
 Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace ws,
                          Terminal& terminal)
@@ -306,26 +281,52 @@ Interpreter::Outcome Interpreter::apl_environment() {
     bool& flag;
     ~Leave() { flag = false; }
   } leave{in_apl_};
+  // The lines are APL's: a `*` line is a statement, ⍞ takes any line (interp/words.h).
+  ReadingFor apl_lines(true);
   if (!apl_) {
     AplEnvironment::Hooks hooks;
     hooks.say = [this](std::string_view line) { say(line); };
     hooks.report = [this](std::string_view line) { report(line); };
+    hooks.document = [this](std::string_view text) { document(text); };
     hooks.read = [this](std::string_view prompt) -> std::optional<std::string> {
       const Event e = terminal_.read_line(prompt);
       if (e.kind != Event::Kind::line) return std::nullopt;
       return e.text;
     };
-    hooks.command = [this](const std::vector<std::string>& words) { execute(words); };
-    // )SAVE and )LOAD are SAVE and RESTORE of the surface: what the command says is the answer.
-    auto through = [this](const Command& command) {
-      return [this, &command](std::string_view name) -> std::string {
-        const int before = errors_;
-        execute({std::string(command.name), std::string(name)});
-        return errors_ == before ? fmt::format("{} {}", command.name, upper(name)) : std::string();
-      };
+    // A command run from APL (COMDIS ..., )SAVE, )LOAD): true when it reported nothing.
+    hooks.command = [this](const std::vector<std::string>& words) {
+      const int before = errors_;
+      execute(words);
+      return errors_ == before;
     };
-    hooks.save = through(save_command);
-    hooks.load = through(restore_command);
+    hooks.save_session = [this] {
+      save();
+      return save_failure_;
+    };
+    hooks.load_session = [this]() -> std::optional<Workspace> {
+      const std::size_t notices = session_.notices().size();
+      Workspace loaded = session_.load();
+      if (session_.notices().size() != notices) {
+        for (std::size_t i = notices; i < session_.notices().size(); ++i)
+          report(session_.notices()[i]);
+        return std::nullopt;
+      }
+      return loaded;
+    };
+    hooks.show = [this](const ImageRef& image) { show(image); };
+    hooks.draw = [this](const Picture& picture, std::string_view line) {
+      terminal_.show(
+          terminal_.mode() == TermMode::none ? nullptr : std::make_shared<const Picture>(picture),
+          line);
+    };
+    hooks.plot = [this](const Picture& picture) {
+      try {
+        plot_picture(*this, picture);
+      } catch (const Error& r) {
+        throw apl::Error(apl::ErrorKind::domain, r.what());
+      }
+    };
+    hooks.disk = &disk_;
     apl_ = std::make_unique<AplEnvironment>(ws_, std::move(hooks));
   }
   apl_->forget();
@@ -342,21 +343,6 @@ Interpreter::Outcome Interpreter::apl_environment() {
     if (e.kind != Event::Kind::line) {
       leave_apl();
       return Outcome::ended;  // the end of the input is )OFF
-    }
-    auto words = split_words(e.text);
-    if (words.empty()) continue;
-    if (const HelpRequest help = help_request(words); help.asked) {
-      if (help.length >= 0) ws_.status[0] = help.length;
-      if (ws_.status[0] == 1) {
-        // The prefix keys, from their table.
-        std::string text(apl_long_help);
-        text += "\nThe prefix keys:";
-        for (const auto& line : apl::keyboard_help()) text += "\n" + line;
-        terminal_.document(text);
-      } else {
-        terminal_.document(apl_short_help);
-      }
-      continue;
     }
     const int before = errors_;
     auto next = apl::AplSession::Next::stay;

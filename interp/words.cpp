@@ -12,9 +12,20 @@ constexpr bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
 }
 
+bool reading_apl = false;  // the conversation runs on one thread
+
 }  // namespace
 
+ReadingFor::ReadingFor(bool apl) : was_(reading_apl) {
+  reading_apl = apl;
+}
+
+ReadingFor::~ReadingFor() {
+  reading_apl = was_;
+}
+
 bool is_comment_line(std::string_view line) {
+  if (reading_apl) return false;
   std::size_t i = 0;
   while (i < line.size() && is_blank(line[i])) ++i;
   line.remove_prefix(i);

@@ -48,6 +48,14 @@ bool is_name(std::string_view s) {
   return std::all_of(u.begin(), u.end(), is_name_char);
 }
 
+bool small_number(const std::string& word, int& n) {
+  if (word.empty() || word.size() > 3 ||
+      !std::all_of(word.begin(), word.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  n = std::stoi(word);
+  return true;
+}
+
 }  // namespace
 
 class AplSession::Impl {
@@ -57,10 +65,13 @@ class AplSession::Impl {
   Next execute(std::string_view line);
   void open_editor(std::string_view rest);
   void editor_line(std::string_view line);
-  void close_editor();
+  bool close_editor();
   Next system_command(std::string_view line);
-  void list_names(std::vector<std::string> names, std::string_view from);
+  // Names in lines of at most ⎕PW characters, starting with `first` (a heading) when given.
+  void list_names(std::vector<std::string> names, std::string_view from,
+                  std::string_view first = {});
   void check_definable(const std::string& name, const std::string& original) const;
+  void setting(const std::vector<std::string>& words, int& value, int low, int high);
 
   Evaluator eval;
   std::unique_ptr<Editor> editor;
@@ -68,11 +79,10 @@ class AplSession::Impl {
 };
 
 AplSession::Next AplSession::Impl::execute(std::string_view line) {
-  eval.interrupted = false;
   eval.requested = Next::stay;
   if (editor) {
     editor_line(line);
-    return Next::stay;
+    return eval.requested;
   }
   std::string_view typed = trim(line);
   if (typed.empty()) return Next::stay;
@@ -86,9 +96,8 @@ AplSession::Next AplSession::Impl::execute(std::string_view line) {
 }
 
 void AplSession::Impl::check_definable(const std::string& name, const std::string& original) const {
-  if (name != original && (eval.functions.count(name) || eval.natives.count(name)))
-    throw Error(ErrorKind::defn);
-  if (eval.natives.count(name) || eval.is_variable(name)) throw Error(ErrorKind::defn);
+  if (name != original && (eval.function(name) || eval.native(name))) throw Error(ErrorKind::defn);
+  if (eval.native(name) || eval.is_variable(name)) throw Error(ErrorKind::defn);
 }
 
 void AplSession::Impl::open_editor(std::string_view rest) {
@@ -101,8 +110,9 @@ void AplSession::Impl::open_editor(std::string_view rest) {
     std::vector<std::string> source;
     if (is_name(header)) {
       const std::string name = folded(header);
-      if (auto it = eval.functions.find(name); it != eval.functions.end()) {
-        source = it->second->source();
+      if (auto f = eval.function(name)) {
+        if (eval.pendent(name)) throw Error(ErrorKind::defn);
+        source = f->source();
         edited = name;
       } else {
         check_definable(name, "");
@@ -126,100 +136,136 @@ void AplSession::Impl::open_editor(std::string_view rest) {
 void AplSession::Impl::editor_line(std::string_view line) {
   Editor::Step step = editor->line(line);
   for (const auto& out : step.output) eval.print(out);
-  if (step.close) close_editor();
+  if (!step.close || !close_editor()) return;
+  // ∇ at the start of a line: the definition closed, the line is read at the six-blank prompt.
+  if (step.reopen) execute(line);
 }
 
-void AplSession::Impl::close_editor() {
+bool AplSession::Impl::close_editor() {
   try {
     DefinedFunction f = make_function(editor->source());
     const std::string name = f.header.name;
     check_definable(name, edited);
-    eval.functions[name] = std::make_shared<const DefinedFunction>(std::move(f));
+    eval.define(std::move(f));
     editor.reset();
     edited.clear();
+    return true;
   } catch (const Error& e) {
     eval.print(e.what());  // the definition stays open, to be mended
+    return false;
   }
 }
 
-void AplSession::Impl::list_names(std::vector<std::string> names, std::string_view from) {
+void AplSession::Impl::list_names(std::vector<std::string> names, std::string_view from,
+                                  std::string_view first) {
   std::sort(names.begin(), names.end());
   names.erase(std::unique(names.begin(), names.end()), names.end());
-  std::string line;
+  const std::size_t width = static_cast<std::size_t>(eval.ctx.pw);
+  const std::string prefix = first.empty() ? std::string() : std::string(first) + " ";
+  const std::string indent(decode_utf8(prefix).size(), ' ');
+  std::string line = prefix;
+  std::size_t on_line = 0;
   for (const auto& n : names) {
     if (!from.empty() && n < from) continue;
-    if (!line.empty() && decode_utf8(line).size() + 1 + decode_utf8(n).size() > 80) {
+    if (on_line > 0 && decode_utf8(line).size() + 1 + decode_utf8(n).size() > width) {
       eval.print(line);
-      line.clear();
+      line = indent;
+      on_line = 0;
     }
-    if (!line.empty()) line += ' ';
+    if (on_line > 0) line += ' ';
     line += n;
+    ++on_line;
   }
-  if (!line.empty()) eval.print(line);
+  if (on_line > 0) eval.print(line);
+}
+
+void AplSession::Impl::setting(const std::vector<std::string>& words, int& value, int low,
+                               int high) {
+  if (words.size() == 1) {
+    eval.print("IS " + std::to_string(value));
+    return;
+  }
+  int n = -1;
+  if (words.size() != 2 || !small_number(words[1], n) || n < low || n > high) {
+    eval.print("INCORRECT COMMAND");
+    return;
+  }
+  eval.print("WAS " + std::to_string(value));
+  value = n;
 }
 
 AplSession::Next AplSession::Impl::system_command(std::string_view line) {
-  // The system commands of APL\360 (User's Manual, chapter 6) that a session in igds has.
+  // The system commands of APL\360 (User's Manual, chapter 6) that a session in igds has, and
+  // APL2's )SIC.
   std::vector<std::string> words = words_of(line.substr(1));
   const std::string command = words.empty() ? "" : folded(words[0]);
   const std::string argument = words.size() > 1 ? words[1] : "";
+  auto print_all = [this](const std::vector<std::string>& lines) {
+    for (const auto& l : lines) eval.print(l);
+  };
   if (command == "OFF") return Next::off;
   if (command == "VARS" || command == "FNS") {
-    std::vector<std::string> names;
-    if (command == "VARS") {
-      for (const auto& [name, v] : eval.globals) names.push_back(name);
-      for (auto& name : eval.host.variable_names()) names.push_back(name);
+    // The session's own names, then the host's under its heading.
+    const bool vars = command == "VARS";
+    std::vector<std::string> own, host;
+    if (vars) {
+      for (const auto& [name, v] : eval.globals()) own.push_back(name);
+      host = eval.host.variable_names();
     } else {
-      for (const auto& [name, f] : eval.functions) names.push_back(name);
-      for (const auto& [name, f] : eval.natives) names.push_back(name);
+      own = eval.function_names(false);
+      host = eval.function_names(true);
     }
-    list_names(std::move(names), folded(argument));
+    const std::string from = folded(argument);
+    list_names(own, from);
+    const std::string heading = eval.host.heading();
+    list_names(host, from, heading.empty() ? "" : heading + ":");
     return Next::stay;
   }
   if (command == "ERASE" && words.size() > 1) {
     std::string kept;
     for (std::size_t i = 1; i < words.size(); ++i) {
       const std::string name = folded(words[i]);
-      bool erased = eval.functions.erase(name) + eval.globals.erase(name) > 0;
-      if (!erased) kept += " " + name;
+      if (!eval.erase(name)) kept += " " + name;
     }
     if (!kept.empty()) eval.print("NOT ERASED:" + kept);
     return Next::stay;
   }
-  if (command == "DIGITS" || command == "ORIGIN") {
-    int& setting = command == "DIGITS" ? eval.ctx.pp : eval.ctx.io;
-    const int low = command == "DIGITS" ? 1 : 0, high = command == "DIGITS" ? 17 : 1;
-    if (words.size() == 1) {
-      eval.print("IS " + std::to_string(setting));
-      return Next::stay;
-    }
-    const bool digits =
-        !argument.empty() && argument.size() <= 2 &&
-        std::all_of(argument.begin(), argument.end(), [](char c) { return c >= '0' && c <= '9'; });
-    const int n = digits ? std::stoi(argument) : -1;
-    if (words.size() != 2 || n < low || n > high) {
-      eval.print("INCORRECT COMMAND");
-      return Next::stay;
-    }
-    eval.print("WAS " + std::to_string(setting));
-    setting = n;
+  if (command == "DIGITS") {
+    setting(words, eval.ctx.pp, 1, 17);
     return Next::stay;
   }
-  if (command == "SAVE") {
-    eval.print(eval.host.save_workspace(argument));
+  if (command == "ORIGIN") {
+    setting(words, eval.ctx.io, 0, 1);
+    return Next::stay;
+  }
+  if (command == "WIDTH") {
+    setting(words, eval.ctx.pw, 30, 254);
+    return Next::stay;
+  }
+  if (command == "SI" && words.size() == 1) {
+    print_all(eval.state_indicator());
+    return Next::stay;
+  }
+  if (command == "SIC" && words.size() == 1) {
+    eval.clear_state_indicator();
+    return Next::stay;
+  }
+  if (command == "SAVE" && words.size() <= 2) {
+    print_all(eval.host.save_workspace(argument));
     return Next::stay;
   }
   if (command == "LOAD" && words.size() == 2) {
-    eval.print(eval.host.load_workspace(argument));
+    print_all(eval.host.load_workspace(argument));
+    return Next::stay;
+  }
+  if (command == "COPY" && words.size() >= 2) {
+    std::vector<std::string> names;
+    for (std::size_t i = 2; i < words.size(); ++i) names.push_back(folded(words[i]));
+    print_all(eval.host.copy_workspace(argument, names));
     return Next::stay;
   }
   if (command == "CLEAR" && words.size() == 1) {
-    eval.globals.clear();
-    eval.functions.clear();
-    eval.ctx.io = 1;
-    eval.ctx.pp = 10;
-    eval.ctx.ct = 1e-13;
-    eval.ctx.rl = 16807;
+    eval.clear();
     eval.print("CLEAR WS");
     return Next::stay;
   }
@@ -254,26 +300,25 @@ bool AplSession::defining() const {
 void AplSession::define_native(std::string name, int valence, Native function, std::string help) {
   if (!is_name(name) || valence < 0 || valence > 2) throw Error(ErrorKind::defn);
   name = folded(name);
-  impl_->eval.functions.erase(name);
-  impl_->eval.natives[name] = NativeEntry{valence, std::move(function), std::move(help)};
+  impl_->eval.define_native(name, NativeEntry{valence, std::move(function), std::move(help)});
 }
 
 std::string AplSession::function_help(std::string_view name) const {
-  auto it = impl_->eval.natives.find(folded(name));
-  return it == impl_->eval.natives.end() ? std::string() : it->second.help;
+  const NativeEntry* n = impl_->eval.native(folded(name));
+  return n ? n->help : std::string();
 }
 
 std::vector<std::string> AplSession::function_names() const {
-  std::vector<std::string> names;
-  for (const auto& [name, f] : impl_->eval.functions) names.push_back(name);
-  for (const auto& [name, f] : impl_->eval.natives) names.push_back(name);
+  std::vector<std::string> names = impl_->eval.function_names(false);
+  for (auto& n : impl_->eval.function_names(true)) names.push_back(std::move(n));
   std::sort(names.begin(), names.end());
   return names;
 }
 
 std::vector<std::vector<std::string>> AplSession::defined_functions() const {
   std::vector<std::vector<std::string>> all;
-  for (const auto& [name, f] : impl_->eval.functions) all.push_back(f->source());
+  for (const auto& name : impl_->eval.function_names(false))
+    all.push_back(impl_->eval.function(name)->source());
   return all;
 }
 
@@ -281,11 +326,11 @@ void AplSession::define_function(const std::vector<std::string>& source) {
   DefinedFunction f = make_function(source);
   const std::string name = f.header.name;
   impl_->check_definable(name, name);
-  impl_->eval.functions[name] = std::make_shared<const DefinedFunction>(std::move(f));
+  impl_->eval.define(std::move(f));
 }
 
 std::vector<std::pair<std::string, Value>> AplSession::variables() const {
-  return {impl_->eval.globals.begin(), impl_->eval.globals.end()};
+  return impl_->eval.globals();
 }
 
 std::optional<Value> AplSession::variable(std::string_view name) const {
@@ -298,15 +343,15 @@ void AplSession::assign(std::string_view name, Value value) {
 }
 
 bool AplSession::erase(std::string_view name) {
-  const std::string n = folded(name);
-  return impl_->eval.functions.erase(n) + impl_->eval.globals.erase(n) > 0;
+  return impl_->eval.erase(folded(name));
 }
 
 void AplSession::clear() {
-  impl_->eval.globals.clear();
-  impl_->eval.functions.clear();
-  impl_->eval.ctx.io = 1;
-  impl_->eval.ctx.pp = 10;
+  impl_->eval.clear();
+}
+
+std::vector<std::string> AplSession::state_indicator() const {
+  return impl_->eval.state_indicator();
 }
 
 int AplSession::index_origin() const {
@@ -327,12 +372,17 @@ void AplSession::set_print_precision(int digits) {
   impl_->eval.ctx.pp = digits;
 }
 
-void AplSession::request(Next next) {
-  impl_->eval.requested = next;
+int AplSession::print_width() const {
+  return impl_->eval.ctx.pw;
 }
 
-void AplSession::interrupt() {
-  impl_->eval.interrupted = true;
+void AplSession::set_print_width(int width) {
+  if (width < 30 || width > 254) throw Error(ErrorKind::domain);
+  impl_->eval.ctx.pw = width;
+}
+
+void AplSession::request(Next next) {
+  impl_->eval.requested = next;
 }
 
 void AplSession::set_limits(const Limits& limits) {

@@ -3,11 +3,11 @@
 // functions; the Host around it prints, reads input, and may own names of its own (igds's
 // workspace variables) and give native functions (the manual's FIT, COONS, ...).
 //
-// A statement either completes or changes nothing: its assignments (to the session's names and
-// to the host's) are kept aside while it runs and made when it has succeeded, so that an error
-// halfway leaves every variable as it was. A failing statement prints the report, the statement
-// and a caret under the point where it failed; defined functions are not suspended (there is no
-// state indicator): the whole line is abandoned.
+// As in APL\360, an assignment is made when it is reached: a statement that fails keeps what it
+// assigned before the failure. A failure prints the report, the statement and a caret under the
+// point where it failed; a defined function that fails (or is interrupted) stays suspended on
+// the state indicator, its local names visible, until →N resumes it or → clears it
+// (docs/apl.md).
 #pragma once
 
 #include <functional>
@@ -37,17 +37,29 @@ class Host {
   virtual bool owns(std::string_view /*name*/) const { return false; }
   // The value of an owned name; nullopt when it has none (VALUE ERROR).
   virtual std::optional<Value> get(std::string_view /*name*/) { return std::nullopt; }
-  // Called when an owned name is assigned, before the statement completes: throw an Error
-  // (e.g. DOMAIN ERROR) to refuse the value; the statement then fails and changes nothing.
+  // Called when an owned name is assigned: throw an Error (e.g. DOMAIN ERROR) to refuse the
+  // value, which fails the statement there.
   virtual void check(std::string_view /*name*/, const Value& /*value*/) {}
-  // The statement has completed: the owned name takes the value.
+  // Then the owned name takes the value.
   virtual void set(std::string_view /*name*/, const Value& /*value*/) {}
   // The owned names that have a value, for )VARS.
   virtual std::vector<std::string> variable_names() const { return {}; }
+  // What )VARS and )FNS call the host's names and functions, listed after the session's own
+  // (e.g. IGDS); empty: listed without a heading.
+  virtual std::string heading() const { return {}; }
 
-  // )SAVE NAME and )LOAD NAME: the host maps them onto its files; the line to print.
-  virtual std::string save_workspace(std::string_view /*name*/) { return "INCORRECT COMMAND"; }
-  virtual std::string load_workspace(std::string_view /*name*/) { return "INCORRECT COMMAND"; }
+  // )SAVE NAME, )LOAD NAME, )COPY NAME [names]: the host maps them onto its files; the lines to
+  // print.
+  virtual std::vector<std::string> save_workspace(std::string_view /*name*/) {
+    return {"INCORRECT COMMAND"};
+  }
+  virtual std::vector<std::string> load_workspace(std::string_view /*name*/) {
+    return {"INCORRECT COMMAND"};
+  }
+  virtual std::vector<std::string> copy_workspace(std::string_view /*name*/,
+                                                  const std::vector<std::string>& /*names*/) {
+    return {"INCORRECT COMMAND"};
+  }
 };
 
 class AplSession {
@@ -96,18 +108,24 @@ class AplSession {
   void assign(std::string_view name, Value value);
   // )ERASE: false when there is no such variable or defined function of the session.
   bool erase(std::string_view name);
-  // )CLEAR: no variables, no defined functions, ⎕IO 1, ⎕PP 10 (natives stay).
+  // )CLEAR: no variables, no defined functions, an empty state indicator, the system variables
+  // of a clear workspace (natives stay).
   void clear();
+  // )SI: the functions on the state indicator, the latest first (`F[3] *` when suspended).
+  std::vector<std::string> state_indicator() const;
 
   int index_origin() const;
   void set_index_origin(int origin);  // 0 or 1; DOMAIN ERROR otherwise
   int print_precision() const;
   void set_print_precision(int digits);  // 1 to 17; DOMAIN ERROR otherwise
+  int print_width() const;
+  void set_print_width(int width);  // ⎕PW, 30 to 254; DOMAIN ERROR otherwise
 
   // A native function asks where to go once the current line is done.
   void request(Next next);
-  // Stops the running statement with INTERRUPT (safe from a signal handler).
-  void interrupt();
+  // Ctrl-C while a statement runs is a pending SIGINT (workspace/kernels/interrupt.h): the
+  // session looks for one between statements and within long primitives, reads it, and reports
+  // INTERRUPT where it stopped, suspending the function that ran.
   void set_limits(const Limits& limits);
   const Limits& limits() const;
 

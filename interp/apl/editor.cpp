@@ -73,7 +73,75 @@ std::string Editor::number_text(Number n) {
 }
 
 std::string Editor::prompt() const {
+  if (mode_ != Mode::lines) return std::string(column_, ' ');
   return fmt::format("[{}] ", number_text(current_));
+}
+
+const std::string* Editor::text_of(Number n) const {
+  if (n == 0) return &header_;
+  for (const auto& [m, text] : lines_)
+    if (m == n) return &text;
+  return nullptr;
+}
+
+Editor::Step Editor::start_editing(Number n, std::size_t position) {
+  const std::string* text = text_of(n);
+  if (!text) throw Error(ErrorKind::defn);
+  Step step;
+  const std::string prefix = fmt::format("[{}] ", number_text(n));
+  step.output.push_back(prefix + *text);
+  edited_ = n;
+  shown_ = decode_utf8(prefix + *text);
+  prefix_ = decode_utf8(prefix).size();
+  column_ = position > 0 ? position - 1 : 0;
+  mode_ = Mode::marks;
+  return step;
+}
+
+Editor::Step Editor::marks(std::u32string_view typed) {
+  // Each mark applies to the character shown above it; marks under the line number do nothing.
+  std::u32string revised;
+  std::size_t first_insert = std::u32string::npos;
+  for (std::size_t c = prefix_; c < std::max(shown_.size(), column_ + typed.size()); ++c) {
+    const char32_t mark = c >= column_ && c - column_ < typed.size() ? typed[c - column_] : U' ';
+    const char32_t above = c < shown_.size() ? shown_[c] : U' ';
+    std::size_t blanks = 0;
+    if (mark >= U'1' && mark <= U'9') blanks = mark - U'0';
+    if (mark >= U'A' && mark <= U'Z') blanks = 5 * (mark - U'A' + 1);
+    if (mark >= U'a' && mark <= U'z') blanks = 5 * (mark - U'a' + 1);
+    if (blanks > 0 && first_insert == std::u32string::npos) first_insert = revised.size();
+    revised.append(blanks, U' ');
+    if (mark != U'/' && c < shown_.size()) revised.push_back(above);
+  }
+  while (!revised.empty() && revised.back() == U' ' &&
+         (first_insert == std::u32string::npos || revised.size() > first_insert))
+    revised.pop_back();
+  Step step;
+  shown_ = shown_.substr(0, prefix_) + revised;
+  step.output.push_back(encode_utf8(shown_));
+  column_ = prefix_ + (first_insert == std::u32string::npos ? revised.size() : first_insert);
+  mode_ = Mode::overlay;
+  return step;
+}
+
+Editor::Step Editor::overlay(std::u32string_view typed) {
+  std::u32string line = shown_;
+  for (std::size_t i = 0; i < typed.size(); ++i) {
+    const std::size_t c = column_ + i;
+    if (c >= line.size()) line.resize(c + 1, U' ');
+    if (typed[i] != U' ') line[c] = typed[i];
+  }
+  std::u32string_view text = trim(std::u32string_view(line).substr(prefix_));
+  mode_ = Mode::lines;
+  column_ = 0;
+  Step step;
+  try {
+    set_line(edited_, encode_utf8(text));
+    current_ = edited_ == 0 ? unit : edited_ + step_;
+  } catch (const Error& e) {
+    step.output.push_back(e.what());
+  }
+  return step;
 }
 
 std::vector<std::string> Editor::source() const {
@@ -109,7 +177,21 @@ void Editor::set_line(Number n, std::string text) {
 Editor::Step Editor::line(std::string_view typed) {
   Step step;
   std::u32string text = decode_utf8(typed);
+  if (mode_ == Mode::marks) return marks(text);
+  if (mode_ == Mode::overlay) {
+    std::u32string_view laid = text;
+    const std::size_t del = closing_del(laid);
+    if (del != std::u32string_view::npos) laid = laid.substr(0, laid.find_last_of(U'∇'));
+    step = overlay(laid);
+    step.close = del != std::u32string_view::npos && step.output.empty();
+    return step;
+  }
   std::u32string_view rest = trim(text);
+  if (!rest.empty() && rest.front() == U'∇') {
+    step.close = true;
+    step.reopen = rest.size() > 1;
+    return step;
+  }
   const std::size_t del = closing_del(rest);
   if (del != std::u32string_view::npos) {
     step.close = true;
@@ -130,6 +212,15 @@ Editor::Step Editor::line(std::string_view typed) {
         if (!n) throw Error(ErrorKind::defn);
         auto l = list(n->first, INT64_MAX);
         step.output.insert(step.output.end(), l.begin(), l.end());
+      } else if (const std::size_t q = inside.find(U'⎕');
+                 q != std::u32string_view::npos && q > 0 && q + 1 < inside.size()) {
+        auto n = parse_number(inside.substr(0, q));
+        auto m = parse_number(inside.substr(q + 1));
+        if (!n || !m || m->first % unit != 0 || !rest.empty() || step.close)
+          throw Error(ErrorKind::defn);
+        Step edit = start_editing(n->first, static_cast<std::size_t>(m->first / unit));
+        step.output.insert(step.output.end(), edit.output.begin(), edit.output.end());
+        return step;
       } else if (!inside.empty() && inside.back() == U'⎕') {
         auto n = parse_number(inside.substr(0, inside.size() - 1));
         if (!n) throw Error(ErrorKind::defn);

@@ -247,12 +247,63 @@ Value format_by_specification(Context& ctx, const Value& a, const Value& b) {
   return r;
 }
 
+namespace {
+
+// Lines longer than ⎕PW continued on lines indented six blanks (APL\360): numbers are never cut,
+// a numeric display breaking only at a column of blanks common to all its lines, so that its
+// columns stay aligned; characters break at the width.
+std::vector<std::string> folded(const std::vector<std::string>& lines, std::size_t width,
+                                bool numeric) {
+  std::vector<std::u32string> rows;
+  std::size_t longest = 0;
+  for (const auto& l : lines) {
+    rows.push_back(decode_utf8(l));
+    longest = std::max(longest, rows.back().size());
+  }
+  if (longest <= width) return lines;
+  std::vector<bool> blank(longest, true);
+  if (numeric)
+    for (const auto& r : rows)
+      for (std::size_t c = 0; c < r.size(); ++c) blank[c] = blank[c] && r[c] == U' ';
+  // The pieces [start, end) of every line, the same for all.
+  constexpr std::size_t indent = 6;
+  std::vector<std::pair<std::size_t, std::size_t>> pieces;
+  for (std::size_t start = 0; start < longest;) {
+    const std::size_t room = pieces.empty() ? width : width - indent;
+    std::size_t end = std::min(longest, start + room);
+    std::size_t next = end;
+    if (numeric && end < longest) {
+      std::size_t b = end;
+      while (b > start && !blank[b]) --b;
+      if (b > start) {
+        end = b;
+        next = b + 1;
+      }
+    }
+    pieces.emplace_back(start, end);
+    start = next;
+  }
+  std::vector<std::string> out;
+  for (const auto& r : rows) {
+    for (std::size_t p = 0; p < pieces.size(); ++p) {
+      const auto [from, to] = pieces[p];
+      std::u32string piece = from < r.size() ? r.substr(from, to - from) : std::u32string();
+      if (numeric) piece.erase(piece.find_last_not_of(U' ') + 1);
+      if (p > 0 && piece.empty()) continue;
+      out.push_back(encode_utf8((p > 0 ? std::u32string(indent, U' ') : std::u32string()) + piece));
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::string> display(Context& ctx, const Value& v) {
   if (v.rank() >= 2 && v.empty()) return {};
   std::vector<std::string> lines = lines_of(format(ctx, v));
   if (v.is_numeric())
     for (auto& line : lines) line.erase(line.find_last_not_of(' ') + 1);
-  return lines;
+  return folded(lines, static_cast<std::size_t>(std::max(ctx.pw, 30)), v.is_numeric());
 }
 
 }  // namespace igds::apl

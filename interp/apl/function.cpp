@@ -78,6 +78,12 @@ Header parse_header(std::string_view text) {
   return h;
 }
 
+int DefinedFunction::slot_of(std::string_view name) const {
+  for (std::size_t i = 0; i < slots.size(); ++i)
+    if (slots[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
 std::vector<std::string> DefinedFunction::source() const {
   std::vector<std::string> s{header_text};
   s.insert(s.end(), lines.begin(), lines.end());
@@ -113,6 +119,13 @@ DefinedFunction make_function(const std::vector<std::string>& source) {
     f.tokens.push_back(std::move(tokens));
     f.line_errors.push_back(std::move(error));
   }
+  for (const auto* n : {&f.header.result, &f.header.left, &f.header.right})
+    if (!n->empty()) f.slots.push_back(*n);
+  for (const auto& local : f.header.locals)
+    if (!local.starts_with("⎕")) f.slots.push_back(local);
+  f.first_label = f.slots.size();
+  for (const auto& [label, line] : f.labels) f.slots.push_back(label);
+  f.compiled.resize(f.lines.size());
   return f;
 }
 

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -13,6 +15,8 @@
 #include "interp/apl/lexer.h"
 
 namespace igds::apl {
+
+struct Code;
 
 struct Header {
   std::string name, result, left, right;  // empty where there is none
@@ -31,6 +35,21 @@ struct DefinedFunction {
   std::vector<std::vector<Token>> tokens;         // each line's tokens
   std::vector<std::optional<Error>> line_errors;  // a line that cannot be read: its error
   std::map<std::string, std::size_t> labels;      // label → line number
+
+  // The names a call gives a value of its own, in the order of its slots: the result, the
+  // arguments, the local names (not the system variables), then the labels.
+  std::vector<std::string> slots;
+  std::size_t first_label = 0;  // the first label's slot
+  // The slot of a name, or -1.
+  int slot_of(std::string_view name) const;
+  // The session's symbols of the slots' names (set by the session that defines the function).
+  std::vector<std::uint32_t> slot_symbols;
+  // The lines compiled, each the first time it runs, for the definitions of generation
+  // `compiled_for` (a cache: the function itself never changes).
+  mutable std::vector<std::shared_ptr<const Code>> compiled;
+  mutable std::uint64_t compiled_for = 0;
+  // Lines compiled for earlier definitions: a frame may still run one (by its address).
+  mutable std::vector<std::shared_ptr<const Code>> retired;
 
   // The source: the header, then the lines (as ∇ would show them, without numbers).
   std::vector<std::string> source() const;

@@ -5,57 +5,40 @@
 
 #include <fmt/format.h>
 
+#include "interp/apl/glyphs.h"
 #include "interp/apl/text.h"
 
 namespace igds::apl {
 
 namespace {
 
-// Dyalog's prefix layout (the one RIDE and ngn/apl use), restricted to igds's glyphs.
-constexpr std::array<PrefixKey, 46> keys{{
-    {'2', "¯"}, {'3', "<"}, {'4', "≤"}, {'5', "="}, {'6', "≥"}, {'7', ">"},  {'8', "≠"}, {'9', "∨"},
-    {'0', "∧"}, {'-', "×"}, {'=', "÷"}, {'q', "?"}, {'e', "∊"}, {'r', "⍴"},  {'t', "~"}, {'y', "↑"},
-    {'u', "↓"}, {'i', "⍳"}, {'o', "○"}, {'p', "*"}, {'[', "←"}, {']', "→"},  {'s', "⌈"}, {'d', "⌊"},
-    {'g', "∇"}, {'h', "∆"}, {'j', "∘"}, {'l', "⎕"}, {';', "⍎"}, {'\'', "⍕"}, {'b', "⊥"}, {'n', "⊤"},
-    {'m', "|"}, {',', "⍝"}, {'.', "⍀"}, {'/', "⌿"}, {'#', "⍒"}, {'$', "⍋"},  {'%', "⌽"}, {'^', "⍉"},
-    {'&', "⊖"}, {'*', "⍟"}, {'(', "⍱"}, {')', "⍲"}, {'_', "!"}, {'+', "⌹"},
-}};
-
-struct GlyphName {
-  char32_t glyph;
-  std::string_view name;
+// The keys of the glyph table (interp/apl/glyphs.h), with their glyphs in UTF-8, made once.
+struct Keys {
+  std::vector<std::string> utf8;
+  std::vector<PrefixKey> keys;
+  Keys() {
+    for (const Glyph& g : glyph_table())
+      if (g.key != 0) utf8.push_back(encode_utf8(std::u32string(1, g.glyph)));
+    std::size_t i = 0;
+    for (const Glyph& g : glyph_table())
+      if (g.key != 0) keys.push_back({g.key, utf8[i++]});
+  }
 };
 
-// The glyphs' names as the APL\360 manuals call their shapes.
-constexpr std::array<GlyphName, 42> names{{
-    {U'¯', "OVERBAR"},    {U'×', "TIMES"},      {U'÷', "DIVIDE"},        {U'⌈', "UPSTILE"},
-    {U'⌊', "DOWNSTILE"},  {U'⍟', "CIRCLESTAR"}, {U'○', "CIRCLE"},        {U'≤', "NOTGREATER"},
-    {U'≥', "NOTLESS"},    {U'≠', "NOTEQUAL"},   {U'∧', "AND"},           {U'∨', "OR"},
-    {U'⍲', "NAND"},       {U'⍱', "NOR"},        {U'⍴', "RHO"},           {U'⍳', "IOTA"},
-    {U'↑', "UPARROW"},    {U'↓', "DOWNARROW"},  {U'⌽', "CIRCLESTILE"},   {U'⊖', "CIRCLEBAR"},
-    {U'⍉', "TRANSPOSE"},  {U'∊', "EPSILON"},    {U'⍋', "GRADEUP"},       {U'⍒', "GRADEDOWN"},
-    {U'⊥', "BASE"},       {U'⊤', "REPRESENT"},  {U'⌹', "DOMINO"},        {U'⍎', "EXECUTE"},
-    {U'⍕', "FORMAT"},     {U'⌿', "SLASHBAR"},   {U'⍀', "BACKSLASHBAR"},  {U'←', "LEFTARROW"},
-    {U'→', "RIGHTARROW"}, {U'∘', "JOT"},        {U'⎕', "QUAD"},          {U'⍞', "QUOTEQUAD"},
-    {U'∇', "DEL"},        {U'∆', "DELTA"},      {U'⍙', "DELTAUNDERBAR"}, {U'⍝', "LAMP"},
-    {U'∣', "STILE"},      {U'⋆', "STAR"},
-}};
+const Keys& all_keys() {
+  static const Keys keys;
+  return keys;
+}
 
 }  // namespace
 
 std::span<const PrefixKey> prefix_keys() {
-  return keys;
+  return all_keys().keys;
 }
 
 std::string_view prefix_glyph(char key) {
-  for (const auto& k : keys)
+  for (const auto& k : all_keys().keys)
     if (k.key == key) return k.glyph;
-  return {};
-}
-
-std::string_view glyph_name(char32_t glyph) {
-  for (const auto& n : names)
-    if (n.glyph == glyph) return n.name;
   return {};
 }
 
@@ -65,7 +48,7 @@ std::vector<std::string> keyboard_help() {
   constexpr std::size_t width = 20, per_line = 4;
   std::string line;
   std::size_t shown = 0, column = 0;
-  for (const auto& k : keys) {
+  for (const auto& k : all_keys().keys) {
     const std::u32string g = decode_utf8(k.glyph);
     const std::string_view name = glyph_name(g.empty() ? U' ' : g[0]);
     std::string entry = fmt::format("{}{} {}", prefix_key, k.key, k.glyph);

@@ -4,14 +4,13 @@
 #include <string_view>
 
 #include "interp/apl/error.h"
+#include "interp/apl/glyphs.h"
 #include "interp/apl/text.h"
 #include "workspace/numbers/typed.h"
 
 namespace igds::apl {
 
 namespace {
-
-constexpr std::u32string_view primitive_glyphs = U"+-×÷⌈⌊*⍟|!○?<≤=≥>≠∧∨⍲⍱~⍴,⍳↑↓⌽⊖⍉∊⍋⍒⊥⊤⌹⍎⍕/\\⌿⍀";
 
 bool is_digit(char32_t c) {
   return c >= U'0' && c <= U'9';
@@ -59,32 +58,14 @@ Token simple(TokenKind kind, std::size_t column, char32_t glyph = 0) {
 
 }  // namespace
 
-char32_t canonical_glyph(char32_t c) {
-  switch (c) {
-    case U'−':
-      return U'-';
-    case U'⋆':
-      return U'*';
-    case U'∣':
-      return U'|';
-    case U'∼':
-      return U'~';
-    case U'∈':
-      return U'∊';
-    case U'^':
-      return U'∧';
-    default:
-      return c;
-  }
-}
-
 bool is_primitive_glyph(char32_t c) {
-  return primitive_glyphs.find(canonical_glyph(c)) != std::u32string_view::npos;
+  return has_role(
+      c, Role::scalar_monadic | Role::scalar_dyadic | Role::mixed_monadic | Role::mixed_dyadic);
 }
 
 bool is_name_start(char32_t c) {
-  return (c >= U'A' && c <= U'Z') || (c >= U'a' && c <= U'z') || c == U'∆' || c == U'⍙' ||
-         c == U'_';
+  return (c >= U'A' && c <= U'Z') || (c >= U'a' && c <= U'z') || c == U'_' ||
+         (c >= 0x80 && has_role(c, Role::name_character));
 }
 
 bool is_name_char(char32_t c) {

@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "interp/apl/glyphs.h"
 #include "interp/apl/value.h"
 
 namespace igds::apl {
@@ -41,9 +42,9 @@ struct Token {
   Value literal;
 };
 
-// The primitive function symbols, with their alternative spellings mapped to them (− ⋆ ∣ ∼ ∈ ^).
+// The primitive function symbols of the glyph table (interp/apl/glyphs.h), in any of their
+// spellings (− ⋆ ∣ ∼ ∈ ^ are - * | ~ ∊ ∧).
 bool is_primitive_glyph(char32_t c);
-char32_t canonical_glyph(char32_t c);
 // Characters of names: letters, ∆ ⍙ _ and, after the first, digits.
 bool is_name_start(char32_t c);
 bool is_name_char(char32_t c);

@@ -74,15 +74,17 @@ struct Along {
 };
 
 // C = A B for A m×n and B n×p (row-major), four rows of C at a time over blocks of B that stay
-// in the cache; the innermost loop runs along rows of B and C (contiguous, vectorised).
-void matrix_product(const double* a, const double* b, double* c, std::size_t m, std::size_t n,
-                    std::size_t p) {
+// in the cache; the innermost loop runs along rows of B and C (contiguous, vectorised). Each
+// block's multiplications are charged as it starts, so that a long product can be interrupted.
+void matrix_product(Context& ctx, const double* a, const double* b, double* c, std::size_t m,
+                    std::size_t n, std::size_t p) {
   constexpr std::size_t jb = 256, kb = 128;
   std::fill(c, c + m * p, 0.0);
   for (std::size_t jj = 0; jj < p; jj += jb) {
     const std::size_t jn = std::min(jb, p - jj);
     for (std::size_t kk = 0; kk < n; kk += kb) {
       const std::size_t kn = std::min(kb, n - kk);
+      ctx.charge(m * jn * kn);
       std::size_t i = 0;
       for (; i + 4 <= m; i += 4) {
         double* __restrict c0 = c + i * p + jj;
@@ -233,16 +235,16 @@ Value inner_product(Context& ctx, char32_t f, char32_t g, const Value& a, const 
   const std::size_t p = b.rank() > 0 ? product(b.shape(), 1, b.rank()) : 1;
   if (n == 0) return identity_fill(ctx, f, std::move(shape));
   Value r = ctx.new_numbers(std::move(shape));
-  ctx.charge(m * n * p);
   double* out = r.mutable_numbers().data();
   if (f == U'+' && g == U'×' && a.is_numeric() && b.is_numeric() && la == lb) {
-    matrix_product(a.numbers().data(), b.numbers().data(), out, m, n, p);
+    matrix_product(ctx, a.numbers().data(), b.numbers().data(), out, m, n, p);
     for (std::size_t i = 0; i < m * p; ++i) check_finite(out[i]);
     return r;
   }
   const DyadicLoops& fl = dyadic_loops(f);
   std::vector<double> tmp(p);
   for (std::size_t i = 0; i < m; ++i) {
+    ctx.charge(n * p);
     double* acc = out + i * p;
     for (std::size_t k = n; k-- > 0;) {
       const std::size_t ia = i * la + (la == 1 ? 0 : k), ib = (lb == 1 ? 0 : k) * p;

@@ -2,22 +2,30 @@
 
 #include <string_view>
 
+#include "interp/apl/code.h"
 #include "interp/apl/error.h"
+#include "interp/apl/glyphs.h"
 
 namespace igds::apl {
 
-bool is_scalar_dyadic(char32_t g) {
-  return std::u32string_view(U"+-×÷⌈⌊*⍟|!○<≤=≥>≠∧∨⍲⍱").find(g) != std::u32string_view::npos;
-}
-
-bool is_scalar_monadic(char32_t g) {
-  return std::u32string_view(U"+-×÷⌈⌊*⍟|!○?~").find(g) != std::u32string_view::npos;
-}
-
 namespace {
 
+bool is_scalar_dyadic(char32_t g) {
+  return has_role(g, Role::scalar_dyadic);
+}
+
 bool is_operator_glyph(char32_t g) {
-  return g == U'/' || g == U'\\' || g == U'⌿' || g == U'⍀';
+  return has_role(g, Role::slash_operator);
+}
+
+bool is_variable_class(NameClass c) {
+  return c == NameClass::variable || c == NameClass::undefined;
+}
+
+// ⎕EX ⎕NC ⎕FX ⎕CR: the system names that are functions.
+bool is_system_function_token(const Token& t) {
+  SystemName s;
+  return t.kind == TokenKind::system_name && system_name(t.text, s) && is_system_function(s);
 }
 
 class Parser {
@@ -65,6 +73,21 @@ class Parser {
     fail(at_end() ? (tokens_.empty() ? 0 : tokens_.back().end) : peek().column);
   }
 
+  // An operand (from token `first`) followed by something that is not a function: SYNTAX ERROR,
+  // or VALUE ERROR at a name without a value beside it (the right one first, as APL reads).
+  [[noreturn]] void juxtaposed(std::size_t first) const {
+    auto undefined = [&](std::size_t at) {
+      return at < tokens_.size() && tokens_[at].kind == TokenKind::name &&
+             name_class(tokens_[at]) == NameClass::undefined;
+    };
+    if (undefined(pos_) || (pos_ == first + 1 && undefined(first))) {
+      Error e(ErrorKind::value);
+      e.set_column(tokens_[undefined(pos_) ? pos_ : first].column);
+      throw e;
+    }
+    fail(peek().column);
+  }
+
   bool at_end() const { return pos_ >= tokens_.size(); }
   const Token& peek(std::size_t ahead = 0) const { return tokens_[pos_ + ahead]; }
   bool peek_is(std::size_t ahead, TokenKind kind) const {
@@ -83,6 +106,7 @@ class Parser {
     const Token& t = peek();
     if (t.kind == TokenKind::function) return true;
     if (t.kind == TokenKind::jot) return peek_is(1, TokenKind::dot);
+    if (is_system_function_token(t)) return true;
     if (t.kind == TokenKind::name) {
       auto c = name_class(t);
       return c == NameClass::monadic || c == NameClass::dyadic;
@@ -104,14 +128,15 @@ class Parser {
     const bool assignable = t.kind == TokenKind::name || t.kind == TokenKind::system_name ||
                             t.kind == TokenKind::quad || t.kind == TokenKind::quote_quad;
     if (assignable && peek_is(1, TokenKind::assign)) {
-      if (t.kind == TokenKind::name && name_class(t) != NameClass::variable) fail(t.column);
+      if (t.kind == TokenKind::name && !is_variable_class(name_class(t))) fail(t.column);
+      if (is_system_function_token(t)) fail(t.column);
       auto n = make(Node::Kind::assign, t.column);
       n->name = t.kind == TokenKind::quad ? "⎕" : t.kind == TokenKind::quote_quad ? "⍞" : t.text;
       pos_ += 2;
       n->right = expression();
       return n;
     }
-    if (t.kind == TokenKind::name && name_class(t) == NameClass::variable &&
+    if (t.kind == TokenKind::name && is_variable_class(name_class(t)) &&
         peek_is(1, TokenKind::left_bracket)) {
       std::size_t close = matching_bracket(pos_ + 1);
       if (close + 1 < tokens_.size() && tokens_[close + 1].kind == TokenKind::assign) {
@@ -132,9 +157,10 @@ class Parser {
       n->right = expression();
       return n;
     }
+    const std::size_t first = pos_;
     auto left = operand();
     if (at_expression_end()) return left;
-    if (!starts_function()) fail(peek().column);
+    if (!starts_function()) juxtaposed(first);
     auto f = function(false);
     if (at_expression_end()) fail(f->column);
     auto n = make(Node::Kind::dyadic, f->column);
@@ -169,6 +195,13 @@ class Parser {
       f->glyph = peek().glyph;
       ++pos_;
       if (monadic) fail(f->column);
+      return f;
+    }
+    if (t.kind == TokenKind::system_name) {
+      f->kind = FunctionNode::Kind::system;
+      f->name = t.text;
+      ++pos_;
+      if (!monadic) fail(t.column);
       return f;
     }
     if (t.kind == TokenKind::name) {
@@ -222,7 +255,7 @@ class Parser {
       case TokenKind::name:
         if (name_class(t) == NameClass::niladic) {
           n = make(Node::Kind::niladic, t.column);
-        } else if (name_class(t) == NameClass::variable) {
+        } else if (is_variable_class(name_class(t))) {
           n = make(Node::Kind::variable, t.column);
         } else {
           fail(t.column);

@@ -14,7 +14,9 @@
 
 namespace igds::apl {
 
-enum class NameClass { variable, niladic, monadic, dyadic };
+// What a name is when the statement runs: a variable (with a value or not yet: `undefined`), or
+// a function of no, one or two arguments.
+enum class NameClass { variable, undefined, niladic, monadic, dyadic };
 using Classifier = std::function<NameClass(const std::string& name)>;
 
 struct Node;
@@ -28,6 +30,7 @@ struct FunctionNode {
     scan,       // `glyph`\ or `glyph`⍀ (`op` is \ or ⍀)
     outer,      // ∘.`glyph`
     inner,      // `glyph`.`op`
+    system,     // ⎕EX ⎕NC ⎕FX ⎕CR: `name`
   };
   Kind kind = Kind::primitive;
   char32_t glyph = 0;
@@ -67,13 +70,11 @@ struct Statement {
   NodePtr expr;         // null for an empty statement (a comment line)
 };
 
-// The statement of the tokens. SYNTAX ERROR with the column of the offending token; DEPTH ERROR
-// when parentheses and functions nest deeper than max_depth.
+// The statement of the tokens. SYNTAX ERROR with the column of the offending token (VALUE ERROR
+// when it stands beside a name that has no value, as `FOO 3` with FOO undefined: APL\360 reads
+// the name before it finds the statement malformed); DEPTH ERROR when parentheses and functions
+// nest deeper than max_depth.
 Statement parse(const std::vector<Token>& tokens, const Classifier& classify, bool allow_label,
                 int max_depth);
-
-// Scalar functions, by the glyph (the operands of reduction, scan and the products).
-bool is_scalar_dyadic(char32_t glyph);
-bool is_scalar_monadic(char32_t glyph);
 
 }  // namespace igds::apl

@@ -4,9 +4,13 @@
 
 #include <doctest/doctest.h>
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <stdexcept>
 
 #include "apl_support.h"
+#include "workspace/kernels/interrupt.h"
 
 namespace igds::apl::test {
 
@@ -36,24 +40,25 @@ TEST_CASE("assignment shows nothing; a value in parentheses or through ⎕← is
   CHECK(a("X") == Lines{"3"});
 }
 
-TEST_CASE("a statement that fails changes nothing") {
+TEST_CASE("a statement that fails keeps what it assigned before the failure (APL\\360)") {
   Apl a;
   a("X←5");
   a("V←1 2 3");
   CHECK(a("(X←7)+'A'")[0] == "DOMAIN ERROR");  // X←7 ran before + failed
-  CHECK(a("X") == Lines{"5"});
+  CHECK(a("X") == Lines{"7"});
   CHECK(a("(V[1]←0)+'A'")[0] == "DOMAIN ERROR");
-  CHECK(a("V") == Lines{"1 2 3"});
+  CHECK(a("V") == Lines{"0 2 3"});
   CHECK(a("Z←(W←1)÷0")[0] == "DOMAIN ERROR");
-  CHECK(a("W")[0] == "VALUE ERROR");
+  CHECK(a("W") == Lines{"1"});
+  CHECK(a("Z")[0] == "VALUE ERROR");
   CHECK(a("(⎕IO←0)+'A'")[0] == "DOMAIN ERROR");
-  CHECK(a("⎕IO") == Lines{"1"});
+  CHECK(a("⎕IO") == Lines{"0"});
   // Within the statement, an assignment is seen by what follows it (right to left).
   CHECK(a("X+X←10") == Lines{"20"});
   CHECK(a("X") == Lines{"10"});
 }
 
-TEST_CASE("the host's names: read through get, assigned only when the statement succeeds") {
+TEST_CASE("the host's names: read through get, checked and set when assigned") {
   Apl a;
   a.host.owned["INPPN"] = Value::of_numbers({2, 3}, std::vector<double>{1, 2, 3, 4, 5, 6});
   a.host.owned["IMAGE"] = std::nullopt;
@@ -62,18 +67,17 @@ TEST_CASE("the host's names: read through get, assigned only when the statement 
   CHECK(a("IMAGE")[0] == "VALUE ERROR");
   CHECK(a("(INPPN[1;1]←100)+'A'")[0] == "DOMAIN ERROR");
   CHECK(a.host.checked == std::vector<std::string>{"INPPN"});
-  CHECK(a.host.set_names.empty());
-  CHECK(a("INPPN[1;]") == Lines{"1 2 3"});
-  CHECK(a("INPPN[1;1]←100") == Lines{});
   CHECK(a.host.set_names == std::vector<std::string>{"INPPN"});
   CHECK(a.host.owned["INPPN"]->numbers()[0] == 100);
   CHECK(a("INPPN[1;]") == Lines{"100 2 3"});
   a.host.refused = "INPPN";
   CHECK(a("INPPN←0")[0] == "DOMAIN ERROR");
+  CHECK(a("INPPN[1;1]←0")[0] == "DOMAIN ERROR");
   CHECK(a.host.owned["INPPN"]->numbers()[0] == 100);
+  CHECK(a.host.set_names == std::vector<std::string>{"INPPN"});
   CHECK(a(")VARS") == Lines{"INPPN"});
   a("X←1");
-  CHECK(a(")VARS") == Lines{"INPPN X"});
+  CHECK(a(")VARS") == Lines{"X", "INPPN"});
   CHECK(a(")ERASE INPPN X") == Lines{"NOT ERASED: INPPN"});
   CHECK(a(")VARS") == Lines{"INPPN"});
 }
@@ -104,7 +108,7 @@ TEST_CASE("native functions: niladic, monadic, dyadic; their reports") {
   CHECK(a("FAIL 1") == Lines{"INCORRECT ENTRY: NO SURFACE", "      FAIL 1", "      ^"});
   CHECK(a("TWICE") == Lines{"SYNTAX ERROR", "      TWICE", "      ^"});
   CHECK(a("TWICE←3")[0] == "SYNTAX ERROR");
-  CHECK(a(")FNS") == Lines{"FAIL JOIN NOTHING START TWICE"});
+  CHECK(a(")FNS") == Lines{"FAIL JOIN NOTHING START TWICE"});  // all the host's: no heading
   CHECK(a.session.function_help("twice") == "TWICE X: X doubled.");
   CHECK(a.session.function_names() ==
         std::vector<std::string>{"FAIL", "JOIN", "NOTHING", "START", "TWICE"});
@@ -164,7 +168,7 @@ TEST_CASE("system commands") {
   a("Z←X∇");
   CHECK(a(")VARS") == Lines{"A B"});
   CHECK(a(")VARS B") == Lines{"B"});
-  CHECK(a(")FNS") == Lines{"F START"});
+  CHECK(a(")FNS") == Lines{"F", "START"});  // the session's own, then the host's
   CHECK(a(")ERASE A F Q") == Lines{"NOT ERASED: Q"});
   CHECK(a(")VARS") == Lines{"B"});
   CHECK(a(")FNS") == Lines{"START"});
@@ -205,6 +209,8 @@ TEST_CASE("the default limits stop endless recursion and deep nesting before the
   Apl a;
   a.run({"∇Z←R N", "Z←1+R N+1∇"});
   CHECK(a("R 1")[0] == "DEPTH ERROR");
+  CHECK(a(")SI").size() == 999);  // every call of R waits on the state indicator (one line)
+  CHECK(a("→") == Lines{});
   a.run({"∇Z←FACT N", "Z←1", "→(N≤1)/0", "Z←N×FACT N-1∇"});
   CHECK(a("FACT 150") == Lines{"5.713383956E262"});
   std::string deep(3000, '(');
@@ -228,15 +234,129 @@ TEST_CASE("limits: WS FULL, INTERRUPT after the work budget or by the host, DEPT
   a("∇LOOP");
   a("L:→L∇");
   CHECK(a("LOOP") == Lines{"INTERRUPT", "LOOP[1] L:→L", "        ^"});
+  CHECK(a(")SIC") == Lines{});
   a("∇Z←R N");
   a("Z←R N+1∇");
   CHECK(a("R 1")[0] == "DEPTH ERROR");
-  a.session.define_native("STOP", 0, [&](const Value*, const Value*) -> std::optional<Value> {
-    a.session.interrupt();
-    return Value::number(1);
+  CHECK(a("1+1") == Lines{"2"});        // a line typed runs whatever the state indicator holds
+  CHECK(a("R 1")[0] == "DEPTH ERROR");  // but no function can be called
+  CHECK(a(")SIC") == Lines{});
+  CHECK(a("1+1") == Lines{"2"});
+}
+
+TEST_CASE("Ctrl-C: INTERRUPT where the work stopped, the function suspended, the Ctrl-C read") {
+  igds::block_interrupts();
+  Apl a;
+  a.run({"∇LOOP", "L:→L∇"});
+  REQUIRE(::kill(::getpid(), SIGINT) == 0);
+  CHECK(a("LOOP") == Lines{"INTERRUPT", "LOOP[1] L:→L", "        ^"});
+  CHECK_FALSE(igds::interrupt_pending());
+  CHECK(a(")SI") == Lines{"LOOP[1] *"});
+  CHECK(a("1+1") == Lines{"2"});
+  CHECK(a(")SIC") == Lines{});
+  // Inside a long primitive: a product of two 600 x 600 matrices stops between its blocks. SIG
+  // sends the Ctrl-C after the statement looked for one.
+  a.session.define_native("SIG", 1, [](const Value*, const Value* b) -> std::optional<Value> {
+    ::kill(::getpid(), SIGINT);
+    return *b;
   });
-  CHECK(a("STOP+⍳3")[0] == "INTERRUPT");
-  CHECK(a("1+1") == Lines{"2"});  // the next line runs again
+  a("A←600 600⍴⍳7");
+  CHECK(a("⍴A+.×A") == Lines{"600 600"});
+  CHECK(a("⍴A+.×SIG A") == Lines{"INTERRUPT", "      ⍴A+.×SIG A", "        ^"});
+  CHECK_FALSE(igds::interrupt_pending());
+  CHECK(a("1+1") == Lines{"2"});
+}
+
+}  // namespace igds::apl::test
+
+namespace igds::apl::test {
+
+TEST_CASE("⎕PW and )WIDTH: longer lines go on, indented six, numbers never cut") {
+  Apl a;
+  const Lines wide = a("⍳40");
+  REQUIRE(wide.size() == 2);
+  CHECK(wide[0].size() == 80);
+  CHECK(wide[1] == "      31 32 33 34 35 36 37 38 39 40");
+  CHECK(a(")WIDTH 30") == Lines{"WAS 80"});
+  CHECK(a("⎕PW") == Lines{"30"});
+  CHECK(a("⍳20") == Lines{"1 2 3 4 5 6 7 8 9 10 11 12 13", "      14 15 16 17 18 19 20"});
+  // A matrix breaks at the same column in every row, so its columns stay aligned.
+  CHECK(a("2 12⍴⍳24") == Lines{" 1  2  3  4  5  6  7  8  9 10", "      11 12",
+                               "13 14 15 16 17 18 19 20 21 22", "      23 24"});
+  // Characters break at the width.
+  CHECK(a("40⍴'ABCDEFGHIJ'") == Lines{"ABCDEFGHIJABCDEFGHIJABCDEFGHIJ", "      ABCDEFGHIJ"});
+  CHECK(a("⎕PW←29")[0] == "DOMAIN ERROR");
+  CHECK(a(")WIDTH 255") == Lines{"INCORRECT COMMAND"});
+  CHECK(a(")WIDTH") == Lines{"IS 30"});
+  a("⎕PW←254");
+  CHECK(a("⍳40").size() == 1);
+  a.session.set_print_width(40);
+  CHECK(a.session.print_width() == 40);
+  CHECK(a(")CLEAR") == Lines{"CLEAR WS"});
+  CHECK(a("⎕PW") == Lines{"80"});
+}
+
+TEST_CASE("an undefined name beside a value is VALUE ERROR, as APL\\360 reads it") {
+  CHECK(apl("FOO 3") == Lines{"VALUE ERROR", "      FOO 3", "      ^"});
+  CHECK(apl("3 FOO") == Lines{"VALUE ERROR", "      3 FOO", "        ^"});
+  CHECK(apl("2 3") == Lines{"2 3"});
+  Apl a;
+  a("X←1");
+  CHECK(a("X 2")[0] == "SYNTAX ERROR");
+  CHECK(a("X FOO")[0] == "VALUE ERROR");
+  a.run({"∇F", "FOO 3∇"});
+  CHECK(a("F") == Lines{"VALUE ERROR", "F[1] FOO 3", "     ^"});
+}
+
+TEST_CASE("the system functions and variables an APL\\360 user reaches for") {
+  Apl a;
+  a("X←1");
+  a.run({"∇Z←F Y", "Z←Y+1∇"});
+  CHECK(a("⎕NC 'X'") == Lines{"2"});
+  CHECK(a("⎕NC 'F'") == Lines{"3"});
+  CHECK(a("⎕NC 'NOTHING'") == Lines{"0"});
+  CHECK(a("⎕NC '2X'") == Lines{"4"});
+  CHECK(a("⎕NC 3 7⍴'X      F      START  '") == Lines{"2 3 3"});
+  CHECK(a("⎕CR 'F'") == Lines{"Z←F Y", "Z←Y+1"});
+  CHECK(a("⍴⎕CR 'F'") == Lines{"2 5"});
+  CHECK(a("⍴⎕CR 'X'") == Lines{"0 0"});
+  CHECK(a("⎕FX 2 5⍴'Z←G YZ←Y×2'") == Lines{"G"});
+  CHECK(a("G 4") == Lines{"8"});
+  CHECK(a("⎕FX 2 5⍴'Z←X YZ←Y×2'") == Lines{"1"});  // X is a variable
+  CHECK(a("⎕FX ⎕CR 'F'") == Lines{"F"});
+  CHECK(a("⎕EX 'X'") == Lines{"1"});
+  CHECK(a("X")[0] == "VALUE ERROR");
+  CHECK(a("⎕EX 'G'") == Lines{"1"});
+  CHECK(a("⎕NC 'G'") == Lines{"0"});
+  CHECK(a("⎕EX 'START'") == Lines{"0"});  // the host's function stays
+  // A local is classified and expunged where the statement runs (right to left).
+  a.run({"∇Z←L;V", "V←1", "Z←(⎕NC 'M'),(⎕EX 'V'),⎕NC 'V'", "M:Z←Z,⎕NC 'V'∇"});
+  CHECK(a("L") == Lines{"1 1 2 0"});
+  CHECK(a("⍴⎕TS") == Lines{"7"});
+  CHECK(a("(1↑⎕TS)>2000") == Lines{"1"});
+  CHECK(a("⍴⎕AI") == Lines{"4"});
+  CHECK(a("⎕AV[⎕AV⍳'A⍴¯']") == Lines{"A⍴¯"});
+  CHECK(a("(⍴⎕AV)≥⌈/⎕AV⍳'⍝⍞∇∆⍙⌹'") == Lines{"1"});
+  CHECK(a("⎕TS←1")[0] == "SYNTAX ERROR");
+  CHECK(a("⎕EX←1")[0] == "SYNTAX ERROR");
+  CHECK(a("1 ⎕EX 'X'")[0] == "SYNTAX ERROR");
+}
+
+TEST_CASE("⎕ input that calls a failing function: the function is suspended under the ⎕") {
+  Apl a;
+  a.run({"∇Z←INV N", "Z←÷N∇"});
+  a.host.input = {"INV 0"};
+  CHECK(a("X←1+⎕") == Lines{"⎕:", "DOMAIN ERROR", "INV[1] Z←÷N", "         ^"});
+  CHECK(a(")SI") == Lines{"INV[1] *"});
+  a("N←4");
+  CHECK(a("→1") == Lines{});
+  CHECK(a("X") == Lines{"1.25"});
+}
+
+TEST_CASE("a label is a constant") {
+  Apl a;
+  a.run({"∇F", "L:L←2∇"});
+  CHECK(a("F") == Lines{"SYNTAX ERROR", "F[1] L:L←2", "       ^"});
 }
 
 }  // namespace igds::apl::test

@@ -48,13 +48,13 @@ struct TestHost : Host {
       if (v) names.push_back(name);
     return names;
   }
-  std::string save_workspace(std::string_view name) override {
+  std::vector<std::string> save_workspace(std::string_view name) override {
     saved = name;
-    return "SAVED " + std::string(name);
+    return {"SAVED " + std::string(name)};
   }
-  std::string load_workspace(std::string_view name) override {
+  std::vector<std::string> load_workspace(std::string_view name) override {
     loaded = name;
-    return "LOADED " + std::string(name);
+    return {"LOADED " + std::string(name)};
   }
 };
 

@@ -57,16 +57,76 @@ TEST_CASE("labels and branches: loops, leaving with →0 or a line that is not t
   CHECK(a("L") == Lines{"5"});
 }
 
-TEST_CASE("an error in a function: the function's line with a caret, and nothing changed") {
+TEST_CASE("an error in a function: its line with a caret; what it assigned before stays") {
   Apl a;
   a("X←1");
   a.run({"∇BAD", "X←2", "1÷0∇"});
   CHECK(a("BAD") == Lines{"DOMAIN ERROR", "BAD[2] 1÷0", "        ^"});
-  CHECK(a("X") == Lines{"1"});
+  CHECK(a("X") == Lines{"2"});
+  CHECK(a(")SIC") == Lines{});
   a.run({"∇Z←CALLER", "Z←BAD∇"});
   CHECK(a("CALLER") == Lines{"DOMAIN ERROR", "BAD[2] 1÷0", "        ^"});
+  CHECK(a(")SI") == Lines{"BAD[2] *", "CALLER[1]"});
+  CHECK(a("→") == Lines{});
+  CHECK(a(")SI") == Lines{});
   a.run({"∇Q", "→∇"});
   CHECK(a("Q") == Lines{});  // → alone abandons all
+}
+
+TEST_CASE("the state indicator: a suspended function, its locals, →N to resume, → to clear") {
+  Apl a;
+  a.run({"∇Z←DIV N;K", "K←10", "Z←K÷N", "Z←Z+1∇"});
+  a.run({"∇R←TWICE N", "R←2×DIV N∇"});
+  CHECK(a("TWICE 0") == Lines{"DOMAIN ERROR", "DIV[2] Z←K÷N", "          ^"});
+  CHECK(a(")SI") == Lines{"DIV[2] *", "TWICE[1]"});
+  CHECK(a("⎕LC") == Lines{"2 1"});
+  // The suspended function's locals are the names at the prompt.
+  CHECK(a("K,N") == Lines{"10 0"});
+  CHECK(a("K") == Lines{"10"});
+  a("N←5");
+  // →2 runs line 2 again, now with N←5: DIV ends, TWICE goes on from where it was.
+  CHECK(a("→2") == Lines{"6"});
+  CHECK(a(")SI") == Lines{});
+  CHECK(a("K")[0] == "VALUE ERROR");
+  // →⎕LC resumes at the line that failed; an error in a line typed at a suspension suspends too.
+  CHECK(a("DIV 0")[0] == "DOMAIN ERROR");
+  CHECK(a("DIV 0")[0] == "DOMAIN ERROR");
+  CHECK(a(")SI") == Lines{"DIV[2] *", "DIV[2] *"});
+  CHECK(a("→") == Lines{});
+  CHECK(a(")SI") == Lines{"DIV[2] *"});
+  a("N←1");
+  CHECK(a("→⎕LC") == Lines{"11"});
+  CHECK(a(")SI") == Lines{});
+  // →N with nothing suspended does nothing; an empty branch neither.
+  CHECK(a("→3") == Lines{});
+  CHECK(a("→⍳0") == Lines{});
+}
+
+TEST_CASE("a suspended function can be edited and resumed; a pendent one cannot be changed") {
+  Apl a;
+  a.run({"∇Z←DIV N", "Z←10÷N∇"});
+  a.run({"∇R←TWICE N", "R←2×DIV N∇"});
+  CHECK(a("TWICE 0")[0] == "DOMAIN ERROR");
+  CHECK(a("∇DIV[1] Z←10÷N+1∇") == Lines{});
+  CHECK(a("∇TWICE[1] R←3×DIV N∇") == Lines{"DEFN ERROR"});  // TWICE waits for DIV
+  CHECK(!a.session.defining());
+  CHECK(a("→1") == Lines{"20"});
+  CHECK(a("∇TWICE[1] R←3×DIV N∇") == Lines{});
+  CHECK(a("TWICE 1") == Lines{"15"});
+}
+
+TEST_CASE("the header of a suspended function cannot change; its locals stay visible") {
+  Apl a;
+  a.run({"∇F;X", "X←1", "÷0∇"});
+  CHECK(a("F")[0] == "DOMAIN ERROR");
+  CHECK(a("∇F[0] F;X;Y∇") == Lines{"DEFN ERROR"});
+  CHECK(a.session.defining());  // open, to be mended
+  CHECK(a("[0] F;X∇") == Lines{});
+  CHECK(a("X") == Lines{"1"});
+  CHECK(a("X←7") == Lines{});
+  CHECK(a("X") == Lines{"7"});
+  CHECK(a(")SIC") == Lines{});
+  CHECK(a("X").at(0) == "VALUE ERROR");
 }
 
 TEST_CASE("local system variables are given back when the function ends") {
@@ -115,7 +175,7 @@ TEST_CASE("the editor: the header at line 0, and DEFN ERROR") {
   Apl a;
   a.run({"∇Z←A F B", "Z←A+B∇"});
   a.run({"∇F", "[0] Z←A G B", "∇"});
-  CHECK(a(")FNS") == Lines{"F G START"});
+  CHECK(a(")FNS") == Lines{"F G", "START"});
   CHECK(a("1 G 2") == Lines{"3"});
   a("X←1");
   CHECK(a("∇X") == Lines{"DEFN ERROR"});
@@ -159,7 +219,94 @@ TEST_CASE("a loop over a host's array, element by element") {
          "Z←Z+INTPN[I;3]", "→L∇"});
   CHECK(a("TOTAL") == Lines{"14"});
   CHECK(a("INTPN[;3]") == Lines{"2 3 4 5"});
-  CHECK(a.host.set_names == std::vector<std::string>{"INTPN"});
+  CHECK(a.host.set_names == std::vector<std::string>(4, "INTPN"));
+}
+
+}  // namespace igds::apl::test
+
+namespace igds::apl::test {
+
+TEST_CASE("a statement of a function that is not an assignment shows its value") {
+  Apl a;
+  a.run({"∇G", "5", "X←6", "(Y←7)", "⍎'X'", "⍎'Z←8'∇"});
+  CHECK(a("G") == Lines{"5", "7", "6"});
+}
+
+TEST_CASE("[n⎕m]: the line shown, marks under it delete and insert, the next line laid over it") {
+  Apl a;
+  a.run({"∇Z←F X", "Z←X+1"});
+  // Position 8 of "[1] Z←X+1" is the +: / deletes it, 1 under the 1 inserts one blank before it.
+  CHECK(a("[1⎕8]") == Lines{"[1] Z←X+1"});
+  CHECK(a.session.prompt() == std::string(7, ' '));
+  CHECK(a("/1") == Lines{"[1] Z←X 1"});
+  CHECK(a.session.prompt() == std::string(7, ' '));  // at the inserted blank
+  CHECK(a("×") == Lines{});
+  CHECK(a.session.prompt() == "[2] ");
+  CHECK(a("[⎕]∇") == Lines{"    ∇Z←F X", "[1]  Z←X×1", "    ∇"});
+  CHECK(a("F 3") == Lines{"3"});
+  // Letters insert five blanks each; a mark under the line number does nothing.
+  a("∇F");
+  CHECK(a("[1⎕1]") == Lines{"[1] Z←X×1"});
+  CHECK(a("////    A") == Lines{"[1] Z←X×     1"});
+  CHECK(a.session.prompt() == std::string(8, ' '));
+  CHECK(a("(2+2)") == Lines{});
+  CHECK(a("[1⎕]") == Lines{"[1]  Z←X×(2+2)1"});
+  CHECK(a("[1⎕0]") == Lines{"[1] Z←X×(2+2)1"});
+  CHECK(a("             /") == Lines{"[1] Z←X×(2+2)"});  // no insertion: typed on at the end
+  CHECK(a.session.prompt() == std::string(13, ' '));
+  CHECK(a("+1∇") == Lines{});  // a closing ∇ ends the definition
+  CHECK(!a.session.defining());
+  CHECK(a("F 3") == Lines{"15"});
+  // A line that does not exist cannot be edited.
+  a("∇F");
+  CHECK(a("[7⎕1]") == Lines{"DEFN ERROR"});
+  CHECK(a("∇") == Lines{});
+}
+
+TEST_CASE("∇ at the start of a line closes the definition; `∇G` then opens G") {
+  Apl a;
+  a.run({"∇Z←F X", "Z←2×X"});
+  CHECK(a("∇G") == Lines{});
+  CHECK(a.session.prompt() == "[1] ");
+  CHECK(a("F 4") == Lines{});  // a line of G
+  CHECK(a("∇") == Lines{});
+  CHECK(!a.session.defining());
+  CHECK(a("F 4") == Lines{"8"});
+  CHECK(a("G") == Lines{"8"});
+  CHECK(a("∇H") == Lines{});
+  CHECK(a("[1] 1+") == Lines{});
+  CHECK(a("  ∇") == Lines{});
+  CHECK(a("H") == Lines{"SYNTAX ERROR", "H[1] 1+", "      ^"});
+}
+
+}  // namespace igds::apl::test
+
+namespace igds::apl::test {
+
+TEST_CASE("the loops' shortcuts give APL's results whatever the arguments") {
+  Apl a;
+  // Z←Z+I on numbers, then on vectors; →(I<N)/L on numbers, then on a vector test.
+  a.run({"∇Z←SUM N;I", "Z←I←0", "L:Z←Z+I", "I←I+1", "→(I<N)/L∇"});
+  CHECK(a("SUM 5") == Lines{"10"});
+  CHECK(a("SUM 1") == Lines{"0"});
+  a.run({"∇Z←VSUM N;I", "Z←0 0", "I←0", "L:Z←Z+I,2×I", "I←I+1", "→(1↑I<N)/L∇"});
+  CHECK(a("VSUM 4") == Lines{"6 12"});
+  a.run({"∇Z←TWICE;I", "Z←0", "I←0", "L:Z←Z+1", "I←I+1", "→(2×I<2)/L∇"});
+  CHECK(a("TWICE") == Lines{"2"});  // two copies of L: still a branch to L
+  a.run({"∇Z←ODD;V", "Z←0", "V←1 0 1", "→(0≠+/V)/(2+3)", "Z←99", "Z←Z+1∇"});
+  CHECK(a("ODD") == Lines{"1"});
+  a.run({"∇Z←NONE", "Z←1", "→(0×Z)/3", "Z←2∇"});
+  CHECK(a("NONE") == Lines{"2"});
+  a.run({"∇Z←BAD N", "L:Z←Z+N∇"});
+  CHECK(a("BAD 1") == Lines{"VALUE ERROR", "BAD[1] L:Z←Z+N", "           ^"});
+  a("→");
+  a.run({"∇Z←ORDER;X", "X←1", "Z←(X←3)+X∇"});
+  CHECK(a("ORDER") == Lines{"4"});  // X on the right is read first
+  a.run({"∇Z←LEN;A", "A←1 2", "Z←A+1 2 3∇"});
+  CHECK(a("LEN") == Lines{"LENGTH ERROR", "LEN[2] Z←A+1 2 3", "          ^"});
+  a("→");
+  a.run({"∇Z←CH;I", "I←'A'", "→(I='A')/3", "Z←1", "Z←2∇"});
+  CHECK(a("CH") == Lines{"2"});
 }
 
 }  // namespace igds::apl::test

@@ -1,6 +1,7 @@
-// END APL's speed on workspace-sized arrays (issue 17): INTPN of a 2000 × 2000 surface (12 M
-// doubles) held by the host, statements run through AplSession::execute, against NumPy doing the
-// same on this machine (ratio = NumPy's time / igds's time; 1 or more is the goal).
+// END APL's speed: on workspace-sized arrays, INTPN of a 2000 × 2000 surface (12 M doubles) held
+// by the host, statements run through AplSession::execute, against NumPy doing the same on this
+// machine; and a loop of scalar statements in a defined function against the same loop in
+// CPython (ratio = the other's time / igds's time; 1 or more is the goal).
 #include <fmt/format.h>
 
 #include <cmath>
@@ -67,6 +68,35 @@ std::vector<double> numpy_times() {
   return {};
 }
 
+// CPython's best time for one pass of the loop SUM runs (Z←Z+I, I←I+1, →(I<N)/L), in seconds,
+// or a negative number when there is no python3.
+double cpython_loop_seconds(int n) {
+  const std::string script = fmt::format(
+      "import time\n"
+      "def f(n):\n"
+      "    z = 0; i = 0\n"
+      "    while True:\n"
+      "        z = z + i\n"
+      "        i = i + 1\n"
+      "        if not (i < n): break\n"
+      "    return z\n"
+      "t = 1e300\n"
+      "for _ in range(5):\n"
+      "    t0 = time.perf_counter(); f({}); t = min(t, time.perf_counter() - t0)\n"
+      "print(t / {})\n",
+      n, n);
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    std::string command = fmt::format("{} -c '{}' 2>/dev/null", python, script);
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) continue;
+    double t = -1;
+    int read = std::fscanf(pipe, "%lf", &t);
+    int status = pclose(pipe);
+    if (read == 1 && status == 0) return t;
+  }
+  return -1;
+}
+
 }  // namespace
 
 IGDS_BENCH("apl") {
@@ -101,6 +131,19 @@ IGDS_BENCH("apl") {
   fmt::print("apl_intpn_plane_1_s {:.6f}\n", plane);
   fmt::print("apl_inner_product_500_s {:.6f}\n", product);
   fmt::print("apl_small_statement_us {:.3f}\n", small * 1e6);
+  // A loop of three scalar statements an iteration, as an APL\360 user writes one.
+  for (const char* line : {"∇Z←SUM N;I", "Z←I←0", "L:Z←Z+I", "I←I+1", "→(I<N)/L", "∇"})
+    session.execute(line);
+  constexpr int passes = 1000000;
+  const double loop = best_seconds(5, [&] { run("S←SUM 1000000"); }) / passes;
+  fmt::print("apl_loop_iteration_ns {:.1f}\n", loop * 1e9);
+  const double cpython = cpython_loop_seconds(passes);
+  if (cpython > 0) {
+    fmt::print("apl_cpython_loop_iteration_ns {:.1f}\n", cpython * 1e9);
+    fmt::print("apl_cpython_ratio_loop {:.2f}\n", cpython / loop);
+  } else {
+    fmt::print("apl_cpython_ratio_loop unavailable (no python3)\n");
+  }
   const std::vector<double> numpy = numpy_times();
   if (numpy.empty()) {
     fmt::print("apl_numpy_ratios unavailable (no python3 with NumPy)\n");
@@ -128,8 +171,7 @@ IGDS_BENCH("apl_workspace") {
   AplEnvironment::Hooks hooks;
   hooks.say = hooks.report = [&](std::string_view) { ++printed; };
   hooks.read = [](std::string_view) { return std::nullopt; };
-  hooks.command = [](const std::vector<std::string>&) {};
-  hooks.save = hooks.load = [](std::string_view) { return std::string(); };
+  hooks.command = [](const std::vector<std::string>&) { return true; };
   AplEnvironment apl(ws, hooks);
   auto run = [&](const char* line) { apl.execute(line); };
   const double first = best_seconds(1, [&] { run("X←INTPN×2"); });  // INTPN made an APL value

@@ -204,9 +204,11 @@ TEST_CASE("every word of the language is spelled in one source file: its declara
   // HPGL is also the type of the files PLOT writes (PLOTnnnn.HPGL).
   declared["HPGL"].insert("commands/plot.cpp");
   // CONIC is also the name of the manual's APL function (section 7.1) that END APL gives.
-  declared["CONIC"].insert("interp/apl_env.cpp");
+  declared["CONIC"].insert("interp/apl_functions.cpp");
   // FIT too (section 7.2): the APL function is the grid's interpolation, the command Marks's fit.
-  declared["FIT"].insert("interp/apl_env.cpp");
+  declared["FIT"].insert("interp/apl_functions.cpp");
+  // And RESTORE (section 7): the APL function reads the session, the command an IGDSDATA file.
+  declared["RESTORE"].insert("interp/apl_functions.cpp");
   std::set<std::string> words;
   for (const auto& [word, files] : declared) words.insert(word);
   // Every string literal of the sources (raw strings, the help texts, are prose and left out).
@@ -244,7 +246,7 @@ TEST_CASE("every word of the language is spelled in one source file: its declara
   }
   // And each is declared, not only spelled: a command's words in its command's file.
   CHECK(spelled["GRID"] == std::set<std::string>{"commands/change.cpp"});
-  CHECK(spelled["CONIC"] == std::set<std::string>{"commands/view.cpp", "interp/apl_env.cpp"});
+  CHECK(spelled["CONIC"] == std::set<std::string>{"commands/view.cpp", "interp/apl_functions.cpp"});
   CHECK(spelled["XZ"] == std::set<std::string>{"commands/view.cpp"});
 }
 

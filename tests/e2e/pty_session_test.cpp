@@ -112,3 +112,59 @@ TEST_CASE("Ctrl-D in the middle of a command abandons it and ends the session") 
 }
 
 }  // namespace igds::test
+
+namespace igds::test {
+
+TEST_CASE("Ctrl-C while END APL computes: INTERRUPT, the function suspended, the workspace kept") {
+  TempDir disk, home;
+  PtySession igds({igds_binary().string(), "--term", "none", "--disk", disk.path().string()},
+                  terminal_env(home));
+  REQUIRE(igds.expect("READY"));
+  igds.send("END APL\r");
+  REQUIRE(igds.expect("      "));
+  // Each function says when it has begun: Ctrl-C is sent then, never while the line is still
+  // being read (where it would only abandon the line).
+  igds.send("\xE2\x88\x87LOOP\r");  // ∇LOOP
+  REQUIRE(igds.expect("[1] "));
+  igds.send("'LOOPING'\r");
+  REQUIRE(igds.expect("[2] "));
+  igds.send("L:\xE2\x86\x92L\xE2\x88\x87\r");  // L:→L∇
+  REQUIRE(igds.expect("\n      "));
+  igds.send(
+      "X\xE2\x86\x90"
+      "42\r");  // X←42
+  REQUIRE(igds.expect("\n      "));
+  igds.send("LOOP\r");
+  REQUIRE(igds.expect("LOOPING"));
+  igds.send("\x03");
+  REQUIRE(igds.expect("INTERRUPT"));
+  REQUIRE(igds.expect("LOOP[2] L:"));
+  igds.send(")SI\r");
+  CHECK(igds.expect("LOOP[2] *"));
+  // A long product, stopped between its blocks.
+  igds.send("\xE2\x88\x87P;A\r");  // ∇P;A
+  REQUIRE(igds.expect("[1] "));
+  igds.send(
+      "A\xE2\x86\x90"
+      "2500 2500\xE2\x8D\xB4\xE2\x8D\xB3"
+      "7\r");  // A←2500 2500⍴⍳7
+  REQUIRE(igds.expect("[2] "));
+  igds.send("'MULTIPLYING'\r");
+  REQUIRE(igds.expect("[3] "));
+  igds.send(
+      "A\xE2\x86\x90"
+      "A+.\xC3\x97"
+      "A\xE2\x88\x87\r");  // A←A+.×A∇
+  REQUIRE(igds.expect("\n      "));
+  igds.send("P\r");
+  REQUIRE(igds.expect("MULTIPLYING"));
+  igds.send("\x03");
+  REQUIRE(igds.expect("INTERRUPT"));
+  REQUIRE(igds.expect("P[3] A"));
+  igds.send("X\r");
+  CHECK(igds.expect("\n42\r\n"));
+  igds.send(")OFF\r");
+  CHECK(igds.wait() == 0);
+}
+
+}  // namespace igds::test

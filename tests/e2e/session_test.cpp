@@ -108,19 +108,22 @@ END APL
       STATUS
 0 0 0 0 0 0 0 0 0 0
       )VARS
-DESIM DEST2 IMAGE INPPN INPTG INTCU INTPN INTST NOCUR NOSTR PATCHES STATUS TEMP2
+IGDS: DESIM DEST2 IMAGE INPPN INPTG INTCU INTPN INTST NOCUR NOSTR PATCHES STATUS
+      TEMP2
       )OFF
 )");
 }
 
 TEST_CASE("END APL: START goes back to READY, errors in APL style") {
   TempDir disk;
-  auto r = run_commands(disk, "E A\nIMAGE\nINPPN\n2+2\nH S\nSTART\nH S\nEND CMS\n");
+  auto r = run_commands(disk, "E A\nIMAGE\nINPPN\n2+2\n)H S\nH←2\n* 1\nSTART\nH S\nEND CMS\n");
   CHECK(r.status == 0);
   CHECK(
       r.out.find("      IMAGE\nVALUE ERROR\n      IMAGE\n      ^\n      INPPN\n\n      2+2\n4\n") !=
       std::string::npos);
-  CHECK(r.out.find("      H S\nType an APL statement") != std::string::npos);
+  CHECK(r.out.find("      )H S\nType an APL statement") != std::string::npos);
+  // HELP and a CMS comment are IGDS's: in APL, H is a name and * a function.
+  CHECK(r.out.find("      H←2\n      * 1\n2.718281828\n") != std::string::npos);
   CHECK(r.out.find("      START\nREADY\nH S\nType a command:") != std::string::npos);
 }
 

@@ -5,7 +5,17 @@
 
 #include <doctest/doctest.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+#include "commands/command.h"
+#include "interp/apl/format.h"
 #include "tests/workspace/disk_fixtures.h"
+#include "workspace/disk/disk.h"
+#include "workspace/kernels/spline.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds::test {
@@ -17,18 +27,44 @@ namespace {
 // An environment on `ws` that keeps what it says, reports and runs.
 struct Apl {
   Workspace ws;
-  Lines said, reported;
+  Lines said, reported, input;
   std::vector<Lines> commands;
+  int session_saves = 0, shown = 0;
+  std::optional<Workspace> saved_session;
+  std::vector<Picture> drawn, plotted;
+  std::function<void(const Lines&)> run;  // what a command does, when it matters
+  const Disk* disk = nullptr;
   AplEnvironment env;
-  explicit Apl(Workspace w) : ws(std::move(w)), env(ws, hooks()) {}
+  explicit Apl(Workspace w, const Disk* d = nullptr)
+      : ws(std::move(w)), disk(d), env(ws, hooks()) {}
   AplEnvironment::Hooks hooks() {
     AplEnvironment::Hooks h;
     h.say = [this](std::string_view l) { said.emplace_back(l); };
     h.report = [this](std::string_view l) { reported.emplace_back(l); };
-    h.read = [](std::string_view) { return std::nullopt; };
-    h.command = [this](const Lines& words) { commands.push_back(words); };
-    h.save = [](std::string_view name) { return "SAVE " + std::string(name); };
-    h.load = [](std::string_view name) { return "RESTORE " + std::string(name); };
+    h.document = [this](std::string_view t) { said.emplace_back(t); };
+    h.read = [this](std::string_view) -> std::optional<std::string> {
+      if (input.empty()) return std::nullopt;
+      std::string line = input.front();
+      input.erase(input.begin());
+      return line;
+    };
+    h.command = [this](const Lines& words) {
+      commands.push_back(words);
+      if (run) run(words);
+      return true;
+    };
+    h.save_session = [this] {
+      ++session_saves;
+      return std::string();
+    };
+    h.load_session = [this]() -> std::optional<Workspace> { return saved_session; };
+    h.show = [this](const ImageRef&) { ++shown; };
+    h.draw = [this](const Picture& p, std::string_view line) {
+      drawn.push_back(p);
+      said.emplace_back(line);
+    };
+    h.plot = [this](const Picture& p) { plotted.push_back(p); };
+    h.disk = disk;
     return h;
   }
   // The lines printed for one typed line (reports included, in order after what was said).
@@ -67,15 +103,28 @@ TEST_CASE("the workspace variables are APL variables") {
   CHECK(apl("X←5") == Lines{});
   CHECK(apl("X×NOCUR") == Lines{"15"});
   CHECK(apl("IMAGE").at(0) == "VALUE ERROR");
-  CHECK(apl(")VARS") == Lines{"INPPN INPTG INTCU INTPN INTST NOCUR NOSTR PATCHES STATUS X"});
+  CHECK(apl(")VARS") ==
+        Lines{"X", "IGDS: INPPN INPTG INTCU INTPN INTST NOCUR NOSTR PATCHES STATUS"});
+  // The workspace's own functions, under their heading: every function of the manual's
+  // section 7 (IGDS4013 and the functions common to both workspaces).
   std::string fns;
   for (const auto& line : apl(")FNS")) fns += line + " ";
-  CHECK(fns ==
-        "ASSON COMBUI COMCHA COMDIS COMEND COMPLO COMRES COMSAV COMSTO COMWRI CONIC COONS DESCR "
-        "FIT INIT ISOM LUT ORTHOG SCALE START ");
+  for (const char* name :
+       {"ALFINP",  "ASSON",  "AUTOMSAVE",  "CHGRID",  "CHPOINT", "CHTANG", "COEFFICIENTI", "COMBUI",
+        "COMCHA",  "COMDIS", "COMEND",     "COMPLO",  "COMRES",  "COMSAV", "COMSTO",       "COMWRI",
+        "CONIC",   "COONS",  "CURVILINEO", "DEFVAR",  "DESCR",   "DISPLA", "DISTA",        "EXPL",
+        "EXPLONG", "F0",     "F1",         "FIT",     "G0",      "G1",     "GETCOM",       "INIT",
+        "ISOM",    "LUT",    "NOTO",       "NUMINP",  "ORTHOG",  "OUT",    "PARBU",        "PARCH",
+        "PARDI",   "PAREN",  "PARPL",      "PARRE",   "PARSA",   "PARST",  "PARWR",        "PLOTG",
+        "PLOTHP",  "PLOTP",  "PLOTV",      "PROSPAR", "RESTORE", "SCALE",  "START",        "STATE",
+        "TEKC",    "TEKG",   "TEKP",       "TEKV",    "TKX",     "WRT"}) {
+    CAPTURE(name);
+    CHECK(fns.find(std::string(" ") + name + " ") != std::string::npos);
+  }
+  CHECK(fns.starts_with("IGDS: ALFINP "));
 }
 
-TEST_CASE("an assignment of the wrong kind is refused at once and changes nothing") {
+TEST_CASE("an assignment of the wrong kind is refused at once; what came before it stays") {
   Apl apl(surface(3, 2, 1, 1));
   const Workspace before = apl.ws;
   CHECK(apl("NOCUR←'A'").at(0) == "DOMAIN ERROR");
@@ -84,10 +133,10 @@ TEST_CASE("an assignment of the wrong kind is refused at once and changes nothin
   CHECK(apl("INPPN←5").at(0) == "RANK ERROR");
   CHECK(apl("STATUS←1 2 3").at(0) == "LENGTH ERROR");
   CHECK(apl("DESIM←1 3 3 30 0").at(0) == "VALUE ERROR");  // no image to describe
-  // The first assignment of a failing statement is not made either.
-  CHECK(apl("INTCU←4 ◊ NOCUR←'A'").empty() == false);
-  CHECK(apl("Y←(INTCU←4)+'A'").at(0) == "DOMAIN ERROR");
   CHECK(apl.ws == before);
+  // An assignment made before the failure is made (APL\360).
+  CHECK(apl("Y←(INTCU←4)+'A'").at(0) == "DOMAIN ERROR");
+  CHECK(apl.ws.intcu == 4);
   CHECK(!apl.env.start());
 }
 
@@ -112,10 +161,15 @@ TEST_CASE("START refuses a workspace that does not agree with itself, with the r
   CHECK(apl.env.start() == "INPPN IS 6 BY 3, NOT 8 BY 3");
   CHECK(apl("NOCUR←3").empty());
   CHECK(!apl.env.start());
-  // INTPN given other values: kept as given, and the session must keep them too.
-  CHECK(apl("INTPN←INTPN×2").empty());
+  // INTPN given other values: kept as given, and the session must keep them too; but its
+  // nodes are the input points.
+  CHECK(apl("INTPN[2;2;3]←5").empty());
   CHECK(!apl.env.start());
   CHECK(!apl.ws.changes.derived);
+  CHECK(apl("INTPN[3;3;]=INPPN[4;]") == Lines{"1 1 1"});  // a node: curve 2, place 2
+  CHECK(apl("INTPN[3;3;3]←INTPN[3;3;3]+1").empty());
+  CHECK(apl.env.start() == "INTPN DOES NOT PASS THROUGH INPPN AT POINT 4");
+  CHECK(apl("INTPN[3;3;3]←INTPN[3;3;3]-1").empty());
   CHECK(apl("INTPN←2 2 3⍴0").empty());
   CHECK(apl.env.start().value_or("").find("INTPN") != std::string::npos);
   // Emptied, PATCHES is made again from the inputs, and INTPN with it (the bad INTPN goes).
@@ -146,8 +200,9 @@ TEST_CASE("the manual's functions call igds's code") {
   CHECK(apl("COONS").empty());
   CHECK(apl("⍴PATCHES") == Lines{"2 1 3 4 4"});
   CHECK(apl("INIT").at(0).starts_with("INIT: "));
-  CHECK(apl(")SAVE HULL") == Lines{"SAVE HULL"});
-  CHECK(apl(")LOAD HULL") == Lines{"RESTORE HULL"});
+  CHECK(apl(")SAVE HULL") == Lines{"SAVED HULL"});
+  CHECK(apl(")LOAD HULL") == Lines{"LOADED HULL"});
+  CHECK(apl.commands.back() == Lines{"RESTORE", "HULL"});
 }
 
 TEST_CASE("an image assigned is checked at START") {
@@ -174,6 +229,229 @@ TEST_CASE("workspace_variable and defined_variables") {
   CHECK_FALSE(workspace_variable(ws, "FOO"));
   CHECK(defined_variables(ws) ==
         Lines{"INPPN", "INPTG", "INTCU", "INTPN", "INTST", "NOCUR", "NOSTR", "PATCHES", "STATUS"});
+}
+
+}  // namespace igds::test
+
+namespace igds::test {
+
+TEST_CASE("START after COONS: INTPN made again from the new PATCHES, never left stale") {
+  Apl apl(surface(3, 3, 1, 1));
+  CHECK(apl("INPPN[5;3]←7").empty());
+  CHECK(apl("COONS").empty());
+  REQUIRE(!apl.env.start());
+  const Surface expected = interpolate({3, 3, 1, 1, &apl.ws.inppn, &apl.ws.inptg});
+  CHECK(apl.ws.patches == expected.patches);
+  CHECK(apl.ws.intpn == expected.intpn);
+  CHECK(apl("INTPN[3;3;3]") == Lines{"7"});
+  // PATCHES of its own: INTPN is made from them, and they must hold the input points.
+  CHECK(apl("PATCHES[1;1;3;2;3]←PATCHES[1;1;3;2;3]×2").empty());  // a tangent, not a corner
+  REQUIRE(!apl.env.start());
+  CHECK(!apl.ws.changes.derived);
+  CHECK(apl("∧/,INTPN=FIT") == Lines{"1"});
+  CHECK(apl("PATCHES[1;1;1;1;1]←99").empty());
+  CHECK(apl.env.start() == "PATCHES DOES NOT PASS THROUGH INPPN AT POINT 1");
+}
+
+TEST_CASE("no infinity or NaN enters the workspace") {
+  Apl apl(surface(3, 2, 1, 1));
+  const Workspace before = apl.ws;
+  auto big = apl::Value::of_numbers({6, 3}, std::vector<double>(18, 1.0));
+  big.mutable_numbers()[4] = std::numeric_limits<double>::infinity();
+  CHECK_THROWS_AS(apl.env.check("INPPN", big), apl::Error);
+  big.mutable_numbers()[4] = std::nan("");
+  CHECK_THROWS_AS(apl.env.check("INPPN", big), apl::Error);
+  CHECK(apl("INPPN[1;1]←1E308×10").at(0) == "DOMAIN ERROR");
+  CHECK(apl.ws == before);
+}
+
+TEST_CASE("the blending functions, DISTA and the spline of one line are igds's kernels") {
+  Apl apl(surface(3, 2, 1, 1));
+  const double s = 0.3;
+  const Hermite h = hermite(s);
+  CHECK(apl("F0 0 0.3 1") == Lines{fmt::format("1 {} 0", apl::format_number(h.f0, 10))});
+  CHECK(apl("(F1 0.3),(G0 0.3),G1 0.3") ==
+        Lines{fmt::format("{} {} {}", apl::format_number(h.f1, 10), apl::format_number(h.g0, 10),
+                          apl::format_number(h.g1, 10))});
+  CHECK(apl("DISTA 3 3⍴0 0 0 3 4 0 3 4 12") == Lines{"5 12"});
+  CHECK(apl("PUNTI←4 3⍴0 0 0 1 2 0 3 3 1 4 3 3").empty());
+  CHECK(apl("TANGENTI←2 3⍴1 0 0 0 0 1").empty());
+  CHECK(apl("⍴CURVILINEO") == Lines{"4 7"});
+  // The system of COEFFICIENTI and NOTO solved by APL gives CURVILINEO's tangents.
+  CHECK(apl("T←CURVILINEO[;5 6 7]").empty());
+  CHECK(apl("S←(3,⍴T[;1])⍴0").empty());
+  CHECK(apl("S[1;]←(NOTO 1)⌹COEFFICIENTI").empty());
+  CHECK(apl("S[2;]←(NOTO 2)⌹COEFFICIENTI").empty());
+  CHECK(apl("S[3;]←(NOTO 3)⌹COEFFICIENTI").empty());
+  CHECK(apl("∧/,1E¯9>|T-⍉S") == Lines{"1"});
+  CHECK(apl("CURVILINEO[1;1]=DISTA PUNTI[1 2;]") == Lines{"1"});
+  CHECK(apl("NOTO 4").at(0) == "DOMAIN ERROR");
+  CHECK(apl("TANGENTI←1 3⍴0").empty());
+  CHECK(apl("CURVILINEO").at(0) == "LENGTH ERROR");
+}
+
+TEST_CASE("ASSON is PROSPAR of the points scaled, as the manual says") {
+  Apl apl(surface(3, 2, 1, 1));
+  // kx ky kz of the angles 110 130 120 (math.md), then PROSPAR with (γ-90) (β-90).
+  CHECK(apl("R←○(110 130 120)÷180").empty());
+  CHECK(apl("K←(-2○R[2 3 1])÷(1○R[1 2 3])×1○R[3 1 2]").empty());
+  CHECK(apl("P←1 4 3⍴0 0 0 1 2 3 ¯4 5 6 7 ¯8 9").empty());
+  CHECK(apl("Q←(P×1 4 3⍴K*0.5) PROSPAR 30 40").empty());
+  CHECK(apl("∧/,1E¯12>|Q-P ASSON 110 130 120") == Lines{"1"});
+  CHECK(apl("(1 1 3⍴1 2 3) PROSPAR 0 0") == Lines{"1 3"});  // X = y - x, Y = z
+  CHECK(apl("(1 1 3⍴1 2 3) PROSPAR 1 2 3").at(0) == "LENGTH ERROR");
+}
+
+TEST_CASE("the COMxxx functions take GETCOM's codes as well as words") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl("COMCHA 1").empty());
+  CHECK(apl.commands.back() == Lines{"CHANGE", "GRID"});
+  CHECK(apl("COMDIS 5 3 3 30").empty());
+  CHECK(apl.commands.back() == Lines{"DISPLAY", "SURFACE", "ISOMETRIC", "3", "30"});
+  CHECK(apl("COMDIS 4 4 3").empty());
+  CHECK(apl.commands.back() == Lines{"DISPLAY", "INPUT", "ORTHOGONAL", "YZ"});
+  CHECK(apl("COMSAV APLNAME 'HULL'").empty());
+  CHECK(apl.commands.back() == Lines{"SAVE", "HULL"});
+  CHECK(apl("COMSTO 3,APLNAME 'PIC IGDSIMAG'").empty());
+  CHECK(apl.commands.back() == Lines{"STORE", "FILE", "PIC"});
+  CHECK(apl("COMCHA 'TW MARKS'").empty());
+  CHECK(apl.commands.back() == Lines{"CHANGE", "TW", "MARKS"});
+  CHECK(apl("COMCHA 9").at(0) == "DOMAIN ERROR");
+  CHECK(apl("COMDIS 5 9").at(0) == "DOMAIN ERROR");
+  // PARxx: the codes of the words after a command; GETCOM: a command typed, as codes.
+  CHECK(apl("PARDI 'SURFACE ASSON 110 130 120'") == Lines{"5 2 110 130 120"});
+  CHECK(apl("PARCH 'TW MARKS'") == Lines{"4 2"});
+  CHECK(apl("PARSA 'HULL'") == Lines{apl("APLNAME 'HULL'").at(0)});
+  CHECK(apl("PARCH 'SIDEWAYS'").at(0) == "INCORRECT CHOICE OF PARAMETERS");
+  apl.input = {"DISPLAY SURFACE CONIC 10 20 30"};
+  CHECK(apl("GETCOM") == Lines{"4 5 1 10 20 30"});
+  apl.input = {"FROBNICATE"};
+  CHECK(apl("GETCOM") == Lines{"INCORRECT COMMAND OR PARAMETERS", "0"});
+  apl.input = {"CHANGE", "GRID"};  // the option asked as CHANGE asks it
+  CHECK(apl("C←GETCOM") == Lines{"GRID, TANGENTS, POINTS OR TWISTS?"});
+  CHECK(apl("C") == Lines{"2 1"});
+  apl.input = {"POINTS"};  // PARCH asks the option as CHANGE does
+  CHECK(apl("PARCH ''") == Lines{"GRID, TANGENTS, POINTS OR TWISTS?", "3"});
+  CHECK(apl("COMCHA 1↓C").empty());
+  CHECK(apl.commands.back() == Lines{"CHANGE", "GRID"});
+}
+
+TEST_CASE("ALFINP, NUMINP, EXPL: lines read, HELP answered there") {
+  Apl apl(surface(3, 2, 1, 1));
+  apl.input = {"HELP SHORT", "HELLO"};
+  CHECK(apl("ALFINP 2") ==
+        Lines{"CHANGE: " + std::string(find_command("CHANGE")->summary), "HELLO"});
+  CHECK(apl.ws.status[0] == 0);
+  apl.input = {"1 ¯2 3.5 -4", "X", "5"};
+  CHECK(apl("NUMINP 0") == Lines{"1 ¯2 3.5 ¯4"});
+  CHECK(apl("NUMINP 0") == Lines{"INCORRECT ENTRY", "5"});
+  CHECK(apl("EXPLONG 1").at(0).starts_with("BUILD"));
+  CHECK(apl("EXPL 99").at(0) == "DOMAIN ERROR");
+  CHECK(apl("ALFINP 0").at(0) == "INTERRUPT");  // the end of the input
+}
+
+TEST_CASE("the session functions: AUTOMSAVE, RESTORE, DEFVAR, INIT") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl("AUTOMSAVE").empty());
+  CHECK(apl.session_saves == 1);
+  CHECK(apl("NOCUR←4").empty());
+  CHECK(apl("AUTOMSAVE").at(0) == "CANNOT START: INPPN IS 6 BY 3, NOT 8 BY 3");
+  CHECK(apl.session_saves == 1);
+  CHECK(apl("RESTORE").at(0) == "THE SESSION ON THE DISK CANNOT BE READ");
+  apl.saved_session = surface(2, 2, 0, 0);
+  CHECK(apl("RESTORE").empty());
+  CHECK(apl("NOCUR,⍴INTPN") == Lines{"2 2 2 3"});
+  CHECK(!apl.env.start());  // nothing pending: NOCUR←4 went with the restored surface
+  CHECK(apl("DEFVAR").empty());
+  CHECK(apl("NOCUR,⍴INPPN") == Lines{"0 0"});
+  CHECK(apl.ws == Workspace{});
+}
+
+TEST_CASE("the devices: PLOTG PLOTP PLOTV, TKX and TEKG TEKP TEKV TEKC, DISPLA, OUT") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl("PLOTG 4 2⍴0 0 1 1 2 0 3 3").empty());
+  REQUIRE(apl.plotted.size() == 1);
+  CHECK(apl.plotted[0].drawing.size() == 2);  // two segments
+  CHECK(apl("PLOTV 3 2⍴0 0 1 1 2 0").empty());
+  CHECK(apl.plotted.back().drawing.size() == 1);
+  CHECK(apl("PLOTP 3 2⍴0 0 1 1 2 0").empty());
+  CHECK(apl.plotted.back().drawing.size() == 3);
+  CHECK(apl("PLOTG 3⍴0").at(0) == "LENGTH ERROR");
+  CHECK(apl("⍴TKX 2 2⍴10 20 1023 779") == Lines{"8"});
+  CHECK(apl("TKX 1 2⍴1024 0").at(0) == "DOMAIN ERROR");
+  CHECK(apl("TEKG TKX 2 2⍴10 20 1023 779") == Lines{"IMAGE: TEKG"});
+  REQUIRE(apl.drawn.size() == 1);
+  // The screen's corners, then the segment, in the 4013's addresses.
+  const Drawing2& d = apl.drawn[0].drawing;
+  REQUIRE(d.size() == 3);
+  const auto seg = d.points(d.items()[2]);
+  CHECK(Point2(seg[0]) == Point2{10, 20});
+  CHECK(Point2(seg[1]) == Point2{1023, 779});
+  CHECK(apl("TEKV 'ABCD'").at(0) == "DOMAIN ERROR");
+  CHECK(apl("TEKP 'ABC'").at(0) == "LENGTH ERROR");
+  CHECK(apl("'HELLO' TEKC 100 200") == Lines{"IMAGE: TEKC"});
+  CHECK(apl("OUT 'A LINE'") == Lines{"A LINE"});
+  CHECK(apl("DISPLA").at(0) == "IMAGE NOT FOUND");
+  CHECK(apl("COMDIS 'SURFACE ISOMETRIC 3 30'").empty());
+  apl.ws.image = std::make_shared<const Image>(Image{});
+  CHECK(apl("DISPLA").empty());
+  CHECK(apl.shown == 1);
+  CHECK(apl("PLOTHP").empty());
+  CHECK(apl.commands.back() == Lines{"PLOT", "SELECTRIC"});
+}
+
+TEST_CASE(")HELP is the APL environment's HELP; HELP and * lines are APL's") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl(")HELP SHORT").at(0).starts_with("Type an APL statement"));
+  CHECK(apl.ws.status[0] == 0);
+  CHECK(apl(")HELP LONG").at(0).starts_with("The APL environment is APL\\360"));
+  CHECK(apl.ws.status[0] == 1);
+  CHECK(apl("STATUS[1]") == Lines{"1"});
+  CHECK(apl(")HELP MAYBE") == Lines{"INCORRECT COMMAND"});
+  CHECK(apl("H←5").empty());
+  CHECK(apl("H") == Lines{"5"});
+  CHECK(apl("HELP").at(0) == "VALUE ERROR");
+  CHECK(apl("*1") == Lines{"2.718281828"});
+}
+
+TEST_CASE(")LOAD: no stale copy of a variable afterwards") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl("INPPN[1;1]").at(0) == "0");
+  CHECK(apl("INPPN[1;1]←5").empty());
+  apl.run = [&apl](const Lines& words) {  // RESTORE replaces the surface
+    if (words[0] != "RESTORE") return;
+    apl.ws = surface(2, 2, 0, 0);
+    apl.ws.inppn.ravel[0] = 9;
+  };
+  CHECK(apl(")LOAD HULL") == Lines{"LOADED HULL"});
+  CHECK(apl("INPPN[1;1]") == Lines{"9"});
+  CHECK(!apl.env.start());  // INPPN←5 went with the surface it was made on
+  CHECK(apl.ws.inppn.ravel[0] == 9);
+}
+
+}  // namespace igds::test
+
+namespace igds::test {
+
+TEST_CASE("STATE and WRT on the disk") {
+  TempDir dir;
+  const Disk disk(dir.path());
+  Apl apl(surface(3, 2, 1, 1), &disk);
+  CHECK(apl("STATE 'CARDS TEXT'") == Lines{"0"});
+  // A new file of integers, 3 to a record of width 5; then two records of F8.2 added.
+  CHECK(apl("(1 1 5 0 3,APLNAME 'CARDS TEXT') WRT 2 2⍴1 22 ¯333 4444").empty());
+  CHECK(apl("STATE 'CARDS TEXT'") == Lines{"1"});
+  CHECK(apl("(0 3 8 2 1,APLNAME 'CARDS TEXT') WRT 1.5 ¯2.25").empty());
+  CHECK(apl("(0 2 1 0 1,APLNAME 'CARDS TEXT') WRT 2 3⍴'AB CD '").empty());
+  CHECK(read_file(disk.path("CARDS", "TEXT")) ==
+        "    1   22 -333\n 4444\n    1.50\n   -2.25\nAB\nCD\n");
+  CHECK(apl("(1 1 2 0 1,APLNAME 'CARDS TEXT') WRT 123").empty());
+  CHECK(read_file(disk.path("CARDS", "TEXT")) == "**\n");
+  // igds's own files are not for WRT; bad controls are DOMAIN ERROR.
+  CHECK(apl("(1 1 5 0 3,APLNAME 'BINSAVE IGDSCONT') WRT 1").at(0) == "DOMAIN ERROR");
+  CHECK(apl("(1 5 5 0 3,APLNAME 'CARDS TEXT') WRT 1").at(0) == "DOMAIN ERROR");
+  CHECK(apl("(1 1 5 0 30,APLNAME 'CARDS TEXT') WRT 1").at(0) == "DOMAIN ERROR");
+  CHECK(apl("STATE 'A/B TEXT'").at(0) == "DOMAIN ERROR");
 }
 
 }  // namespace igds::test

@@ -44,18 +44,28 @@ ConicFrame conic_frame(Vec3 view, Vec3 centre) {
   return {w, r, cross(r, w), distance};
 }
 
-// ASSON's 2 x 3 matrix (math.md): foreshortenings of a true orthographic axonometric view.
+// A parallel projection's 2 x 3 matrix: X = xx x + xy y, Y = yx x + yy y + yz z.
 struct AssonMatrix {
   double xx, xy, yx, yy, yz;
 };
 
+// PROSPAR's matrix: the x axis drawn at angle px and the y axis at angle py (radians, from the
+// screen's x axis), z upright, each unit long.
+AssonMatrix prospar_matrix(double px, double py) {
+  return {-std::sin(px), std::sin(py), std::cos(px), std::cos(py), 1};
+}
+
+// ASSON's matrix (math.md): PROSPAR's with the axes at the angles z-x and y-z, each axis
+// foreshortened as a true orthographic axonometric view makes it (the manual's ASSON: the
+// points scaled, then PROSPAR).
 AssonMatrix asson_matrix(std::array<double, 3> angles_degrees) {
   const double xy = angles_degrees[0] * degree, yz = angles_degrees[1] * degree,
                zx = angles_degrees[2] * degree;
   const double kx = std::sqrt(-std::cos(yz) / (std::sin(xy) * std::sin(zx)));
   const double ky = std::sqrt(-std::cos(zx) / (std::sin(yz) * std::sin(xy)));
   const double kz = std::sqrt(-std::cos(xy) / (std::sin(zx) * std::sin(yz)));
-  return {-kx * std::sin(zx), ky * std::sin(yz), kx * std::cos(zx), ky * std::cos(yz), kz};
+  const AssonMatrix p = prospar_matrix(zx, yz);
+  return {p.xx * kx, p.xy * ky, p.yx * kx, p.yy * ky, p.yz * kz};
 }
 
 bool finite(Vec3 v) {
@@ -228,6 +238,18 @@ void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View 
   check_sizes(in, out);
   if (!asson_parameters_valid(angles_degrees)) refuse(DataError::Problem::projection_parameters);
   const AssonMatrix a = asson_matrix(angles_degrees);
+  for (std::size_t k = 0; k < in.size(); ++k) {
+    const Vec3 p = in[k];
+    out[k] = Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
+  }
+}
+
+void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2View out) {
+  check_sizes(in, out);
+  if (!std::isfinite(angles_degrees[0]) || !std::isfinite(angles_degrees[1]))
+    refuse(DataError::Problem::projection_parameters);
+  const AssonMatrix a =
+      prospar_matrix((angles_degrees[0] + 90) * degree, (angles_degrees[1] + 90) * degree);
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3 p = in[k];
     out[k] = Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};

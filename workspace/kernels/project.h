@@ -56,6 +56,9 @@ void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out);
 // ASSONOMETRIC (axonometric) with the angles between the projected x-y, y-z, z-x axes, each
 // strictly between 90 and 180 degrees, summing to 360 (math.md).
 void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out);
+// PROSPAR, the parallel projection ASSON makes of its scaled points, with the manual's two
+// angles a1 a2 in degrees: X = y cos a2 - x cos a1, Y = z - (x sin a1 + y sin a2).
+void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2View out);
 
 // Parameter checks, shared by the kernels and by the prompts that ask for them.
 bool isom_parameters_valid(double axis, double angle_degrees);

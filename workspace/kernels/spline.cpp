@@ -9,10 +9,7 @@ namespace {
 
 // The C2 system on distinct points q (m >= 2), tangents into tg; cp is work space of size m.
 // Thomas algorithm with the known end tangents as rows 0 and m-1 (cp[0] = 0 moves L_1 TG_0 to the
-// right-hand side of row 1); the interior rows are, with L_(i-1) = |q_i - q_(i-1)| and
-// L_i = |q_(i+1) - q_i| (math.md, coefficients crossed on purpose):
-//   L_i TG_(i-1) + 2(L_i + L_(i-1)) TG_i + L_(i-1) TG_(i+1)
-//     = 3((L_(i-1)/L_i)(q_(i+1) - q_i) + (L_i/L_(i-1))(q_i - q_(i-1)))
+// right-hand side of row 1); the interior rows are spline_row's (spline.h).
 template <class Points>
 void solve(const Points& q, Vec3 first, Vec3 last, std::span<Vec3> tg, double* cp) {
   const std::size_t m = q.size();
@@ -23,17 +20,10 @@ void solve(const Points& q, Vec3 first, Vec3 last, std::span<Vec3> tg, double* c
   for (std::size_t i = 1; i + 1 < m; ++i) {
     const Vec3 ahead = q[i + 1] - q[i];
     const double ln = chord_length(q[i], q[i + 1]);
-    // One division for both ratios: L_(i-1)/L_i = L_(i-1)^2 / (L_i L_(i-1)), and likewise.
-    // (Two divisions where the product could leave the normal range.)
-    const double product = ln * lp;
-    const bool normal = product > 0x1p-960 && product < 0x1p960;
-    const double inv = 1 / product;
-    const double ratio = normal ? lp * lp * inv : lp / ln;
-    const double inverse_ratio = normal ? ln * ln * inv : ln / lp;
-    const Vec3 d = 3 * (ratio * ahead + inverse_ratio * back);
-    const double pivot = 1 / (2 * (ln + lp) - ln * cp[i - 1]);
-    cp[i] = lp * pivot;
-    tg[i] = pivot * (d - ln * tg[i - 1]);
+    const SplineRow row = spline_row(back, ahead, lp, ln);
+    const double pivot = 1 / (row.diagonal - row.lower * cp[i - 1]);
+    cp[i] = row.upper * pivot;
+    tg[i] = pivot * (row.known - row.lower * tg[i - 1]);
     back = ahead;
     lp = ln;
   }

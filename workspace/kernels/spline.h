@@ -29,6 +29,24 @@ inline double chord_length(Vec3 p0, Vec3 p1) {
   return norm(d);
 }
 
+// Row i of the C2 system (math.md, coefficients crossed on purpose), for the points before, at
+// and after i: lower TG_(i-1) + diagonal TG_i + upper TG_(i+1) = known, with L_(i-1) = |back|
+// and L_i = |ahead| the chords. The manual's COEFFICIENTI and NOTO.
+struct SplineRow {
+  double lower, diagonal, upper;
+  Vec3 known;
+};
+inline SplineRow spline_row(Vec3 back, Vec3 ahead, double lp, double ln) {
+  // One division for both ratios: L_(i-1)/L_i = L_(i-1)^2 / (L_i L_(i-1)), and likewise.
+  // (Two divisions where the product could leave the normal range.)
+  const double product = ln * lp;
+  const bool normal = product > 0x1p-960 && product < 0x1p960;
+  const double inv = 1 / product;
+  const double ratio = normal ? lp * lp * inv : lp / ln;
+  const double inverse_ratio = normal ? ln * ln * inv : ln / lp;
+  return {ln, 2 * (ln + lp), lp, 3 * (ratio * ahead + inverse_ratio * back)};
+}
+
 // Reusable work space of spline_tangents, so that a loop over many grid lines allocates nothing.
 struct SplineScratch {
   std::vector<Vec3> distinct;          // the line's points with runs of equal points merged
