@@ -21,7 +21,7 @@ inline constexpr int item_height = 24;    // one alpha line (22) and a gap
 inline constexpr int box_width = label_columns * tek_screen::char_width + 10;
 inline constexpr int gap = 4;       // between two columns of boxes
 inline constexpr int right = 1020;  // the menu's right edge
-inline constexpr int top = 766;     // the highest row xterm shows (spec tek4013.md)
+inline constexpr int top = 766;     // the highest row xterm shows (docs/devices.md)
 inline constexpr int bottom = 2;
 inline constexpr int rows = (top - bottom) / item_height;  // items in one column
 }  // namespace menu_screen
