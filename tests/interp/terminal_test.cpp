@@ -4,6 +4,8 @@
 
 #include <doctest/doctest.h>
 
+#include "commands/picture.h"
+#include "tests/devices/support.h"
 #include "tests/support/scripted.h"
 #include "tests/support/tek_decoder.h"
 #include "tests/support/tek_terminal.h"
@@ -240,6 +242,101 @@ TEST_CASE("command files: the line is echoed after its prompt, nothing waits") {
   terminal.document(text);
   CHECK(out.text.starts_with("READY\nNUMBER OF CURVES AND STRINGERS? 3 3\nX\n"));
   CHECK(out.text.find("MORE") == std::string::npos);
+}
+
+}  // namespace igds::test
+
+namespace igds::test {
+
+namespace {
+
+// A tek terminal with DISPLAY SURFACE's picture up.
+struct WithPicture : Tek {
+  WithPicture() {
+    terminal.show(std::make_shared<const Picture>(picture_of(devices::surface_image(6, 7))), "");
+  }
+  std::string text_of(const TekPage& page) const {
+    std::string all;
+    for (const auto& t : page.texts) all += t.text + "\n";
+    return all;
+  }
+};
+
+}  // namespace
+
+TEST_CASE("tek mode: long output below a picture stops at MORE before lines go unread") {
+  WithPicture t;
+  REQUIRE(t.terminal.screen()->rows_per_page() == 8);
+  // Twelve rows of a result: the first page's rows are read at MORE before the page turns.
+  t.keys.type("\r");
+  for (int i = 1; i <= 12; ++i) t.terminal.print("ROW " + std::to_string(i));
+  CHECK(t.keys.left() == 0);  // RETURN was asked for once
+  const auto d = decode_tek(t.out.text);
+  std::size_t more_page = d.pages.size();
+  for (std::size_t p = 0; p < d.pages.size(); ++p)
+    if (t.text_of(d.pages[p]).find("MORE: PRESS RETURN") != std::string::npos) more_page = p;
+  REQUIRE(more_page < d.pages.size());
+  // The page with MORE shows rows 1 to 7 and the picture; every row was on some page.
+  const std::string before = t.text_of(d.pages[more_page]);
+  for (int i = 1; i <= 7; ++i)
+    CHECK(before.find("ROW " + std::to_string(i) + "\n") != std::string::npos);
+  CHECK(!d.pages[more_page].segments.empty());
+  CHECK(t.text_of(d.pages.back()).find("ROW 12") != std::string::npos);
+  CHECK(!d.pages.back().segments.empty());
+  // A command file never waits.
+  StringOutput out;
+  ScriptedSource file(false, true);
+  Terminal batch(TermMode::tek, {}, out);
+  batch.use_input(&file);
+  batch.show(std::make_shared<const Picture>(picture_of(devices::surface_image(6, 7))), "");
+  for (int i = 1; i <= 30; ++i) batch.say("ROW " + std::to_string(i));
+  CHECK(out.text.find("MORE") == std::string::npos);
+}
+
+TEST_CASE("tek mode: a line set out in columns is cut at the width, never broken at a blank") {
+  Tek t;
+  std::string row;
+  for (int i = 0; i < 12; ++i) row += " 1.2345678";  // 120 characters, a column every 10
+  t.terminal.print(row);
+  t.terminal.print(row);
+  const auto rows = t.rows();
+  REQUIRE(rows.size() == 4);
+  CHECK(rows[0].size() == 73);
+  CHECK(rows[0] == rows[2]);  // each row cut at the same place: the columns stay in line
+  CHECK(rows[1] == rows[3]);
+  // The same line said as prose is wrapped at blanks.
+  Tek prose;
+  prose.terminal.say(row);
+  CHECK(prose.rows().front().size() < 73);
+}
+
+TEST_CASE("tek mode: HELP SHORT below the picture keeps it; a long text gets a page of its own") {
+  WithPicture t;
+  const int pages = t.terminal.screen()->pages();
+  t.terminal.document(
+      "A border point k and tx ty tz, and at a corner 1 (along the curve) or 0 "
+      "(along the stringer); AUTO: all from the points; an empty line ends.");
+  CHECK(t.terminal.screen()->pages() == pages);  // no page: the picture stays
+  CHECK(t.terminal.screen()->shows_picture());
+  std::string long_text;
+  for (int i = 0; i < 10; ++i) long_text += "LINE " + std::to_string(i) + "\n";
+  t.keys.type("\r");
+  t.terminal.document(long_text);
+  CHECK(t.out.text.find("PRESS RETURN TO GO BACK TO THE PICTURE") != std::string::npos);
+  CHECK(t.terminal.screen()->shows_picture());
+}
+
+TEST_CASE("tek mode: Ctrl-C at a pause is the next wait's interrupt") {
+  Tek t;
+  std::string text;
+  for (int i = 1; i <= 50; ++i) text += "LINE " + std::to_string(i) + "\n";
+  t.keys.type("\x03");
+  t.keys.type("N\r");
+  t.terminal.document(text);
+  // The rest of the text is not shown; the next question gives the interrupt, then goes on.
+  CHECK(t.out.text.find("LINE 50") == std::string::npos);
+  CHECK(t.terminal.read_line("? ").kind == Event::Kind::interrupt);
+  CHECK(t.terminal.read_line("? ").text == "N");
 }
 
 }  // namespace igds::test
