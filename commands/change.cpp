@@ -29,11 +29,10 @@ constexpr Choice twist_choices[] = {
     {"ZERO", zero_twists, {}, "zero twists, as IGDS 1975"},
     {"MARKS", marks_twists, {}, "Marks 1970: Birkhoff and de Boor's twists from the points"},
 };
-const Prompt twists_prompt{
-    "TWISTS? (ZERO OR MARKS)",
-    "ZERO: the twists of the manual (flat patch corners); MARKS: the twists\n"
-    "of Marks 1970, estimated from the neighbouring points.",
-    twist_choices};
+const Prompt twists_prompt{"TWISTS? (ZERO OR MARKS)",
+                           "ZERO: the twists of the manual (flat patch corners); MARKS: the twists "
+                           "of Marks 1970, estimated from the neighbouring points.",
+                           twist_choices};
 
 bool ask_twists(Context& ctx) {
   return ask_for(ctx, twists_prompt, [](const std::vector<std::string>& words) {
@@ -45,12 +44,12 @@ bool ask_twists(Context& ctx) {
 
 const Prompt change_grid_prompt{
     "CHANGE GRID TOO? (Y OR N)",
-    "Y to give new numbers of interpolated curves and stringers, N to keep\n"
+    "Y to give new numbers of interpolated curves and stringers, N to keep "
     "them; or type the two numbers (INTCU INTST) at once.",
     yes_no()};
 const Prompt change_tangents_prompt{
     "CHANGE TANGENTS TOO? (Y OR N)",
-    "Y to change border tangents, N to keep them; or type a tangent entry\n"
+    "Y to change border tangents, N to keep them; or type a tangent entry "
     "(k tx ty tz, and 1 or 0 at a corner) at once.",
     yes_no()};
 
@@ -160,50 +159,43 @@ extern const Command change_command{
     .options = options,
     .follows = {},
     .option_prompt = {"GRID, TANGENTS, POINTS OR TWISTS?",
-                      "GRID: new numbers of interpolated curves and stringers; TANGENTS: new\n"
+                      "GRID: new numbers of interpolated curves and stringers; TANGENTS: new "
                       "border tangents; POINTS: new input points; TWISTS: ZERO or MARKS.",
                       options},
     .summary = "changes the current surface and interpolates it again",
-    .long_help = R"(CHANGE modifies the current surface (there must be one: BUILD or
-RESTORE it first, else INPUT NOT FOUND). The entries are typed as in
-BUILD; what is not changed keeps its value, and the surface is
-interpolated again at the end.
-
-  CHANGE GRID      asks INTCU INTST, the numbers of curves and
-                   stringers to insert between two input ones.
-  CHANGE TANGENTS  takes tangent entries "k tx ty tz" ("k tx ty tz f"
-                   at a corner, f = 1 along the curve, 0 along the
-                   stringer) up to an empty line, then asks
-                   CHANGE GRID TOO? (Y OR N): answer Y or N, or type
-                   the two numbers.
-  CHANGE POINTS    takes point entries "k x y z [x y z ...]" up to an
-                   empty line, then asks CHANGE TANGENTS TOO? (Y OR N)
-                   (Y, N, AUTO or a tangent entry) and CHANGE GRID
-                   TOO?
-  CHANGE TWISTS    asks TWISTS? (ZERO OR MARKS), or takes the word on
-                   the line (C TW M): ZERO, the default, gives every
-                   patch corner the zero twist of IGDS 1975; MARKS the
-                   twist of Marks 1970 (Birkhoff and de Boor, from the
-                   four diagonal neighbours; zero at the border). The
-                   choice belongs to the surface: SAVE, the session,
-                   STATUS[3] and WRITE keep it, and PATCHES, the grid
-                   and every export follow it.
-
-Tangents are per unit of chord length: 1 along the chord is the
-natural pace, lengths much above 3 make loops. AUTO at TANGENTS? sets
-every border tangent from the points by Marks's rule; the entries typed
-after it replace single tangents. CHANGE POINTS keeps the surface's
-AUTO mark only when AUTO is typed again for the new points.
-
-Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up
-and keeps the surface as it was.
-
-Example: move point 5 up and use a finer grid.
-  CHANGE POINTS
-  POINTS? 5 10 10 4
-  POINTS?
-  CHANGE TANGENTS TOO? (Y OR N) N
-  CHANGE GRID TOO? (Y OR N) 8 8)",
+    .long_help =
+        "CHANGE modifies the current surface (there must be one: BUILD or RESTORE it first, else "
+        "INPUT NOT FOUND). The entries are typed as in BUILD; what is not changed keeps its "
+        "value, and the surface is interpolated again at the end.\n"
+        "\n"
+        "  CHANGE GRID      asks INTCU INTST, the numbers of curves and stringers to insert "
+        "between two input ones.\n"
+        "  CHANGE TANGENTS  takes tangent entries \"k tx ty tz\" (\"k tx ty tz f\" at a corner, f "
+        "= 1 "
+        "along the curve, 0 along the stringer) up to an empty line, then asks CHANGE GRID TOO? "
+        "(Y OR N): answer Y or N, or type the two numbers.\n"
+        "  CHANGE POINTS    takes point entries \"k x y z [x y z ...]\" up to an empty line, then "
+        "asks CHANGE TANGENTS TOO? (Y OR N) (Y, N, AUTO or a tangent entry) and CHANGE GRID TOO?\n"
+        "  CHANGE TWISTS    asks TWISTS? (ZERO OR MARKS), or takes the word on the line (C TW M): "
+        "ZERO, the default, gives every patch corner the zero twist of IGDS 1975; MARKS the twist "
+        "of Marks 1970 (Birkhoff and de Boor, from the four diagonal neighbours; zero at the "
+        "border). The choice belongs to the surface: SAVE, the session, STATUS[3] and WRITE keep "
+        "it, and PATCHES, the grid and every export follow it.\n"
+        "\n"
+        "Tangents are per unit of chord length: 1 along the chord is the natural pace, lengths "
+        "much above 3 make loops. AUTO at TANGENTS? sets every border tangent from the points by "
+        "Marks's rule; the entries typed after it replace single tangents. CHANGE POINTS keeps "
+        "the surface's AUTO mark only when AUTO is typed again for the new points.\n"
+        "\n"
+        "Abbreviations work as everywhere: C G is CHANGE GRID. Ctrl-C gives up and keeps the "
+        "surface as it was.\n"
+        "\n"
+        "Example: move point 5 up and use a finer grid.\n"
+        "  CHANGE POINTS\n"
+        "  POINTS? 5 10 10 4\n"
+        "  POINTS?\n"
+        "  CHANGE TANGENTS TOO? (Y OR N) N\n"
+        "  CHANGE GRID TOO? (Y OR N) 8 8",
     .questions = questions,
     .run = run_change,
 };

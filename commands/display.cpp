@@ -28,11 +28,11 @@ constexpr Choice options[] = {
 };
 
 const Prompt file_prompt{"FILE NAME?",
-                         "The name of an image kept with STORE FILE: 1 to 8 letters, digits\n"
+                         "The name of an image kept with STORE FILE: 1 to 8 letters, digits "
                          "or $ # @ + - _ (type IGDSIMAG)."};
 
 const Prompt picture_prompt{"FILE NAME?",
-                            "The name of a DUCT picture file: 1 to 8 letters, digits or\n"
+                            "The name of a DUCT picture file: 1 to 8 letters, digits or "
                             "$ # @ + - _ (type DUCTPIC)."};
 
 // NAME.DUCTPIC read and drawn in space before the projection is asked: a damaged or foreign
@@ -114,52 +114,48 @@ extern const Command display_command{
     .options = options,
     .follows = {},
     .option_prompt = {"FIRST, SECOND, FILE, INPUT, SURFACE OR PICTURE?",
-                      "INPUT or SURFACE: project the current surface; FIRST, SECOND or FILE:\n"
+                      "INPUT or SURFACE: project the current surface; FIRST, SECOND or FILE: "
                       "show an image kept by STORE; PICTURE: project a DUCT picture file.",
                       options},
     .bad_option = reports::incorrect_parameter,  // the manual's 4.4
     .summary = "projects and draws the input, the surface or a DUCT picture, or a kept image",
-    .long_help = R"(DISPLAY makes a new current image and draws it on the left of the
-screen with a short description beside it. The screen is not erased
-first (ERASE does that): images are drawn one over the other.
-
-  DISPLAY INPUT [projection [parameters]]   the input points, the
-      border joined by segments, the non-zero border tangents as
-      arrows (INPUT NOT FOUND if there is no surface).
-  DISPLAY SURFACE [projection [parameters]] the whole interpolated
-      grid, joined along the curves and the stringers (SURFACE NOT
-      FOUND if there is none).
-  DISPLAY FIRST | SECOND   the copy kept by STORE FIRST or SECOND
-                           (IMAGE NOT FOUND if there is none).
-  DISPLAY FILE [name]      the image kept by STORE FILE in
-                           NAME.IGDSIMAG (FILE NOT FOUND).
-  DISPLAY PICTURE [name [projection [parameters]]]  the DUCT 4.4
-      picture file NAME.DUCTPIC (EXPORT DUCT writes them; so did
-      DUCT), projected like a surface: lines, conic arcs, Bezier
-      spans, marks and texts, dashes and colours as the device
-      draws them. A damaged picture gets FILE DAMAGED with the line
-      and what is wrong; the current image is kept.
-
-Projections and their parameters (what is not on the line is asked):
-  CONIC x y z         perspective from the view point x y z towards
-                      the centre of the input points; the eye must be
-                      outside the surface.
-  ISOMETRIC axis angle  the axis dropped (1 x, 2 y, 3 z) is drawn at
-                      the angle, 0 to 90 degrees, to the first of the
-                      other two.
-  ASSONOMETRIC a b c  a true axonometric view: the angles between the
-                      projected x-y, y-z and z-x axes, each 90 to 180,
-                      sum 360; 110 130 120 is a good view.
-                      AXONOMETRIC is the same.
-  ORTHOGONAL plane    XY, YZ or XZ.
-A wrong projection or parameter gets INCORRECT PARAMETER and the
-reason; typed at a question, the question is asked again.
-
-Examples:
-  DISPLAY SURFACE ASSONOMETRIC 110 130 120
-  D I C 100 -50 80        (DISPLAY INPUT CONIC, view point 100 -50 80)
-  D SU O XY
-  DISPLAY PICTURE HULL ORTHOGONAL XY)",
+    .long_help =
+        "DISPLAY makes a new current image and draws it on the left of the screen with a short "
+        "description beside it. The screen is not erased first (ERASE does that): images are "
+        "drawn one over the other.\n"
+        "\n"
+        "  DISPLAY INPUT [projection [parameters]]   the input points, the border joined by "
+        "segments, the non-zero border tangents as arrows (INPUT NOT FOUND if there is no "
+        "surface).\n"
+        "  DISPLAY SURFACE [projection [parameters]] the whole interpolated grid, joined along "
+        "the curves and the stringers (SURFACE NOT FOUND if there is none).\n"
+        "  DISPLAY FIRST | SECOND   the copy kept by STORE FIRST or SECOND (IMAGE NOT FOUND if "
+        "there is none).\n"
+        "  DISPLAY FILE [name]      the image kept by STORE FILE in NAME.IGDSIMAG (FILE NOT "
+        "FOUND).\n"
+        "  DISPLAY PICTURE [name [projection [parameters]]]  the DUCT 4.4 picture file "
+        "NAME.DUCTPIC (EXPORT DUCT writes them; so did DUCT), projected like a surface: lines, "
+        "conic arcs, Bezier spans, marks and texts, dashes and colours as the device draws them. "
+        "A damaged picture gets FILE DAMAGED with the line and what is wrong; the current image "
+        "is kept.\n"
+        "\n"
+        "Projections and their parameters (what is not on the line is asked):\n"
+        "  CONIC x y z         perspective from the view point x y z towards the centre of the "
+        "input points; the eye must be outside the surface.\n"
+        "  ISOMETRIC axis angle  the axis dropped (1 x, 2 y, 3 z) is drawn at the angle, 0 to 90 "
+        "degrees, to the first of the other two.\n"
+        "  ASSONOMETRIC a b c  a true axonometric view: the angles between the projected x-y, y-z "
+        "and z-x axes, each 90 to 180, sum 360; 110 130 120 is a good view. AXONOMETRIC is the "
+        "same.\n"
+        "  ORTHOGONAL plane    XY, YZ or XZ.\n"
+        "A wrong projection or parameter gets INCORRECT PARAMETER and the reason; typed at a "
+        "question, the question is asked again.\n"
+        "\n"
+        "Examples:\n"
+        "  DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"
+        "  D I C 100 -50 80        (DISPLAY INPUT CONIC, view point 100 -50 80)\n"
+        "  D SU O XY\n"
+        "  DISPLAY PICTURE HULL ORTHOGONAL XY",
     .questions = questions,
     .run = run_display,
 };

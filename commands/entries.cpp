@@ -165,19 +165,19 @@ Density parse_density(std::span<const std::string> words, int nocur, int nostr) 
 }
 
 const Prompt size_prompt{"NUMBER OF CURVES AND STRINGERS?",
-                         "Two whole numbers: NOCUR, the input curves, and NOSTR, the input\n"
+                         "Two whole numbers: NOCUR, the input curves, and NOSTR, the input "
                          "stringers (points on each curve); 1 3 is a single curve of 3 points."};
 const Prompt points_prompt{"POINTS?",
-                           "A point number k and x y z (more triplets go to k+1, k+2, ...); an\n"
+                           "A point number k and x y z (more triplets go to k+1, k+2, ...); an "
                            "empty line ends the points."};
 const Prompt tangents_prompt{
     "TANGENTS?",
-    "A border point k and tx ty tz, and at a corner 1 (along the curve) or 0\n"
+    "A border point k and tx ty tz, and at a corner 1 (along the curve) or 0 "
     "(along the stringer); AUTO: all from the points; an empty line ends.",
     auto_entry};
 const Prompt density_prompt{
     "INTERPOLATED CURVES AND STRINGERS?",
-    "Two whole numbers >= 0: the curves to insert between two input curves,\n"
+    "Two whole numbers >= 0: the curves to insert between two input curves, "
     "and the stringers between two input stringers."};
 
 GridSize ask_grid_size(Context& ctx) {

@@ -44,7 +44,7 @@ constexpr Choice options[] = {
 };
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file\n"
+                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file "
                          "of that name and type is replaced)."};
 
 // The date the exchange files carry: now, local time; SOURCE_DATE_EPOCH (seconds since 1970,
@@ -242,47 +242,40 @@ extern const Command export_command{
     .options = options,
     .follows = {},
     .option_prompt = {"SVG, TEK, HPGL, DUCT, IGES OR STEP?",
-                      "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013\n"
+                      "The kind of file: SVG (a picture for a browser), TEK (a Tektronix 4013 "
                       "stream), HPGL (a plot), DUCT (a DUCT picture), IGES or STEP (CAD).",
                       options},
     .summary = "writes the current image (SVG, TEK, HPGL, DUCT) or the surface (DUCT, IGES, STEP)",
-    .long_help = R"(EXPORT writes the current image (the one last displayed), with its
-description, or the current surface itself, to a file on the disk for
-other programs:
-
-  EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid
-                      out as on the Tektronix screen
-  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would
-                      receive (a clean screen, the image, the
-                      description); tek2plot and xterm -t read it
-  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a
-                      plotter or hp2xx
-  EXPORT DUCT [name]  NAME.DUCTPIC, a DUCT 4.4 picture file: the
-                      surface's curves and stringers as exact Bezier
-                      spans in space, the input points and border
-                      tangents in colour 2, when the current image is
-                      of the current surface (or there is none); else
-                      the current image as projected (a picture read
-                      by DISPLAY PICTURE, an image of another surface
-                      or from a file)
-  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: each patch
-                      an exact bicubic B-spline surface, the input
-                      curves and stringers B-spline curves (IGES 5.3)
-  EXPORT STEP [name]  NAME.STP, the same geometry in STEP (AP214)
-
-A file of the same name and type is replaced, and EXPORT says so
-(HULL.SVG REPLACED). With no current image EXPORT SVG, TEK or HPGL says
-IMAGE NOT FOUND; with no surface EXPORT IGES or STEP (and DUCT with no
-image either) says SURFACE NOT FOUND; a name that is not 1 to 8
-letters, digits or $ # @ + - _ gets INCORRECT PARAMETER. The exchange
-files are dated now, or by SOURCE_DATE_EPOCH.
-
-Example (EX S is EXPORT SVG, EX I is EXPORT IGES):
-  DISPLAY SURFACE ASSONOMETRIC 110 130 120
-  EXPORT SVG HULL
-  EX T HULL
-  EXPORT DUCT HULL
-  EX I HULL)",
+    .long_help =
+        "EXPORT writes the current image (the one last displayed), with its description, or the "
+        "current surface itself, to a file on the disk for other programs:\n"
+        "\n"
+        "  EXPORT SVG [name]   NAME.SVG, a picture any web browser shows, laid out as on the "
+        "Tektronix screen\n"
+        "  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would receive (a clean "
+        "screen, the image, the description); tek2plot and xterm -t read it\n"
+        "  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a plotter or hp2xx\n"
+        "  EXPORT DUCT [name]  NAME.DUCTPIC, a DUCT 4.4 picture file: the surface's curves and "
+        "stringers as exact Bezier spans in space, the input points and border tangents in colour "
+        "2, when the current image is of the current surface (or there is none); else the current "
+        "image as projected (a picture read by DISPLAY PICTURE, an image of another surface or "
+        "from a file)\n"
+        "  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: each patch an exact bicubic "
+        "B-spline surface, the input curves and stringers B-spline curves (IGES 5.3)\n"
+        "  EXPORT STEP [name]  NAME.STP, the same geometry in STEP (AP214)\n"
+        "\n"
+        "A file of the same name and type is replaced, and EXPORT says so (HULL.SVG REPLACED). "
+        "With no current image EXPORT SVG, TEK or HPGL says IMAGE NOT FOUND; with no surface "
+        "EXPORT IGES or STEP (and DUCT with no image either) says SURFACE NOT FOUND; a name that "
+        "is not 1 to 8 letters, digits or $ # @ + - _ gets INCORRECT PARAMETER. The exchange "
+        "files are dated now, or by SOURCE_DATE_EPOCH.\n"
+        "\n"
+        "Example (EX S is EXPORT SVG, EX I is EXPORT IGES):\n"
+        "  DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"
+        "  EXPORT SVG HULL\n"
+        "  EX T HULL\n"
+        "  EXPORT DUCT HULL\n"
+        "  EX I HULL",
     .questions = questions,
     .run = run_export,
 };

@@ -29,7 +29,7 @@ constexpr std::string_view kept = "CURRENT SURFACE KEPT";
 constexpr std::size_t max_deck_bytes = 4096 + 256 * max_input_points;
 
 const Prompt file_prompt{"FILE NAME?",
-                         "The name of a fitting deck: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "The name of a fitting deck: 1 to 8 letters, digits or $ # @ + - _ "
                          "(type CADADATA; the listing goes to NAME.CADALIST)."};
 
 // What is wrong with a deck, in the words of the report.
@@ -126,39 +126,37 @@ extern const Command fit_command{
     .follows = "[name]",
     .option_prompt = {},
     .summary = "fits Marks's deck NAME.CADADATA: a new surface, and NAME.CADALIST",
-    .long_help = R"(FIT reads NAME.CADADATA, the input deck of Marks's fitting program
-(Cambridge CAD Group, 1970, CADA/REM/SUBROUTS), and makes it the
-current surface, replacing the old one. The deck is card images:
-
-  (2I4)    MR NC, the rows and columns of the grid: NOCUR and NOSTR
-  (18F4.0) the key of every point, row by row: 1 (position given),
-           +2 tangent along the row given, +4 along the column, +8
-           twist given
-  (9F7.1)  for each point, row by row, a new card: x y z, then the
-           given vectors (along the row, along the column, twist)
-
-Every point needs its position (a key of 0 is refused, the point
-named). Where the deck gives no vector, Marks's rule gives it: the
-F-mesh tangent (direction of the central difference, length of the
-shorter chord), the ends of a line made parabolas, and the twists of
-Birkhoff and de Boor. The surface has MARKS twists and AUTO border
-tangents. FIT then asks INTERPOLATED CURVES AND STRINGERS? as BUILD
-does, and writes NAME.CADALIST, the listing of the program: the 13
-numbers of every point, then the matrix B of every patch.
-
-The interior tangents are Marks's, not IGDS's splines: CHANGE GRID
-keeps them; CHANGE POINTS, TANGENTS or TWISTS interpolates the points
-again with IGDS's splines.
-
-  FILE NOT FOUND        there is no NAME.CADADATA on the disk
-  DECK REFUSED: ...     the deck cannot be read (line, column or point
-                        named); the current surface is kept
-
-Example:
-  FIT SPHERE
-  INTERPOLATED CURVES AND STRINGERS? 2 2
-  NOCUR 5 NOSTR 5 INTCU 2 INTST 2
-  SPHERE.CADALIST: 25 POINTS, 16 PATCHES, 0 GIVEN VECTORS)",
+    .long_help =
+        "FIT reads NAME.CADADATA, the input deck of Marks's fitting program (Cambridge CAD Group, "
+        "1970, CADA/REM/SUBROUTS), and makes it the current surface, replacing the old one. The "
+        "deck is card images:\n"
+        "\n"
+        "  (2I4)    MR NC, the rows and columns of the grid: NOCUR and NOSTR\n"
+        "  (18F4.0) the key of every point, row by row: 1 (position given), +2 tangent along the "
+        "row given, +4 along the column, +8 twist given\n"
+        "  (9F7.1)  for each point, row by row, a new card: x y z, then the given vectors (along "
+        "the row, along the column, twist)\n"
+        "\n"
+        "Every point needs its position (a key of 0 is refused, the point named). Where the deck "
+        "gives no vector, Marks's rule gives it: the F-mesh tangent (direction of the central "
+        "difference, length of the shorter chord), the ends of a line made parabolas, and the "
+        "twists of Birkhoff and de Boor. The surface has MARKS twists and AUTO border tangents. "
+        "FIT then asks INTERPOLATED CURVES AND STRINGERS? as BUILD does, and writes "
+        "NAME.CADALIST, the listing of the program: the 13 numbers of every point, then the "
+        "matrix B of every patch.\n"
+        "\n"
+        "The interior tangents are Marks's, not IGDS's splines: CHANGE GRID keeps them; CHANGE "
+        "POINTS, TANGENTS or TWISTS interpolates the points again with IGDS's splines.\n"
+        "\n"
+        "  FILE NOT FOUND        there is no NAME.CADADATA on the disk\n"
+        "  DECK REFUSED: ...     the deck cannot be read (line, column or point named); the "
+        "current surface is kept\n"
+        "\n"
+        "Example:\n"
+        "  FIT SPHERE\n"
+        "  INTERPOLATED CURVES AND STRINGERS? 2 2\n"
+        "  NOCUR 5 NOSTR 5 INTCU 2 INTST 2\n"
+        "  SPHERE.CADALIST: 25 POINTS, 16 PATCHES, 0 GIVEN VECTORS",
     .questions = questions,
     .run = run_fit,
 };

@@ -22,44 +22,15 @@ constexpr Choice options[] = {
     {"LONG", long_help, {}, "a full explanation (and keep to that)"},
 };
 
-constexpr std::size_t width = 72;  // the 4013 screen has 73 columns
-
-// `text` broken at blanks into lines of at most `width - indent` characters, every line after
-// the first indented by `indent` blanks.
-std::string wrapped(std::string_view text, std::size_t indent, std::size_t first_indent) {
-  std::string out, line;
-  std::size_t limit = width - first_indent;
-  auto flush = [&] {
-    out += line;
-    out += '\n';
-    out.append(indent, ' ');
-    line.clear();
-    limit = width - indent;
-  };
-  std::size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && text[i] == ' ') ++i;
-    std::size_t j = text.find(' ', i);
-    if (j == std::string_view::npos) j = text.size();
-    std::string_view word = text.substr(i, j - i);
-    if (!line.empty() && line.size() + 1 + word.size() > limit) flush();
-    if (!line.empty()) line += ' ';
-    line += word;
-    i = j;
-  }
-  return out + line;
-}
-
 std::string make_overview() {
-  std::string text = R"(IGDS - Interactive Design of Interpolated Surfaces
-
-A surface is defined by a rectangular grid of input points: NOCUR
-curves crossing NOSTR stringers, with the tangents at the border of the
-grid. IGDS interpolates it with bicubic Coons patches, inserting INTCU
-curves and INTST stringers between the input ones, and shows
-projections of it. The commands, typed after READY:
-
-)";
+  std::string text =
+      "IGDS - Interactive Design of Interpolated Surfaces\n"
+      "\n"
+      "A surface is defined by a rectangular grid of input points: NOCUR curves crossing NOSTR "
+      "stringers, with the tangents at the border of the grid. IGDS interpolates it with "
+      "bicubic Coons patches, inserting INTCU curves and INTST stringers between the input "
+      "ones, and shows projections of it. The commands, typed after READY:\n"
+      "\n";
   // Each command's forms, then what it does in the column at 26.
   constexpr std::size_t column = 26;
   for (const Command* c : command_table()) {
@@ -72,29 +43,28 @@ projections of it. The commands, typed after READY:
         line.clear();
       }
       line.append(column - line.size(), ' ');
-      text += line + wrapped(c->summary, column, column) + "\n";
+      text += line + std::string(c->summary) + "\n";
     }
   }
-  text += R"(
-Any word may be cut short: the first entry of the list that starts
-with the letters typed wins (S is STORE, SA is SAVE, D SU is DISPLAY
-SURFACE). What is not on the line is asked for. Numbers may be written
-the APL way (¯3.5 is minus 3.5). Lines starting with * or ⍝ are
-comments. Ctrl-C gives up the command in progress. HELP SHORT makes
-HELP answer in a line or two, HELP LONG in full (the setting is kept
-from one session to the next).
-
-A small session:
-  BUILD
-  NUMBER OF CURVES AND STRINGERS? 2 2
-  POINTS? 1 0 0 0  0 10 0  10 0 0  10 10 5
-  POINTS?
-  TANGENTS?
-  INTERPOLATED CURVES AND STRINGERS? 5 5
-  READY
-  DISPLAY SURFACE ASSONOMETRIC 110 130 120
-  READY
-  SAVE TWIST)";
+  text +=
+      "\n"
+      "Any word may be cut short: the first entry of the list that starts with the letters "
+      "typed wins (S is STORE, SA is SAVE, D SU is DISPLAY SURFACE). What is not on the line is "
+      "asked for. Numbers may be written the APL way (¯3.5 is minus 3.5). Lines starting with * "
+      "or ⍝ are comments. Ctrl-C gives up the command in progress. HELP SHORT makes HELP answer "
+      "in a line or two, HELP LONG in full (the setting is kept from one session to the next).\n"
+      "\n"
+      "A small session:\n"
+      "  BUILD\n"
+      "  NUMBER OF CURVES AND STRINGERS? 2 2\n"
+      "  POINTS? 1 0 0 0  0 10 0  10 0 0  10 10 5\n"
+      "  POINTS?\n"
+      "  TANGENTS?\n"
+      "  INTERPOLATED CURVES AND STRINGERS? 5 5\n"
+      "  READY\n"
+      "  DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"
+      "  READY\n"
+      "  SAVE TWIST";
   return text;
 }
 
@@ -121,8 +91,8 @@ void run_help(Context& ctx, const Choice* option) {
     names += names.empty() ? "" : " ";
     names += command->name;
   }
-  ctx.say(wrapped("Type a command: " + names + ".", 0, 0));
-  ctx.say("A first letter is enough (S is STORE); HELP LONG explains them all.");
+  ctx.document("Type a command: " + names +
+               ".\nA first letter is enough (S is STORE); HELP LONG explains them all.");
   say_surface_modes(ctx, ws);
 }
 
@@ -179,17 +149,18 @@ extern const Command help_command{
     // No question: HELP alone answers in the length in force (STATUS[1]).
     .option_prompt = {},
     .summary = "explains what is awaited, in a line or two or in full",
-    .long_help = R"(HELP explains. At READY it lists the commands (SHORT) or explains
-IGDS and every command (LONG); at any question it says what the
-question awaits (SHORT) or explains the command being run (LONG).
-
-  HELP        answers in the length in force
-  HELP SHORT  a line or two, and keeps to that from now on
-  HELP LONG   in full, and keeps to that from now on
-
-The length in force is STATUS[1] (1 LONG, 0 SHORT): LONG in a very
-first session, then whatever was chosen last, from one session to the
-next. After the answer the same question is asked again.)",
+    .long_help =
+        "HELP explains. At READY it lists the commands (SHORT) or explains IGDS and every command "
+        "(LONG); at any question it says what the question awaits (SHORT) or explains the command "
+        "being run (LONG).\n"
+        "\n"
+        "  HELP        answers in the length in force\n"
+        "  HELP SHORT  a line or two, and keeps to that from now on\n"
+        "  HELP LONG   in full, and keeps to that from now on\n"
+        "\n"
+        "The length in force is STATUS[1] (1 LONG, 0 SHORT): LONG in a very first session, then "
+        "whatever was chosen last, from one session to the next. After the answer the same "
+        "question is asked again.",
     .questions = {},
     .run = run_help,
 };

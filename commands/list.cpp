@@ -193,33 +193,30 @@ extern const Command list_command{
     .options = options,
     .follows = {},
     .option_prompt = {"POINTS, TANGENTS, SURFACE, FILES OR IMAGES?",
-                      "POINTS, TANGENTS or SURFACE: the current surface; FILES: the disk;\n"
+                      "POINTS, TANGENTS or SURFACE: the current surface; FILES: the disk; "
                       "IMAGES: the current image and the copies of STORE FIRST and SECOND.",
                       options},
     .summary = "lists the points, the tangents, the surface, the files or the images",
-    .long_help = R"(LIST writes what the workspace or the disk holds, as text (a long
-listing is shown a page at a time, as HELP LONG is). Nothing changes.
-
-  LIST POINTS    the input points, curve by curve: the point number K
-                 (the number CHANGE POINTS asks for), its curve, its
-                 place on the curve, and x y z
-  LIST TANGENTS  the border tangents: the point number, its curve and
-                 place, along the CURVE or the STRINGER, and x y z
-  LIST SURFACE   NOCUR NOSTR INTCU INTST, the sizes of the patches and
-                 of the interpolated grid, how the tangents and the
-                 twists were chosen
-  LIST FILES     the files on the disk, by type, with their sizes and
-                 the dates they were last written
-  LIST IMAGES    what the current image, FIRST and SECOND hold: what
-                 they show, the projection, their size, the file they
-                 came from, the window of a ZOOM
-
-POINTS, TANGENTS and SURFACE say INPUT NOT FOUND when there is no
-current surface.
-
-Example (L P is LIST POINTS):
-  LIST POINTS
-  L F)",
+    .long_help =
+        "LIST writes what the workspace or the disk holds, as text (a long listing is shown a "
+        "page at a time, as HELP LONG is). Nothing changes.\n"
+        "\n"
+        "  LIST POINTS    the input points, curve by curve: the point number K (the number CHANGE "
+        "POINTS asks for), its curve, its place on the curve, and x y z\n"
+        "  LIST TANGENTS  the border tangents: the point number, its curve and place, along the "
+        "CURVE or the STRINGER, and x y z\n"
+        "  LIST SURFACE   NOCUR NOSTR INTCU INTST, the sizes of the patches and of the "
+        "interpolated grid, how the tangents and the twists were chosen\n"
+        "  LIST FILES     the files on the disk, by type, with their sizes and the dates they "
+        "were last written\n"
+        "  LIST IMAGES    what the current image, FIRST and SECOND hold: what they show, the "
+        "projection, their size, the file they came from, the window of a ZOOM\n"
+        "\n"
+        "POINTS, TANGENTS and SURFACE say INPUT NOT FOUND when there is no current surface.\n"
+        "\n"
+        "Example (L P is LIST POINTS):\n"
+        "  LIST POINTS\n"
+        "  L F",
     .questions = {},
     .run = run_list,
 };

@@ -1,5 +1,7 @@
 #include "commands/picture.h"
 
+#include "commands/context.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -272,14 +274,21 @@ void add_point_numbers(Drawing2& drawing, const Grid& g, const Box* window) {
       const std::string number = std::to_string(k);
       const double width = tek_screen::char_width * unit * static_cast<double>(number.size());
       // Towards the middle first; then the other corners; then a little farther from the point
-      // (beside a slanting border line).
+      // (beside a slanting border line); then straight above, below or beside it (in the angle
+      // two border lines make at a corner of the picture).
       const double sx = p.x <= mid_x ? 1 : -1, sy = p.y <= mid_y ? 1 : -1;
-      constexpr double steps[][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 1}, {1, 3}};
-      constexpr double sides[][2] = {{1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+      constexpr double steps[][2] = {{1, 1}, {2, 1}, {1, 2}, {2, 2}, {3, 1},
+                                     {1, 3}, {1, 4}, {4, 1}, {1, 6}, {6, 1}};
+      constexpr double sides[][2] = {{1, 1}, {-1, 1}, {1, -1}, {-1, -1},
+                                     {0, 1}, {0, -1}, {1, 0},  {-1, 0}};
       auto place_at = [&](const double* step, const double* side) {
         const double dx = sx * side[0], dy = sy * side[1];
-        const Point2 at{dx > 0 ? p.x + step[0] * gap : p.x - step[0] * gap - width,
-                        dy > 0 ? p.y + step[1] * gap + below : p.y - step[1] * gap - above};
+        const Point2 at{dx > 0   ? p.x + step[0] * gap
+                        : dx < 0 ? p.x - step[0] * gap - width
+                                 : p.x - width / 2,
+                        dy > 0   ? p.y + step[1] * gap + below
+                        : dy < 0 ? p.y - step[1] * gap - above
+                                 : p.y - (above - below) / 2};
         const Box cell{at.x - pad, at.y - below - pad, at.x + width + pad, at.y + above + pad};
         if (!free_room.free(cell)) return false;
         drawing.add_text(at, number, 1, {}, {Role::label, k});
@@ -474,6 +483,13 @@ Picture picture_of(const ImageRef& image) {
 
 Picture picture_of(const Image& image) {
   return picture_of(std::make_shared<const Image>(image));
+}
+
+void show_current_image(Context& ctx, const ImageRef& before) {
+  const ImageRef& now = ctx.workspace().image;
+  if (same_image(now, before)) return;
+  ctx.erase();
+  if (now) ctx.show(now);
 }
 
 }  // namespace igds

@@ -13,6 +13,10 @@
 #include "workspace/state.h"
 
 namespace igds {
+class Context;
+}
+
+namespace igds {
 
 // DISPLAY INPUT (desim.what == 0): the border of the NOCUR x NOSTR grid as one closed polyline,
 // each non-zero border tangent as an arrow (shaft and head, one polyline), the input points as
@@ -47,6 +51,11 @@ std::string zoom_words(const std::array<double, 4>& window);
 
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);
+
+// After a command that put back another state (UNDO, REDO): when the current image is no longer
+// `before`, the screen shows the one that is (a clean page, as ZOOM's), or nothing when there is
+// none, so that what is shown is always what LIST IMAGES says is current.
+void show_current_image(Context& ctx, const ImageRef& before);
 
 // Arrow of a border tangent: the longest one is this fraction of the image's larger side.
 inline constexpr double arrow_fraction = 0.25;

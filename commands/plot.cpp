@@ -140,35 +140,33 @@ extern const Command plot_command{
     .options = options,
     .follows = {},
     .option_prompt = {"SELECTRIC OR EBCDIC?",
-                      "The keyboard of your terminal: SELECTRIC or EBCDIC (kept for the record;\n"
+                      "The keyboard of your terminal: SELECTRIC or EBCDIC (kept for the record; "
                       "the plot is the same).",
                       options},
     .bad_option = reports::incorrect_command,  // the manual's 4.5
     .summary = "draws the current image on the HP plotter",
-    .long_help = R"(PLOT draws the current image (the one last displayed) on a pen
-plotter that speaks HP-GL (HP 7475A and its kin), with its description
-beside it, as large as the paper allows, aspect kept, centred on a
-landscape sheet.
-
-  PLOT SELECTRIC  the option named the keyboard of the 1975 terminal
-  PLOT EBCDIC     (the = sign on the left or on the right); it is
-                  recorded in STATUS but no longer changes the output.
-
-Where the plot goes is chosen when igds starts:
-  (default)               a new file PLOTnnnn.HPGL on the disk
-  --plotter tty           the plotter wired on the terminal line
-  --plotter PATH          a file (each plot appended) or a device
-                          (/dev/ttyUSB0)
-  --paper A4|A3|LETTER|B  the paper in the plotter (A4 unless told)
-
-After each plot igds says how many vectors were drawn, how often the
-pen was lifted, how far it travelled lifted, and how many bytes were
-sent. The pen order is chosen to keep that travel short. With no
-current image PLOT says IMAGE NOT FOUND.
-
-Example (P S is PLOT SELECTRIC):
-  DISPLAY SURFACE ASSONOMETRIC 110 130 120
-  P S)",
+    .long_help =
+        "PLOT draws the current image (the one last displayed) on a pen plotter that speaks HP-GL "
+        "(HP 7475A and its kin), with its description beside it, as large as the paper allows, "
+        "aspect kept, centred on a landscape sheet.\n"
+        "\n"
+        "  PLOT SELECTRIC  the option named the keyboard of the 1975 terminal\n"
+        "  PLOT EBCDIC     (the = sign on the left or on the right); it is recorded in STATUS but "
+        "no longer changes the output.\n"
+        "\n"
+        "Where the plot goes is chosen when igds starts:\n"
+        "  (default)               a new file PLOTnnnn.HPGL on the disk\n"
+        "  --plotter tty           the plotter wired on the terminal line\n"
+        "  --plotter PATH          a file (each plot appended) or a device (/dev/ttyUSB0)\n"
+        "  --paper A4|A3|LETTER|B  the paper in the plotter (A4 unless told)\n"
+        "\n"
+        "After each plot igds says how many vectors were drawn, how often the pen was lifted, how "
+        "far it travelled lifted, and how many bytes were sent. The pen order is chosen to keep "
+        "that travel short. With no current image PLOT says IMAGE NOT FOUND.\n"
+        "\n"
+        "Example (P S is PLOT SELECTRIC):\n"
+        "  DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"
+        "  P S",
     .questions = {},
     .run = run_plot,
 };

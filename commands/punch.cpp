@@ -18,7 +18,7 @@ using exchange::TapeError;
 constexpr std::size_t mpdp_patches = 10;
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the tape: 1 to 8 letters, digits or $ # @ + - _ (type\n"
+                         "A name for the tape: 1 to 8 letters, digits or $ # @ + - _ (type "
                          "MPDPTAPE; a file of that name is replaced)."};
 
 void run_punch(Context& ctx, const Choice*) {
@@ -60,32 +60,31 @@ extern const Command punch_command{
     .follows = "[name]",
     .option_prompt = {},
     .summary = "punches PATCHES on the MPDP paper tape NAME.MPDPTAPE",
-    .long_help = R"(PUNCH writes the patches of the current surface to NAME.MPDPTAPE, the
-8-track paper tape that Marks's CADA/REM/BINARY punched for the PDP-7
-Multi-Patch Design Program (MPDP), one frame a byte:
-
-  - every number is 18 bits in three frames, most significant six bits
-    first, each frame with its two leftmost holes: 300 octal + 6 bits;
-    negative numbers in two's complement; values rounded to integers
-  - per patch, row by row, 54 numbers: the patch number, the internal
-    lines (0), four zeros, then B (Marks's layout of the patch matrix)
-    for x, y and z, 16 numbers each, row by row, with MPDP's signs:
-    S_V, SE_V, E_H and SE_H change sign
-  - the tape ends with 777777 octal
-
-A number outside -131072 to 131071 cannot be punched: PUNCH names the
-patch and writes nothing (scale the surface down first). The PDP-7
-held about ten patches at a time: PUNCH says so when there are more.
-A single curve or stringer has no patches. A file of the same name is
-replaced.
-
-  INPUT NOT FOUND       there is no current surface
-  INCORRECT PARAMETER   the name is not such a name
-
-Example (PU is PUNCH; P stays PLOT):
-  PU SPHERE
-  SPHERE.MPDPTAPE: 16 PATCHES, 2595 FRAMES
-  MPDP HOLDS ABOUT 10 PATCHES AT A TIME)",
+    .long_help =
+        "PUNCH writes the patches of the current surface to NAME.MPDPTAPE, the 8-track paper tape "
+        "that Marks's CADA/REM/BINARY punched for the PDP-7 Multi-Patch Design Program (MPDP), "
+        "one frame a byte:\n"
+        "\n"
+        "  - every number is 18 bits in three frames, most significant six bits first, each frame "
+        "with its two leftmost holes: 300 octal + 6 bits; negative numbers in two's complement; "
+        "values rounded to integers\n"
+        "  - per patch, row by row, 54 numbers: the patch number, the internal lines (0), four "
+        "zeros, then B (Marks's layout of the patch matrix) for x, y and z, 16 numbers each, row "
+        "by row, with MPDP's signs: S_V, SE_V, E_H and SE_H change sign\n"
+        "  - the tape ends with 777777 octal\n"
+        "\n"
+        "A number outside -131072 to 131071 cannot be punched: PUNCH names the patch and writes "
+        "nothing (scale the surface down first). The PDP-7 held about ten patches at a time: "
+        "PUNCH says so when there are more. A single curve or stringer has no patches. A file of "
+        "the same name is replaced.\n"
+        "\n"
+        "  INPUT NOT FOUND       there is no current surface\n"
+        "  INCORRECT PARAMETER   the name is not such a name\n"
+        "\n"
+        "Example (PU is PUNCH; P stays PLOT):\n"
+        "  PU SPHERE\n"
+        "  SPHERE.MPDPTAPE: 16 PATCHES, 2595 FRAMES\n"
+        "  MPDP HOLDS ABOUT 10 PATCHES AT A TIME",
     .questions = questions,
     .run = run_punch,
 };

@@ -35,7 +35,8 @@ Report worded(const DataError& e) {
     case P::missing:
       return Report(reports::incorrect_entry, fmt::format("{} NOT FOUND", e.variable));
     case P::grid_too_small:
-      return Report(reports::incorrect_parameter, "NOCUR AND NOSTR MUST BE AT LEAST 2");
+      return Report(reports::incorrect_parameter,
+                    "NOCUR AND NOSTR MUST BE AT LEAST 1, AND THE GRID HAVE TWO POINTS");
     case P::negative_density:
       return Report(reports::incorrect_parameter, "INTCU AND INTST MUST NOT BE NEGATIVE");
     case P::too_many_points:

@@ -10,7 +10,7 @@ namespace igds {
 namespace {
 
 const Prompt file_prompt{"FILE NAME?",
-                         "The name of a file saved with SAVE: 1 to 8 letters, digits or\n"
+                         "The name of a file saved with SAVE: 1 to 8 letters, digits or "
                          "$ # @ + - _ (type IGDSDATA)."};
 
 void run_restore(Context& ctx, const Choice*) {
@@ -31,25 +31,24 @@ extern const Command restore_command{
     .follows = "[name]",
     .option_prompt = {},
     .summary = "makes NAME.IGDSDATA the current surface",
-    .long_help = R"(RESTORE reads the file NAME.IGDSDATA from the disk, written earlier
-by SAVE, and makes the surface in it the current surface: the input
-points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches and the
-interpolated grid. The current image, the stored copies and the HELP
-setting are not changed. Afterwards IGDS shows the numbers of curves
-and stringers and the grid.
-
-The name may follow the command; otherwise IGDS asks for it. A name is
-1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same
-file).
-
-  INCORRECT PARAMETER   the name is not such a name
-  FILE NOT FOUND        there is no NAME.IGDSDATA on the disk
-  FILE DAMAGED: ...     the file is not a good IGDSDATA file; the
-                        current surface is kept
-
-Example:
-  RESTORE HULL
-  NOCUR 4 NOSTR 5 INTCU 3 INTST 3)",
+    .long_help =
+        "RESTORE reads the file NAME.IGDSDATA from the disk, written earlier by SAVE, and makes "
+        "the surface in it the current surface: the input points and tangents, NOCUR, NOSTR, "
+        "INTCU, INTST, the patches and the interpolated grid. The current image, the stored "
+        "copies and the HELP setting are not changed. Afterwards IGDS shows the numbers of curves "
+        "and stringers and the grid.\n"
+        "\n"
+        "The name may follow the command; otherwise IGDS asks for it. A name is 1 to 8 letters, "
+        "digits or $ # @ + - _ (HULL and hull are the same file).\n"
+        "\n"
+        "  INCORRECT PARAMETER   the name is not such a name\n"
+        "  FILE NOT FOUND        there is no NAME.IGDSDATA on the disk\n"
+        "  FILE DAMAGED: ...     the file is not a good IGDSDATA file; the current surface is "
+        "kept\n"
+        "\n"
+        "Example:\n"
+        "  RESTORE HULL\n"
+        "  NOCUR 4 NOSTR 5 INTCU 3 INTST 3",
     .questions = questions,
     .run = run_restore,
 };

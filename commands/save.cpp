@@ -10,7 +10,7 @@ namespace igds {
 namespace {
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the surface file: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "A name for the surface file: 1 to 8 letters, digits or $ # @ + - _ "
                          "(type IGDSDATA; a file of that name is replaced)."};
 
 void run_save(Context& ctx, const Choice*) {
@@ -32,26 +32,22 @@ extern const Command save_command{
     .follows = "[name]",
     .option_prompt = {},
     .summary = "writes the current surface into NAME.IGDSDATA",
-    .long_help = R"(SAVE writes the current surface to the file NAME.IGDSDATA on the disk:
-the input points and tangents, NOCUR, NOSTR, INTCU, INTST, the patches
-and the interpolated grid, exactly (RESTORE gives back the very same
-numbers). A file of the same name is replaced, and SAVE says so
-(HULL.IGDSDATA REPLACED); the file is written whole or not at all.
-These files are an archive of surfaces; RESTORE makes one current
-again.
-
-The name may follow the command; otherwise IGDS asks for it. A name is
-1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same
-file).
-
-  INPUT NOT FOUND       there is no current surface (BUILD or RESTORE
-                        first)
-  INCORRECT PARAMETER   the name is not such a name
-  CANNOT WRITE ...      the disk refused (full, say); nothing was
-                        changed
-
-Example (SA is the shortest abbreviation: S is STORE):
-  SA HULL)",
+    .long_help =
+        "SAVE writes the current surface to the file NAME.IGDSDATA on the disk: the input points "
+        "and tangents, NOCUR, NOSTR, INTCU, INTST, the patches and the interpolated grid, exactly "
+        "(RESTORE gives back the very same numbers). A file of the same name is replaced, and "
+        "SAVE says so (HULL.IGDSDATA REPLACED); the file is written whole or not at all. These "
+        "files are an archive of surfaces; RESTORE makes one current again.\n"
+        "\n"
+        "The name may follow the command; otherwise IGDS asks for it. A name is 1 to 8 letters, "
+        "digits or $ # @ + - _ (HULL and hull are the same file).\n"
+        "\n"
+        "  INPUT NOT FOUND       there is no current surface (BUILD or RESTORE first)\n"
+        "  INCORRECT PARAMETER   the name is not such a name\n"
+        "  CANNOT WRITE ...      the disk refused (full, say); nothing was changed\n"
+        "\n"
+        "Example (SA is the shortest abbreviation: S is STORE):\n"
+        "  SA HULL",
     .questions = questions,
     .run = run_save,
 };

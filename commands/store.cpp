@@ -18,7 +18,7 @@ constexpr Choice options[] = {
 };
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the image file: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "A name for the image file: 1 to 8 letters, digits or $ # @ + - _ "
                          "(type IGDSIMAG; a file of that name is replaced)."};
 
 void run_store(Context& ctx, const Choice* option) {
@@ -44,28 +44,27 @@ extern const Command store_command{
     .options = options,
     .follows = {},
     .option_prompt = {"FIRST, SECOND OR FILE?",
-                      "FIRST or SECOND: keep the current image in memory; FILE: keep it in a\n"
+                      "FIRST or SECOND: keep the current image in memory; FILE: keep it in a "
                       "file on the disk.",
                       options},
     .summary = "keeps a copy of the current image in memory or in NAME.IGDSIMAG",
-    .long_help = R"(STORE keeps a copy of the current image (the one last displayed), so
-that DISPLAY can show it again later without projecting anything.
-
-  STORE FIRST        the first copy in memory (DISPLAY FIRST shows it)
-  STORE SECOND       the second copy in memory (DISPLAY SECOND shows it)
-  STORE FILE [name]  the file NAME.IGDSIMAG on the disk (DISPLAY FILE
-                     name shows it); a file of the same name is
-                     replaced, and STORE says so.
-
-The copies in memory are part of the session: they are still there
-next time. With no current image STORE says IMAGE NOT FOUND; a name
-that is not 1 to 8 letters, digits or $ # @ + - _ gets INCORRECT
-PARAMETER.
-
-Example (S FI is STORE FIRST, S FIL is STORE FILE):
-  DISPLAY SURFACE ORTHOGONAL XY
-  S FI
-  STORE FILE TOPVIEW)",
+    .long_help =
+        "STORE keeps a copy of the current image (the one last displayed), so that DISPLAY can "
+        "show it again later without projecting anything.\n"
+        "\n"
+        "  STORE FIRST        the first copy in memory (DISPLAY FIRST shows it)\n"
+        "  STORE SECOND       the second copy in memory (DISPLAY SECOND shows it)\n"
+        "  STORE FILE [name]  the file NAME.IGDSIMAG on the disk (DISPLAY FILE name shows it); a "
+        "file of the same name is replaced, and STORE says so.\n"
+        "\n"
+        "The copies in memory are part of the session: they are still there next time. With no "
+        "current image STORE says IMAGE NOT FOUND; a name that is not 1 to 8 letters, digits or $ "
+        "# @ + - _ gets INCORRECT PARAMETER.\n"
+        "\n"
+        "Example (S FI is STORE FIRST, S FIL is STORE FILE):\n"
+        "  DISPLAY SURFACE ORTHOGONAL XY\n"
+        "  S FI\n"
+        "  STORE FILE TOPVIEW",
     .questions = questions,
     .run = run_store,
 };

@@ -34,13 +34,13 @@ constexpr Choice planes[] = {
 };
 
 const Prompt conic_prompt{"VIEW POINT X Y Z?",
-                          "The eye's position x y z, outside the surface; the picture looks\n"
+                          "The eye's position x y z, outside the surface; the picture looks "
                           "at the centre of the input points."};
 const Prompt isometric_prompt{"AXIS AND ANGLE?",
-                              "The axis to drop (1 x, 2 y, 3 z) and the angle of its\n"
+                              "The axis to drop (1 x, 2 y, 3 z) and the angle of its "
                               "projection, 0 to 90 degrees."};
 const Prompt assonometric_prompt{"THREE ANGLES?",
-                                 "The angles between the projected x-y, y-z and z-x axes, each\n"
+                                 "The angles between the projected x-y, y-z and z-x axes, each "
                                  "between 90 and 180, sum 360 (try 110 130 120)."};
 const Prompt orthogonal_prompt{"PLANE XY, YZ OR XZ?", "The plane to project on: XY, YZ or XZ.",
                                planes};
@@ -58,7 +58,7 @@ std::vector<double> numbers(std::span<const std::string> words) {
 }  // namespace
 
 const Prompt projection_prompt{"PROJECTION?",
-                               "CONIC, ISOMETRIC, ASSONOMETRIC or ORTHOGONAL (abbreviations\n"
+                               "CONIC, ISOMETRIC, ASSONOMETRIC or ORTHOGONAL (abbreviations "
                                "allowed); its parameters may follow.",
                                projections};
 

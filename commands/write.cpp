@@ -10,7 +10,7 @@ namespace igds {
 namespace {
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the character file: 1 to 8 letters, digits or $ # @ + - _\n"
+                         "A name for the character file: 1 to 8 letters, digits or $ # @ + - _ "
                          "(type IGDSCHAR; a file of that name is replaced)."};
 
 void run_write(Context& ctx, const Choice*) {
@@ -35,32 +35,31 @@ extern const Command write_command{
     .follows = "[name]",
     .option_prompt = {},
     .summary = "writes the current surface as card images into NAME.IGDSCHAR",
-    .long_help = R"(WRITE writes the current surface to the character file NAME.IGDSCHAR
-on the disk, in card images that a FORTRAN program (or any other) can
-read with these formats, one group after the other:
-
-  (10I5)    STATUS
-  (4I5)     NOCUR NOSTR INTCU INTST
-  (2I5)     the shape of INPPN,   then (8F10.3) INPPN, 8 numbers a card
-  (2I5)     the shape of INPTG,   then (8F10.3) INPTG
-  (3I5)     the shape of INTPN,   then (8F10.3) INTPN
-  (5I5)     the shape of PATCHES, then (8F10.3) PATCHES
-
-Values are rounded to 3 decimals. A value that needs more than 10
-columns (1000000 or more, -100000 or less) is written as ten
-asterisks, as FORTRAN does, and WRITE says how many there are; SAVE
-keeps every value exactly. A file of the same name is replaced, and
-WRITE says so (HULL.IGDSCHAR REPLACED).
-
-The name may follow the command; otherwise IGDS asks for it. A name is
-1 to 8 letters, digits or $ # @ + - _ (HULL and hull are the same
-file).
-
-  INPUT NOT FOUND       there is no current surface
-  INCORRECT PARAMETER   the name is not such a name
-
-Example:
-  WRITE HULL)",
+    .long_help =
+        "WRITE writes the current surface to the character file NAME.IGDSCHAR on the disk, in "
+        "card images that a FORTRAN program (or any other) can read with these formats, one group "
+        "after the other:\n"
+        "\n"
+        "  (10I5)    STATUS\n"
+        "  (4I5)     NOCUR NOSTR INTCU INTST\n"
+        "  (2I5)     the shape of INPPN,   then (8F10.3) INPPN, 8 numbers a card\n"
+        "  (2I5)     the shape of INPTG,   then (8F10.3) INPTG\n"
+        "  (3I5)     the shape of INTPN,   then (8F10.3) INTPN\n"
+        "  (5I5)     the shape of PATCHES, then (8F10.3) PATCHES\n"
+        "\n"
+        "Values are rounded to 3 decimals. A value that needs more than 10 columns (1000000 or "
+        "more, -100000 or less) is written as ten asterisks, as FORTRAN does, and WRITE says how "
+        "many there are; SAVE keeps every value exactly. A file of the same name is replaced, and "
+        "WRITE says so (HULL.IGDSCHAR REPLACED).\n"
+        "\n"
+        "The name may follow the command; otherwise IGDS asks for it. A name is 1 to 8 letters, "
+        "digits or $ # @ + - _ (HULL and hull are the same file).\n"
+        "\n"
+        "  INPUT NOT FOUND       there is no current surface\n"
+        "  INCORRECT PARAMETER   the name is not such a name\n"
+        "\n"
+        "Example:\n"
+        "  WRITE HULL",
     .questions = questions,
     .run = run_write,
 };

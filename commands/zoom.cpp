@@ -27,11 +27,11 @@ namespace {
 using Window = std::array<double, 4>;
 
 const Prompt first_corner{"FIRST CORNER?",
-                          "Point at one corner of the part to show with the cross-hair and press\n"
-                          "a key (or type its screen address: X 0..1023, Y 0..779)."};
+                          "Point at one corner of the part to show with the cross-hair and click "
+                          "(or type its screen address X Y: X 0..1023, Y 0..779)."};
 const Prompt second_corner{"SECOND CORNER?",
-                           "Point at the opposite corner with the cross-hair and press a key (or\n"
-                           "type its screen address: X 0..1023, Y 0..779)."};
+                           "Point at the opposite corner with the cross-hair and click (or type "
+                           "its screen address X Y: X 0..1023, Y 0..779)."};
 
 constexpr Choice pick_word[] = {{"PICK", 0, {}, "two corners picked with the cross-hair"}};
 
@@ -150,32 +150,30 @@ extern const Command zoom_command{
     .follows = "[x0 y0 x1 y1 | factor [x y] | PICK]",
     .option_prompt = {},
     .summary = "shows a part of the current image larger, or the whole image again",
-    .long_help = R"(ZOOM shows a part of the current image larger: the part inside a
-window is scaled to the picture's square and everything outside it is
-cut away, on a clean screen (unlike DISPLAY, which draws over what is
-there). The description beside the picture says ZOOMED. Coordinates
-are those of the image (the projected x y, as LIST IMAGES and the
-none terminal's IMAGE line show them).
-
-  ZOOM x0 y0 x1 y1   the window with corners x0 y0 and x1 y1
-  ZOOM f [x y]       the whole image f times larger, centred on x y
-                     (without them, on the centre of what is shown)
-  ZOOM PICK          the window's two corners picked on the Tektronix
-                     screen with the cross-hair (FIRST CORNER?,
-                     SECOND CORNER?); from a command file, each as a
-                     screen address X Y
-  ZOOM               the whole image again
-
-The zoomed image is the current image: STORE FIRST keeps it zoomed,
-EXPORT and PLOT draw it zoomed. The window is not written to the disk:
-STORE FILE and the session keep the whole image. With no current
-image ZOOM says IMAGE NOT FOUND.
-
-Example (Z is ZOOM):
-  DISPLAY INPUT ORTHOGONAL XY
-  ZOOM 0 0 30 10
-  ZOOM 4 45 0
-  ZOOM)",
+    .long_help =
+        "ZOOM shows a part of the current image larger: the part inside a window is scaled to the "
+        "picture's square and everything outside it is cut away, on a clean screen (unlike "
+        "DISPLAY, which draws over what is there). The description beside the picture says "
+        "ZOOMED. Coordinates are those of the image (the projected x y, as LIST IMAGES and the "
+        "none terminal's IMAGE line show them).\n"
+        "\n"
+        "  ZOOM x0 y0 x1 y1   the window with corners x0 y0 and x1 y1\n"
+        "  ZOOM f [x y]       the whole image f times larger, centred on x y (without them, on "
+        "the centre of what is shown)\n"
+        "  ZOOM PICK          the window's two corners picked on the Tektronix screen with the "
+        "cross-hair (FIRST CORNER?, SECOND CORNER?); from a command file, each as a screen "
+        "address X Y\n"
+        "  ZOOM               the whole image again\n"
+        "\n"
+        "The zoomed image is the current image: STORE FIRST keeps it zoomed, EXPORT and PLOT draw "
+        "it zoomed. The window is not written to the disk: STORE FILE and the session keep the "
+        "whole image. With no current image ZOOM says IMAGE NOT FOUND.\n"
+        "\n"
+        "Example (Z is ZOOM):\n"
+        "  DISPLAY INPUT ORTHOGONAL XY\n"
+        "  ZOOM 0 0 30 10\n"
+        "  ZOOM 4 45 0\n"
+        "  ZOOM",
     .questions = questions,
     .run = run_zoom,
 };

@@ -1,13 +1,28 @@
 #include "devices/gin.h"
 
+#include <cstdlib>
+
 namespace igds {
+
+namespace {
+
+bool address_byte(char c) {
+  const auto b = static_cast<unsigned char>(c);
+  return b >= 0x20 && b <= 0x3F;
+}
+
+bool carriage_return(char c) {
+  return c == '\r' || c == '\n';
+}
+
+}  // namespace
 
 std::optional<GinReport> decode_gin(std::string_view bytes, int bits) {
   if (bytes.size() < 5) return std::nullopt;
   int five[4];
   for (int i = 0; i < 4; ++i) {
-    const auto b = static_cast<unsigned char>(bytes[static_cast<std::size_t>(i) + 1]);
-    if (b < 0x20 || b > 0x3F) return std::nullopt;  // not an address byte of a report
+    const char b = bytes[static_cast<std::size_t>(i) + 1];
+    if (!address_byte(b)) return std::nullopt;  // not an address byte of a report
     five[i] = b & 0x1F;
   }
   GinReport report;
@@ -21,11 +36,94 @@ std::optional<GinReport> decode_gin(std::string_view bytes, int bits) {
     report.y = report.y * 4 + 2;
   }
   report.used = 5;
-  if (bytes.size() > 5 && (bytes[5] == '\r' || bytes[5] == '\n')) {
+  if (bytes.size() > 5 && carriage_return(bytes[5])) {
     report.used = 6;
     if (bytes.size() > 6 && bytes[6] == '\x04') report.used = 7;
   }
   return report;
+}
+
+std::string gin_address(int x, int y) {
+  return {static_cast<char>(0x20 | ((x >> 5) & 0x1F)), static_cast<char>(0x20 | (x & 0x1F)),
+          static_cast<char>(0x20 | ((y >> 5) & 0x1F)), static_cast<char>(0x20 | (y & 0x1F))};
+}
+
+GinReader::GinReader(int mark_x, int mark_y, int bits)
+    : mark_(gin_address(mark_x, mark_y)), bits_(bits) {}
+
+void GinReader::feed(std::string_view bytes) {
+  bytes_ += bytes;
+  scan();
+}
+
+void GinReader::settle() {
+  if (mark_end_ == npos || terminator_ >= 0) return;
+  // Whatever terminator bytes have come are all there is.
+  terminator_ = mark_end_ < bytes_.size() ? 1 : 0;
+  searched_ = mark_end_ + static_cast<std::size_t>(terminator_);
+  scan();
+}
+
+std::string_view GinReader::ahead() const {
+  return std::string_view(bytes_).substr(0, mark_at_ == npos ? 0 : mark_at_);
+}
+
+std::string_view GinReader::rest() const {
+  return report_ ? std::string_view(bytes_).substr(report_end_) : std::string_view{};
+}
+
+std::string_view GinReader::after_mark() const {
+  if (!marked()) return {};
+  return std::string_view(bytes_).substr(mark_end_ + static_cast<std::size_t>(terminator_));
+}
+
+void GinReader::scan() {
+  if (mark_end_ == npos) {
+    // The mark: a status byte (printable), then exactly the address igds put the cursor at.
+    for (std::size_t at = 0; at + 5 <= bytes_.size(); ++at) {
+      const auto status = static_cast<unsigned char>(bytes_[at]);
+      if (status >= 0x20 && status < 0x7F && bytes_.compare(at + 1, 4, mark_) == 0) {
+        mark_at_ = at;
+        mark_end_ = at + 5;
+        break;
+      }
+    }
+    if (mark_end_ == npos) return;
+  }
+  if (terminator_ < 0) {
+    // The terminator: CR (or LF), then perhaps EOT; decided once the byte after each has come.
+    const std::size_t n = bytes_.size();
+    if (n == mark_end_) return;
+    if (!carriage_return(bytes_[mark_end_])) {
+      terminator_ = 0;
+    } else {
+      if (n == mark_end_ + 1) return;
+      terminator_ = bytes_[mark_end_ + 1] == '\x04' ? 2 : 1;
+    }
+    searched_ = mark_end_ + static_cast<std::size_t>(terminator_);
+  }
+  if (report_) return;
+  const std::size_t length = 5 + static_cast<std::size_t>(terminator_);
+  while (searched_ + length <= bytes_.size()) {
+    const std::string_view candidate = std::string_view(bytes_).substr(searched_, length);
+    bool whole = true;
+    for (std::size_t i = 1; i < 5; ++i) whole = whole && address_byte(candidate[i]);
+    if (terminator_ >= 1) whole = whole && carriage_return(candidate[5]);
+    if (terminator_ == 2) whole = whole && candidate[6] == '\x04';
+    if (whole) {
+      report_ = decode_gin(candidate.substr(0, 5), bits_);
+      report_->used = length;
+      report_end_ = searched_ + length;
+      return;
+    }
+    ++searched_;  // a byte that begins no report: a key that sends none (an arrow's sequence)
+  }
+}
+
+bool second_click(const GinReport& first, std::chrono::steady_clock::time_point first_at,
+                  const GinReport& next, std::chrono::steady_clock::time_point next_at) {
+  return first.button && next.button && first.key == next.key && std::abs(first.x - next.x) <= 8 &&
+         std::abs(first.y - next.y) <= 8 && next_at - first_at < double_click;
 }
 
 }  // namespace igds

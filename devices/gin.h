@@ -2,11 +2,15 @@
 // the key pressed, then the cross-hair's position as four address bytes HiX LoX HiY LoY (five
 // bits each, 0x20 | bits), then the terminator xterm's ginTerminator resource asks for: none,
 // CR, or CR EOT. xterm sends a mouse button as its letter with the high bit set (l m r, 0xEC
-// 0xED 0xF2) and the position in 10-bit units whatever the window's size (Tekproc.c, TekEnq).
+// 0xED 0xF2), a key as its first byte, and the position in 10-bit units whatever the window's
+// size; it leaves GIN mode with the report, and on any control character it is sent
+// (docs/devices.md, "The cross-hair").
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace igds {
@@ -25,5 +29,62 @@ struct GinReport {
 // the address is the terminator and counted in `used` (a LF for the CR too: a tty with ICRNL
 // makes one of it); anything else is left for what follows.
 std::optional<GinReport> decode_gin(std::string_view bytes, int bits = 10);
+
+// The four address bytes of a position in 4013 points, as a report or ESC ENQ's answer has them.
+std::string gin_address(int x, int y);
+
+// What the terminal sends while igds waits at a cross-hair question, read in step whatever else
+// arrives and however it is cut into reads. Just before GIN mode igds puts the alpha cursor at a
+// place of its choice and asks for the terminal's status (ESC ENQ): the answer, a status byte
+// and that place's address, is the mark. Bytes before it are keys typed before the cross-hair
+// was up; after it comes the report (bytes before the report that cannot begin one are keys
+// that send no report, such as the arrows, and are dropped); what follows the report was typed
+// after it. The mark also tells which terminator the terminal ends its answers with.
+class GinReader {
+ public:
+  // `mark_x`, `mark_y`: where the alpha cursor was put, in 4013 points.
+  GinReader(int mark_x, int mark_y, int bits);
+
+  // Bytes as they arrive.
+  void feed(std::string_view bytes);
+  // Nothing more came for a while where the mark's terminator might still follow: it has none,
+  // or only the CR of CR EOT.
+  void settle();
+
+  bool marked() const { return mark_end_ != npos && terminator_ >= 0; }
+  // The mark has been read, up to where its terminator may still follow: wait a moment (then
+  // settle()) rather than for ever.
+  bool unsettled() const { return mark_end_ != npos && terminator_ < 0; }
+  bool done() const { return report_.has_value(); }
+
+  // The bytes before the mark (known as soon as the mark is found).
+  std::string_view ahead() const;
+  const std::optional<GinReport>& report() const { return report_; }
+  // The bytes after the report.
+  std::string_view rest() const;
+  // The bytes after the mark and its terminator, report or not.
+  std::string_view after_mark() const;
+  // The terminator's length, 0 to 2 (-1 until it is known).
+  int terminator() const { return terminator_; }
+
+ private:
+  static constexpr std::size_t npos = std::string::npos;
+  void scan();
+
+  std::string mark_;  // the mark's address bytes
+  int bits_;
+  std::string bytes_;
+  std::size_t mark_at_ = npos, mark_end_ = npos;  // the mark's status byte; just after its address
+  int terminator_ = -1;
+  std::size_t searched_ = 0;  // where the report is looked for from
+  std::optional<GinReport> report_;
+  std::size_t report_end_ = 0;
+};
+
+// Two clicks of one button, at one place, less than `interval` apart: a double click, which
+// chooses once (xterm reports each click that finds GIN mode on).
+inline constexpr std::chrono::milliseconds double_click{400};
+bool second_click(const GinReport& first, std::chrono::steady_clock::time_point first_at,
+                  const GinReport& next, std::chrono::steady_clock::time_point next_at);
 
 }  // namespace igds

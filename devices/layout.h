@@ -1,4 +1,4 @@
-// The layout of a DISPLAY on the Tek screen (spec tek4013.md, Layout of a DISPLAY), shared by
+// The layout of a DISPLAY on the Tek screen (docs/devices.md, "Tektronix 4013"), shared by
 // the 4013 stream and the SVG so that both carry the same coordinates.
 #pragma once
 

@@ -53,7 +53,7 @@ Drawing2 menu_drawing(const MenuLayout& layout, std::span<const std::string> lab
     const double corners[] = {b.x0, b.y0, b.x1, b.y0, b.x1, b.y1, b.x0, b.y1};
     d.add_polyline(Drawing2::View(corners, 4, 2), {}, id, true);
     // The label's cell (4 below its baseline to 16 above, 14 a character) clear of the edges.
-    d.add_text({b.x0 + 5, b.y0 + 5}, labels[k], 1, {}, id);
+    d.add_text({b.x0 + 6, b.y0 + 5}, labels[k], 1, {}, id);
   }
   return d;
 }

@@ -18,10 +18,12 @@ namespace igds {
 namespace menu_screen {
 inline constexpr int label_columns = 10;  // a label's characters ("D SURFACE", "ST SECOND")
 inline constexpr int item_height = 24;    // one alpha line (22) and a gap
-inline constexpr int box_width = label_columns * tek_screen::char_width + 10;
+// A label's ten cells and room around them: xterm draws a character with its font's glyph from
+// the start of its cell, and in a small window the glyph is wider than the scaled cell.
+inline constexpr int box_width = label_columns * tek_screen::char_width + 24;
 inline constexpr int gap = 4;       // between two columns of boxes
 inline constexpr int right = 1020;  // the menu's right edge
-inline constexpr int top = 766;     // the highest row xterm shows (spec tek4013.md)
+inline constexpr int top = 766;     // the highest row xterm shows (docs/devices.md)
 inline constexpr int bottom = 2;
 inline constexpr int rows = (top - bottom) / item_height;  // items in one column
 }  // namespace menu_screen

@@ -1,6 +1,6 @@
 // The characters beyond ASCII that igds may show on a Tektronix screen (the APL symbols, a few
 // signs of its texts), as strokes: the 4013 had an APL character set, xterm's Tek window shows
-// only ASCII (spec tek4013.md, xterm).
+// only ASCII (docs/devices.md, "The Tek screen").
 #pragma once
 
 #include <span>

@@ -69,6 +69,84 @@ std::string utf8(std::u32string_view text) {
   return out;
 }
 
+namespace {
+
+// Where the later rows of a paragraph start (lay_out).
+std::size_t hang_of(const std::u32string& p, std::size_t columns) {
+  std::size_t indent = 0;
+  while (indent < p.size() && blank(p[indent])) ++indent;
+  // A list's number: "1. ", "12) ".
+  std::size_t i = indent;
+  while (i < p.size() && p[i] >= U'0' && p[i] <= U'9') ++i;
+  if (i > indent && i + 1 < p.size() && (p[i] == U'.' || p[i] == U')') && blank(p[i + 1])) {
+    std::size_t text = i + 1;
+    while (text < p.size() && blank(p[text])) ++text;
+    return text;
+  }
+  // A term and its explanation, two blanks or more apart: the explanation's column, or four
+  // more than the term's when that would leave less than half the row.
+  const auto gap = indent > 0 ? p.find(U"  ", indent) : std::u32string::npos;
+  if (gap == std::u32string::npos) return std::min(indent, columns / 2);
+  std::size_t text = gap;
+  while (text < p.size() && blank(p[text])) ++text;
+  return text <= columns / 2 ? text : std::min(indent + 4, columns / 2);
+}
+
+}  // namespace
+
+std::vector<std::string> lay_out(std::string_view paragraphs, int columns) {
+  const auto width = static_cast<std::size_t>(std::max(columns, 8));
+  std::vector<std::string> rows;
+  // A text's last line end starts no empty line.
+  if (paragraphs.ends_with('\n')) paragraphs.remove_suffix(1);
+  if (paragraphs.empty()) return rows;
+  const std::u32string all = utf32(paragraphs);
+  std::size_t start = 0;
+  while (start <= all.size()) {
+    auto end = all.find(U'\n', start);
+    if (end == std::u32string::npos) end = all.size();
+    std::u32string p = all.substr(start, end - start);
+    while (!p.empty() && blank(p.back())) p.pop_back();
+    start = end + 1;
+    if (p.size() <= width) {
+      rows.push_back(utf8(p));
+      if (end == all.size()) break;
+      continue;
+    }
+    const std::size_t hang = hang_of(p, width);
+    std::u32string row;
+    std::size_t i = 0;
+    while (i < p.size() && blank(p[i])) row += p[i++];
+    while (i < p.size()) {
+      std::size_t j = i;
+      while (j < p.size() && !blank(p[j])) ++j;
+      std::u32string_view word(p.data() + i, j - i);
+      std::size_t k = j;
+      while (k < p.size() && blank(p[k])) ++k;
+      const std::u32string_view gap(p.data() + j, k - j);
+      if (row.size() + word.size() > width && row.find_first_not_of(U' ') != std::u32string::npos) {
+        while (!row.empty() && blank(row.back())) row.pop_back();
+        rows.push_back(utf8(row));
+        row.assign(hang, U' ');
+      }
+      while (row.size() + word.size() > width) {  // a word longer than a row is cut
+        const std::size_t fits = width - std::min(width - 1, row.size());
+        row += word.substr(0, fits);
+        word.remove_prefix(fits);
+        rows.push_back(utf8(row));
+        row.assign(hang, U' ');
+      }
+      row += word;
+      row += gap;
+      i = k;
+    }
+    while (!row.empty() && blank(row.back())) row.pop_back();
+    rows.push_back(utf8(row));
+    if (end == all.size()) break;
+  }
+  return rows;
+}
+
 TekScreen::TekScreen(TekOptions tek, bool dialogue)
     : options_(tek),
       unit_(tek.bits == 12 ? 4 : 1),
@@ -86,9 +164,15 @@ int TekScreen::rows_per_page() const {
   return flow().rows;
 }
 
-std::vector<std::u32string> TekScreen::wrap(const std::u32string& line, int columns) {
+std::vector<std::u32string> TekScreen::wrap(const std::u32string& line, int columns, bool set_out) {
   std::vector<std::u32string> rows;
   const auto width = static_cast<std::size_t>(columns);
+  if (set_out && line.size() > width) {
+    // Set out in columns by whoever wrote it (an APL result): cut at the width, never broken at
+    // a blank, so that its columns stay in line from one row to the next.
+    for (std::size_t at = 0; at < line.size(); at += width) rows.push_back(line.substr(at, width));
+    return rows;
+  }
   std::u32string row;
   std::size_t i = 0;
   while (i < line.size()) {
@@ -127,8 +211,13 @@ std::vector<std::u32string> TekScreen::wrap(const std::u32string& line, int colu
 
 int TekScreen::rows_of_lines() const {
   int n = 0;
-  for (const auto& line : lines_) n += static_cast<int>(wrap(line, flow().columns).size());
+  for (const auto& line : lines_)
+    n += static_cast<int>(wrap(line, flow().columns, line.set_out).size());
   return n;
+}
+
+int TekScreen::rows_of(std::string_view line, bool set_out) const {
+  return static_cast<int>(wrap(utf32(line), flow().columns, set_out).size());
 }
 
 int TekScreen::rows_left() const {
@@ -138,8 +227,14 @@ int TekScreen::rows_left() const {
 void TekScreen::emit(int row, int column, std::u32string_view text) {
   const Flow f = flow();
   if (row >= f.rows) return;  // a line longer than the page shows its first rows only
-  int x = f.x + column * tek_screen::char_width;
+  const int x = f.x + column * tek_screen::char_width;
   const int y = f.top - row * tek_screen::line_height;
+  // The alpha cursor where the next character goes.
+  draw_text(x, y, text);
+  move_cursor(x + static_cast<int>(text.size()) * tek_screen::char_width, y);
+}
+
+void TekScreen::draw_text(int x, int y, std::u32string_view text) {
   // Runs of 7-bit characters in alpha mode; an APL symbol (the 4013 had them, xterm's Tek
   // window has not) drawn as strokes in its cell; anything else a question mark.
   std::string ascii;
@@ -165,8 +260,17 @@ void TekScreen::emit(int row, int column, std::u32string_view text) {
     x += tek_screen::char_width;
   }
   flush();
-  // The alpha cursor where the next character goes.
-  move_cursor(x, y);
+}
+
+void TekScreen::draw_caption(int y, const std::string& line) {
+  // A number's sign as the dialogue echoes it, APL's high minus: the caption's plain ASCII
+  // (commands/picture.h, for every device) has a minus at the start of a number.
+  std::u32string text = utf32(line);
+  for (std::size_t i = 0; i + 1 < text.size(); ++i)
+    if (text[i] == U'-' && (i == 0 || text[i - 1] == U' ') &&
+        ((text[i + 1] >= U'0' && text[i + 1] <= U'9') || text[i + 1] == U'.'))
+      text[i] = U'\u00AF';
+  draw_text(layout_.caption_x, y, text);
 }
 
 void TekScreen::move_cursor(int x, int y) {
@@ -177,12 +281,11 @@ void TekScreen::move_cursor(int x, int y) {
 
 void TekScreen::draw_picture_and_captions() {
   if (!picture_) return;
-  for (const auto& p : overlaid_) draw_picture(*p, tek_, unit_, layout_);
   draw_picture(*picture_, tek_, unit_, layout_);
   cursor_.reset();
   int y = layout_.caption_top;
   for (const auto& line : captions_) {
-    if (!line.empty()) tek_.text(at(layout_.caption_x, y), line);
+    if (!line.empty()) draw_caption(y, line);
     y -= tek_screen::line_height;
   }
 }
@@ -204,7 +307,6 @@ void TekScreen::set_frame(std::shared_ptr<const Drawing2> frame, const TekLayout
 
 TekScreen::Parts TekScreen::replace_picture(std::shared_ptr<const Picture> picture) {
   Parts parts;
-  overlaid_.clear();
   picture_ = std::move(picture);
   captions_ = picture_->caption;
   in_document_ = false;
@@ -221,6 +323,9 @@ TekScreen::Parts TekScreen::replace_picture(std::shared_ptr<const Picture> pictu
 }
 
 void TekScreen::new_page() {
+  // A page drawn anew shows the current picture alone: the ones a DISPLAY drew it over belonged
+  // to the page before, and to no projection of this one.
+  if (picture_) captions_ = picture_->caption;
   cursor_.reset();
   tek_.page();
   ++pages_;
@@ -232,7 +337,7 @@ void TekScreen::new_page() {
 void TekScreen::draw_dialogue() {
   int row = 0;
   for (const auto& line : lines_) {
-    for (const auto& r : wrap(line, flow().columns)) emit(row++, 0, r);
+    for (const auto& r : wrap(line, flow().columns, line.set_out)) emit(row++, 0, r);
   }
   // The alpha cursor where the dialogue goes on.
   if (!open_) move_cursor(flow().x, flow().top - row * tek_screen::line_height);
@@ -240,20 +345,19 @@ void TekScreen::draw_dialogue() {
 
 void TekScreen::turn_page(int reserve, int carry) {
   // A new page shows the current picture alone, with its caption.
-  overlaid_.clear();
   if (picture_) captions_ = picture_->caption;
   const int columns = flow().columns;
-  std::vector<std::u32string> kept;
+  std::vector<Line> kept;
   int rows = 0;
   std::size_t i = lines_.size();
   if (open_ && i > 0) {
     kept.push_back(lines_.back());
-    rows = static_cast<int>(wrap(lines_.back(), columns).size());
+    rows = static_cast<int>(wrap(lines_.back(), columns, lines_.back().set_out).size());
     --i;
   }
   int carried = 0;
   for (; i > 0; --i) {
-    const int n = static_cast<int>(wrap(lines_[i - 1], columns).size());
+    const int n = static_cast<int>(wrap(lines_[i - 1], columns, lines_[i - 1].set_out).size());
     if (carried + n > carry || rows + n + reserve > flow().rows) break;
     kept.insert(kept.begin(), lines_[i - 1]);
     carried += n;
@@ -272,15 +376,16 @@ void TekScreen::append(std::u32string_view text) {
   if (!open_) {
     make_room(1);
     lines_.emplace_back();
+    lines_.back().set_out = setting_out_;
     open_ = true;
   }
   const int columns = flow().columns;
-  const auto before = wrap(lines_.back(), columns);
+  const auto before = wrap(lines_.back(), columns, lines_.back().set_out);
   lines_.back() += text;
-  const auto after = wrap(lines_.back(), columns);
+  const auto after = wrap(lines_.back(), columns, lines_.back().set_out);
   int first = 0;  // the row where the line being written starts
   for (std::size_t i = 0; i + 1 < lines_.size(); ++i)
-    first += static_cast<int>(wrap(lines_[i], columns).size());
+    first += static_cast<int>(wrap(lines_[i], columns, lines_[i].set_out).size());
   if (first + static_cast<int>(after.size()) > flow().rows && first > 0) {
     turn_page(0, carried_rows);  // the page is full: a new one, with this line whole
     return;
@@ -308,8 +413,9 @@ std::string TekScreen::begin() {
   return take();
 }
 
-std::string TekScreen::text(std::string_view text) {
+std::string TekScreen::text(std::string_view text, bool set_out) {
   typed_.clear();
+  setting_out_ = set_out;
   const std::u32string all = utf32(text);
   std::size_t start = 0;
   while (start <= all.size()) {
@@ -326,6 +432,7 @@ std::string TekScreen::text(std::string_view text) {
     open_ = false;
     start = end + 1;
   }
+  setting_out_ = false;
   return take();
 }
 
@@ -347,7 +454,6 @@ std::string TekScreen::untype() {
 std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
   const bool shown = picture_ && !in_document_;
   const int needed = static_cast<int>(picture->caption.size()) + (captions_.empty() ? 0 : 1);
-  if (shown) overlaid_.push_back(picture_);
   picture_ = std::move(picture);
   in_document_ = false;
   if (!shown || static_cast<int>(captions_.size()) + needed > layout_.caption_rows) {
@@ -365,14 +471,14 @@ std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
   int y = layout_.caption_top - static_cast<int>(captions_.size()) * tek_screen::line_height;
   draw_picture(*picture_, tek_, unit_, layout_);
   for (const auto& line : picture_->caption) {
-    tek_.text(at(layout_.caption_x, y), line);
+    draw_caption(y, line);
     captions_.push_back(line);
     y -= tek_screen::line_height;
   }
   // Back to where the dialogue goes on.
   const int rows = rows_of_lines();
   if (open_) {
-    const auto last = wrap(lines_.back(), flow().columns);
+    const auto last = wrap(lines_.back(), flow().columns, lines_.back().set_out);
     emit(rows - 1, static_cast<int>(last.back().size()), U"");
   } else {
     move_cursor(flow().x, flow().top - rows * tek_screen::line_height);
@@ -382,7 +488,6 @@ std::string TekScreen::picture(std::shared_ptr<const Picture> picture) {
 
 std::string TekScreen::erase() {
   picture_.reset();
-  overlaid_.clear();
   captions_.clear();
   lines_.clear();
   open_ = false;
@@ -423,6 +528,25 @@ std::string TekScreen::repaint() {
   return take();
 }
 
+DevicePoint TekScreen::next_character() const {
+  const Flow f = flow();
+  const int rows = rows_of_lines();
+  if (open_ && !lines_.empty()) {
+    const auto last = wrap(lines_.back(), f.columns, lines_.back().set_out);
+    return {f.x + static_cast<int>(last.back().size()) * tek_screen::char_width,
+            f.top - (rows - 1) * tek_screen::line_height};
+  }
+  return {f.x, f.top - rows * tek_screen::line_height};
+}
+
+std::string TekScreen::enquire(DevicePoint& at, int aside) {
+  at = next_character();
+  at.x += aside;
+  tek_.alpha_at(this->at(at.x, at.y));
+  cursor_ = aside != 0 ? std::nullopt : std::optional<DevicePoint>(at);
+  return take() + "\x1B\x05";
+}
+
 std::vector<TekScreen::Row> TekScreen::rows() const {
   std::vector<Row> out;
   if (picture_ && !in_document_) {
@@ -435,7 +559,7 @@ std::vector<TekScreen::Row> TekScreen::rows() const {
   const Flow f = flow();
   int row = 0;
   for (const auto& line : lines_)
-    for (const auto& r : wrap(line, f.columns))
+    for (const auto& r : wrap(line, f.columns, line.set_out))
       out.push_back({f.x, f.top - row++ * tek_screen::line_height, r});
   return out;
 }

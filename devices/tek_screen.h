@@ -32,8 +32,9 @@ class TekScreen {
   std::string begin();
 
   // Dialogue text, UTF-8; '\n' ends a line. Lines are wrapped at blanks (a word longer than a
-  // line is cut); a new page is started when the page is full.
-  std::string text(std::string_view text);
+  // line is cut), or, `set_out` in columns by whoever wrote them (an APL result), cut at the
+  // width; a new page is started when the page is full.
+  std::string text(std::string_view text, bool set_out = false);
   // One character typed on the line being edited (igds echoes what is typed in tek mode), and
   // taking the last one back. A character that moves a word to the next line, and any erasing,
   // redraw the page.
@@ -73,10 +74,23 @@ class TekScreen {
   // long text.
   std::string clear();
 
+  // The alpha cursor put where the dialogue goes on (`aside` points to its right: a place it
+  // was not put before) and the terminal asked for its status (ESC ENQ), whose answer carries
+  // that place: `at`, in 4013 points. The answer marks where the keys typed before it end
+  // (devices/gin.h, GinReader).
+  std::string enquire(DevicePoint& at, int aside = 0);
+  // Where the next character of the dialogue goes, in 4013 points.
+  DevicePoint next_character() const;
+
+  // Characters of a row of dialogue (of a document's page when one is up).
+  int columns() const { return flow().columns; }
+  // Rows `line` takes in the dialogue (`set_out` as text() has it).
+  int rows_of(std::string_view line, bool set_out = false) const;
   // Rows of dialogue still free on the page, and on a new page.
   int rows_left() const;
   int rows_per_page() const;
   bool shows_picture() const { return picture_ != nullptr; }
+  int bits() const { return options_.bits; }
 
   // What the page shows: each row of text with the baseline-left point of its first character,
   // in 4013 points.
@@ -92,11 +106,20 @@ class TekScreen {
     int x = 0, top = 0, columns = 0, rows = 0;
   };
   Flow flow() const;
-  // `line` wrapped into rows of `columns` characters at blanks.
-  static std::vector<std::u32string> wrap(const std::u32string& line, int columns);
+  // A line of the dialogue, and whether it is set out in columns (text()).
+  struct Line : std::u32string {
+    bool set_out = false;
+  };
+  // `line` wrapped into rows of `columns` characters at blanks, or cut when it is `set_out`.
+  static std::vector<std::u32string> wrap(const std::u32string& line, int columns,
+                                          bool set_out = false);
   int rows_of_lines() const;
   // Sends the characters of `text` at row `row`, column `column` of the flow.
   void emit(int row, int column, std::u32string_view text);
+  // The characters of `text` from (x, y), in 4013 points.
+  void draw_text(int x, int y, std::u32string_view text);
+  // A caption line at baseline `y` of the caption column.
+  void draw_caption(int y, const std::string& line);
   // The page again: the picture and captions that belong on it, then the dialogue lines.
   void new_page();
   // A new page keeping of the dialogue the line being written, whole, and before it the last
@@ -120,20 +143,26 @@ class TekScreen {
   TekEncoder tek_;
   TekLayout layout_;
   std::shared_ptr<const Picture> picture_;  // the current picture, while it is on the screen
-  // Pictures drawn on this page before the current one (DISPLAYs one over the other): a page
-  // drawn again shows them too; a new page only the current one.
-  std::vector<std::shared_ptr<const Picture>> overlaid_;
-  std::vector<std::string> captions_;  // the caption column of this page, line by line
-  std::vector<std::u32string> lines_;  // the dialogue of this page, line by line
-  bool open_ = false;                  // the last line is still being written
+  std::vector<std::string> captions_;       // the caption column of this page, line by line
+  std::vector<Line> lines_;                 // the dialogue of this page, line by line
+  bool setting_out_ = false;                // the text being written is set out in columns
+  bool open_ = false;                       // the last line is still being written
   std::u32string typed_;
   bool in_document_ = false;
-  std::vector<std::u32string> saved_lines_;  // the dialogue before a document
+  std::vector<Line> saved_lines_;  // the dialogue before a document
   bool saved_open_ = false;
   int pages_ = 0;
   std::shared_ptr<const Drawing2> frame_;  // drawn first on every page (the 2250's menu)
   std::optional<DevicePoint> cursor_;      // where the alpha cursor is, in 4013 points, when known
 };
+
+// Text written as paragraphs, one a line (never broken by hand at some width), laid out in rows
+// of at most `columns` characters (docs/devices.md, "Text on the screen"): each paragraph broken
+// at blanks, its later rows indented to its hang: after a list's number ("1. "); for an indented
+// term and its explanation (two blanks or more apart), the explanation's column, or four more
+// than the term when that leaves less than half the row; else its own indent. A word longer than
+// a row is cut. UTF-8.
+std::vector<std::string> lay_out(std::string_view paragraphs, int columns);
 
 // UTF-8 to code points and back (a malformed byte is U+FFFD).
 std::u32string utf32(std::string_view utf8);

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "interp/apl/keyboard.h"
 #include "interp/words.h"
@@ -134,30 +135,52 @@ Event KeySource::line(std::string_view) {
   }
 }
 
+bool KeySource::read_more(std::optional<std::chrono::milliseconds> timeout, Event::Kind& kind) {
+  const int ms = timeout ? static_cast<int>(timeout->count()) : -1;
+  for (;;) {
+    kind = wait_for(fd_, &interrupts_, ms);
+    if (kind == Event::Kind::interrupt) {
+      pending_.clear();
+      return false;
+    }
+    if (kind == Event::Kind::timeout) return false;
+    char chunk[256];
+    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
+    if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) {
+      kind = Event::Kind::end;
+      return false;
+    }
+    if (n > 0) {
+      pending_.append(chunk, static_cast<std::size_t>(n));
+      return true;
+    }
+  }
+}
+
 Event KeySource::key(std::optional<std::chrono::milliseconds> timeout) {
   for (;;) {
-    // One character: a UTF-8 lead byte and its continuation bytes.
+    // One character: a UTF-8 lead byte and its continuation bytes (a lead byte followed by a
+    // byte that continues nothing is a key of its own).
     if (!pending_.empty()) {
       const auto lead = static_cast<unsigned char>(pending_[0]);
-      const std::size_t length = lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+      std::size_t length = lead < 0xC0 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : 4;
+      for (std::size_t k = 1; k < length && k < pending_.size(); ++k)
+        if ((static_cast<unsigned char>(pending_[k]) & 0xC0) != 0x80) length = k;
       if (pending_.size() >= length) {
         std::string c = pending_.substr(0, length);
         pending_.erase(0, length);
         return {Event::Kind::key, std::move(c)};
       }
     }
-    const int ms = timeout ? static_cast<int>(timeout->count()) : -1;
-    const Event::Kind k = wait_for(fd_, &interrupts_, ms);
-    if (k == Event::Kind::interrupt) {
-      pending_.clear();
-      return {k, {}};
-    }
-    if (k == Event::Kind::timeout) return {k, {}};
-    char chunk[256];
-    const ssize_t n = ::read(fd_, chunk, sizeof chunk);
-    if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return {Event::Kind::end, {}};
-    if (n > 0) pending_.append(chunk, static_cast<std::size_t>(n));
+    Event::Kind kind;
+    if (!read_more(timeout, kind)) return {kind, {}};
   }
+}
+
+Event KeySource::bytes(std::optional<std::chrono::milliseconds> timeout) {
+  Event::Kind kind;
+  if (pending_.empty() && !read_more(timeout, kind)) return {kind, {}};
+  return {Event::Kind::key, std::exchange(pending_, {})};
 }
 
 // ---- ReadlineSource ---------------------------------------------------------------------------

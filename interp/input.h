@@ -65,12 +65,18 @@ class KeySource final : public EventSource {
   ~KeySource() override;
   Event line(std::string_view prompt) override;
   Event key(std::optional<std::chrono::milliseconds> timeout) override;
+  Event bytes(std::optional<std::chrono::milliseconds> timeout) override;
+  void unread(std::string bytes) override { pending_.insert(0, bytes); }
   bool gives_keys() const override { return true; }
   bool command_file() const override { return false; }
 
  private:
   int fd_;
   Interrupts& interrupts_;
+  // The next bytes from the terminal, waiting at most `timeout`: false at a timeout, an
+  // interrupt (`kind` says which) or the end.
+  bool read_more(std::optional<std::chrono::milliseconds> timeout, Event::Kind& kind);
+
   std::optional<termios> saved_;
   std::string pending_;  // bytes read but not yet given
 };

@@ -22,7 +22,36 @@ namespace igds {
 
 extern const Command save_command, restore_command;
 
-namespace {}  // namespace
+namespace {
+
+constexpr std::string_view apl_short_help =
+    "Type an APL statement (the IGDS variables are APL variables), )VARS, )FNS, START to go back "
+    "to IGDS or )OFF to leave.";
+// Paragraphs, one a line: the terminal lays them out at the screen's width.
+constexpr std::string_view apl_long_help =
+    "The APL environment is APL\\360: any statement, on the IGDS workspace variables (manual "
+    "section 7) and on variables and functions of your own.\n"
+    "  NOCUR NOSTR INTCU INTST  the grid: input curves and stringers, interpolated ones\n"
+    "  INPPN    input points, (NOCUR x NOSTR) x 3\n"
+    "  INPTG    border tangents and point numbers\n"
+    "  PATCHES  the Coons matrices of every patch\n"
+    "  INTPN    the interpolated grid\n"
+    "  IMAGE DESIM  the current image and its description\n"
+    "  TEMP1 DEST1 TEMP2 DEST2  the copies of STORE FIRST and SECOND\n"
+    "  STATUS   STATUS[1] is 1 for HELP LONG, 0 for SHORT\n"
+    "The manual's functions: FIT COONS ASSON CONIC ISOM ORTHOG SCALE DESCR LUT INIT, and COMDIS "
+    "'SURFACE ISOMETRIC 3 30' (COMBUI COMCHA COMSTO COMSAV COMRES COMPLO COMWRI COMEND) runs "
+    "that command. )VARS and )FNS list the names.\n"
+    "START goes back to IGDS (READY): a changed INPPN, INPTG, NOCUR ... INTST makes PATCHES and "
+    "INTPN again; a workspace that does not agree with itself is refused, with the reason, and "
+    "APL goes on. )SAVE NAME and )LOAD NAME are SAVE and RESTORE; )OFF leaves.\n"
+    "Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).\n"
+    "Example:\n"
+    "      INPPN[5;3]←2\n"
+    "      ⍴INTPN\n"
+    "9 9 3";
+
+}  // namespace
 
 Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace ws,
                          Terminal& terminal)
@@ -63,6 +92,15 @@ std::optional<Interpreter::Outcome> Interpreter::run_chosen(const Command& comma
     on_line_ = true;
     run_with(command, option);
   });
+  return after_command(errors_before);
+}
+
+std::optional<Interpreter::Outcome> Interpreter::run_line(std::string_view line) {
+  input_ended_ = false;
+  const int errors_before = errors_;
+  const auto words = split_words(line);
+  if (words.empty()) return std::nullopt;
+  execute(words);
   return after_command(errors_before);
 }
 
@@ -150,11 +188,16 @@ void Interpreter::run_command(const std::vector<std::string>& words) {
 }
 
 void Interpreter::run_with(const Command& command, const Choice* option) {
-  if (!option && !command.options.empty() && !command.option_prompt.text.empty()) {
+  // A word that is no option, typed at the question, gets the report and the question again
+  // (docs/interp.md, "Wrong answers").
+  while (!option && !command.options.empty() && !command.option_prompt.text.empty()) {
     std::vector<std::string> reply;
     while (reply.empty()) reply = ask(command.option_prompt);
     option = choose(command.options, reply.front());
-    if (!option) throw Report(command.bad_option);
+    if (!option) {
+      report(command.bad_option);
+      continue;
+    }
     reply.erase(reply.begin());
     unread(std::move(reply));
   }
@@ -198,7 +241,11 @@ void Interpreter::unread(std::vector<std::string> words) {
 }
 
 void Interpreter::say(std::string_view line) {
-  terminal_.say(line);
+  // What END APL prints itself (a result, an error with its caret) is set out by APL.
+  if (in_apl_ && !current_)
+    terminal_.print(line);
+  else
+    terminal_.say(line);
 }
 
 void Interpreter::document(std::string_view text) {
@@ -225,8 +272,9 @@ std::optional<DevicePoint> Interpreter::pick(const Prompt& prompt) {
     const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
     if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
-    if (e.kind != Event::Kind::line) throw EndOfInput{};
-    if (!answer_help(split_words(e.text), prompt)) return std::nullopt;
+    if (e.kind == Event::Kind::end) throw EndOfInput{};
+    if (e.kind == Event::Kind::line && !answer_help(split_words(e.text), prompt))
+      return std::nullopt;
   }
 }
 

@@ -1,4 +1,4 @@
-// The IGDS conversation (manual sections 4 and 6, spec igds.md section 2): READY, a command
+// The IGDS conversation (manual sections 4 and 6, docs/interp.md): READY, a command
 // looked up by prefix in the table, its option, its questions, HELP at every question, error
 // reports, the session saved after every command, and the END APL environment. It knows no
 // particular command: everything comes from the commands' declarations (commands/command.h).
@@ -40,6 +40,8 @@ class Interpreter final : public Context {
   // the same questions, HELP, reports, the session saved after it, END APL's environment.
   // Returns how the conversation ends when it does (END CMS, an output that failed).
   std::optional<Outcome> run_chosen(const Command& command, const Choice* option);
+  // A command line typed where the 2250's menu waits for a pick: run as typed after READY.
+  std::optional<Outcome> run_line(std::string_view line);
 
   // The words that may complete the next word of a line that has `before` so far: at READY the
   // commands, their options and what the options take; at a question its answers and HELP.

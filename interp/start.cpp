@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
+#include <sys/ioctl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -129,6 +130,9 @@ int igds_main(int argc, char** argv) {
     Session session(disk);
     Workspace ws = session.load();
     Terminal terminal(options.term, options.tek, out);
+    // Texts are laid out at the terminal's width (80 columns when the output is no terminal).
+    if (winsize size{}; ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col >= 20)
+      terminal.set_columns(size.ws_col);
     Interpreter interpreter(options, disk, session, std::move(ws), terminal);
     if (switch_window) out.write("\x1b[?38h");
     terminal.begin();

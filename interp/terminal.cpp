@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
+#include <fmt/format.h>
+
 #include "devices/gin.h"
 #include "devices/tek4013.h"
 #include "interp/apl/keyboard.h"
@@ -17,6 +19,8 @@ std::string for_xterm(std::string_view bytes) {
 }
 
 constexpr std::string_view more_prompt = "MORE: PRESS RETURN";
+// Rows of dialogue a new page keeps of the last one (devices/tek_screen.cpp).
+constexpr int carried_rows = 3;
 constexpr std::string_view back_prompt = "PRESS RETURN TO GO BACK TO THE PICTURE";
 
 // Control keys of the line editor in tek mode.
@@ -40,41 +44,85 @@ void Terminal::write_dialogue(std::string_view text) {
 }
 
 void Terminal::say(std::string_view line) {
+  if (mode_ == TermMode::tek) {
+    write_row(line, false);
+    return;
+  }
   write_dialogue(line);
   write_dialogue("\n");
 }
 
+void Terminal::print(std::string_view line) {
+  if (mode_ == TermMode::tek) {
+    write_row(line, true);
+    return;
+  }
+  write_dialogue(line);
+  write_dialogue("\n");
+}
+
+bool Terminal::write_row(std::string_view line, bool set_out) {
+  // A line that would turn the page while rows the person has not read would go with the old
+  // page (a new page keeps its last rows only) waits for RETURN first, on the page's last row.
+  const int rows = screen_->rows_of(line, set_out);
+  bool go_on = true;
+  if (screen_->rows_left() - 1 < rows && unseen_ > carried_rows && input_ &&
+      !input_->command_file() && typed_ahead_.empty() && !held_) {
+    write_dialogue(more_prompt);
+    write_dialogue("\n");
+    go_on = wait_for_return();
+    unseen_ = 0;
+    out_.write(screen_->clear());
+  }
+  std::string ended(line);
+  ended += '\n';
+  out_.write(screen_->text(ended, set_out));
+  unseen_ += rows;
+  return go_on;
+}
+
 bool Terminal::wait_for_return() {
+  last_click_.reset();  // a person answering in between makes the next click no double click's
   // Only a person reading needs the pause; a command file goes on, and so does a person who has
   // already typed on.
   if (!input_ || input_->command_file() || !typed_ahead_.empty()) return true;
   out_.flush();
-  if (!input_->gives_keys()) {
-    const Event e = input_->line("");
-    return e.kind == Event::Kind::line;
+  const Event e = input_->gives_keys() ? input_->key(std::nullopt) : input_->line("");
+  if (e.kind == Event::Kind::line) return true;
+  if (e.kind != Event::Kind::key) {
+    // Ctrl-C or the end of the input at a pause: the next wait gives it (the command is
+    // abandoned there, or igds ends).
+    if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) held_ = e.kind;
+    return false;
   }
   // Any key goes on; one that is not RETURN is the first of the next line.
-  const Event e = input_->key(std::nullopt);
-  if (e.kind != Event::Kind::key) return false;
   if (e.text != "\r" && e.text != "\n") typed_ahead_.push_back(e.text);
   return true;
 }
 
+int Terminal::columns() const {
+  return mode_ == TermMode::tek ? screen_->columns() : columns_;
+}
+
 void Terminal::document(std::string_view text) {
   if (mode_ != TermMode::tek) {
-    while (!text.empty()) {
-      const auto end = text.find('\n');
-      say(text.substr(0, end));
-      text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
-    }
+    for (const auto& row : lay_out(text, columns_)) say(row);
     return;
   }
   const bool picture = screen_->shows_picture();
+  if (picture && !screen_->in_document()) {
+    // A short text (HELP SHORT at a question) below the picture, which stays: HELP never erases.
+    const auto rows = lay_out(text, screen_->columns());
+    if (static_cast<int>(rows.size()) <= screen_->rows_per_page() / 2) {
+      for (const auto& row : rows) say(row);
+      return;
+    }
+  }
   out_.write(screen_->document_page());
   const bool go_on = write_pages(text);
   if (picture) {
     // A person reads the text before the picture comes back; a command file goes on.
-    if (go_on && input_ && !input_->command_file()) {
+    if (go_on && input_ && !input_->command_file() && !held_) {
       say(back_prompt);
       wait_for_return();
     }
@@ -84,18 +132,9 @@ void Terminal::document(std::string_view text) {
 
 bool Terminal::write_pages(std::string_view text) {
   bool go_on = true;
-  while (!text.empty() && go_on) {
-    const auto end = text.find('\n');
-    const std::string_view line = text.substr(0, end);
-    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
-    // The last row of a full page asks for RETURN before the next page.
-    const int rows = static_cast<int>(utf32(line).size()) / text_columns + 1;
-    if (screen_->rows_left() <= rows && !text.empty() && input_ && !input_->command_file()) {
-      say(more_prompt);
-      go_on = wait_for_return();
-      out_.write(screen_->clear());
-    }
-    say(line);
+  for (const auto& row : lay_out(text, screen_->columns())) {
+    go_on = write_row(row, false) && go_on;
+    if (held_) break;  // Ctrl-C at a pause: the rest is not shown
   }
   return go_on;
 }
@@ -178,6 +217,12 @@ void Terminal::raw(std::string_view bytes) {
 
 Event Terminal::read_line(std::string_view prompt, std::string_view above) {
   if (!input_) return {};
+  last_click_.reset();
+  if (held_) return {*std::exchange(held_, std::nullopt), {}};
+  struct Seen {
+    int& unseen;
+    ~Seen() { unseen = 0; }
+  } seen{unseen_};
   if (input_->echoes() && !input_->gives_keys()) {
     // Readline shows READY and the prompt itself.
     std::string shown = above.empty() ? std::string() : std::string(above) + "\n";
@@ -202,58 +247,166 @@ Event Terminal::read_line(std::string_view prompt, std::string_view above) {
   return e;
 }
 
-Event Terminal::pick(std::string_view prompt) {
-  if (!input_) return {};
-  if (mode_ == TermMode::tek && input_->gives_keys()) {
-    write_dialogue(prompt);
-    out_.write("\x1B\x1A");  // ESC SUB: GIN mode, the crosshair
-    out_.flush();
-    std::string report;
-    while (report.size() < 5) {
-      // A key already read after the last report (looking for its EOT) begins this one.
-      Event e{Event::Kind::key, {}};
-      if (!typed_ahead_.empty()) {
-        e.text = std::move(typed_ahead_.front());
-        typed_ahead_.erase(typed_ahead_.begin());
-      } else {
-        e = input_->key(std::nullopt);
-      }
-      if (e.kind != Event::Kind::key) return e;
-      report += e.text;
-    }
-    // The terminator, when the terminal sends one (CR, or CR and EOT; the tty may have made
-    // the CR a LF).
-    for (int k = 0; k < 2; ++k) {
-      Event e = input_->key(std::chrono::milliseconds(50));
-      if (e.kind != Event::Kind::key) break;
-      if (e.text != "\r" && e.text != "\n" && e.text != "\x04") {
-        typed_ahead_.push_back(std::move(e.text));
-        break;
-      }
-    }
-    if (!prompt.empty()) write_dialogue("\n");  // the prompt's line ends
-    const auto gin = decode_gin(report);
-    // Bytes that are no report (keys typed fast before GIN mode was on) come back as a key.
-    if (!gin) return {Event::Kind::key, std::move(report)};
-    Event picked{Event::Kind::pick, std::string(1, gin->key)};
-    picked.x = gin->x;
-    picked.y = gin->y;
-    return picked;
-  }
-  Event e = read_line(prompt);
+Event Terminal::typed_pick(Event e) {
   if (e.kind != Event::Kind::line) return e;
   // X Y [KEY]: two whole numbers on the screen, and the key (a blank when none is given).
   int x = 0, y = 0;
   char key[2] = {' ', 0};
-  const int n = std::sscanf(e.text.c_str(), "%d %d %1s", &x, &y, key);
-  if (n < 2 || x < 0 || y < 0 || x > 1023 || y > 779) return e;
+  char more[2] = {0, 0};
+  const int n = std::sscanf(e.text.c_str(), "%d %d %1s %1s", &x, &y, key, more);
+  if (n < 2 || n > 3 || x < 0 || y < 0 || x > 1023 || y > 779) return e;
   Event picked{Event::Kind::pick, key};
   picked.x = x;
   picked.y = y;
   return picked;
 }
 
+Event Terminal::pick(std::string_view prompt, std::string_view pick_keys) {
+  if (!input_) return {};
+  if (held_) return {*std::exchange(held_, std::nullopt), {}};
+  struct Seen {
+    int& unseen;
+    ~Seen() { unseen = 0; }
+  } seen{unseen_};
+  if (mode_ == TermMode::tek && input_->gives_keys()) return cross_hair(prompt, pick_keys);
+  return typed_pick(read_line(prompt));
+}
+
+namespace {
+
+// What a terminal's answer may take to come whole once it has begun (its bytes are sent in one
+// write), and to come at all after a request.
+constexpr std::chrono::milliseconds answer_rest{30}, answer_limit{2000};
+constexpr std::string_view gin_on = "\x1B\x1A", alpha_mode = "\x1F";
+
+}  // namespace
+
+bool Terminal::leave_gin() {
+  // Any control character ends GIN mode; the mark is put aside of the last one, so that an
+  // answer to that one still on its way is not taken for it. Ctrl-C meanwhile makes the tty drop
+  // what it holds, the answer perhaps: the status is asked again, a point further aside.
+  GinReader reader(0, 0, 10);
+  for (int aside = 1; !reader.marked(); ++aside) {
+    DevicePoint at;
+    std::string request(alpha_mode);
+    request += screen_->enquire(at, aside);
+    out_.write(request);
+    out_.flush();
+    reader = GinReader(at.x, at.y, 10);
+    const auto deadline = now_() + answer_limit;
+    Event e;
+    while (!reader.marked() && now_() < deadline) {
+      e = input_->bytes(reader.unsettled() ? answer_rest : answer_limit);
+      if (e.kind == Event::Kind::end) return false;
+      if (e.kind == Event::Kind::interrupt) break;
+      if (e.kind == Event::Kind::timeout && reader.unsettled()) reader.settle();
+      if (e.kind == Event::Kind::key) reader.feed(e.text);
+    }
+    if (e.kind != Event::Kind::interrupt && !reader.marked()) break;  // no answer: none comes
+  }
+  // A report that left before GIN mode did is dropped, or what the tty left of one whose key
+  // was Ctrl-C (its address and terminator); the keys typed meanwhile are kept.
+  std::string_view keys = reader.ahead();
+  if (reader.marked()) {
+    const std::size_t t = static_cast<std::size_t>(reader.terminator());
+    auto report_at = [&](std::size_t from) {
+      if (keys.size() < from + 4 + t) return false;
+      for (std::size_t i = from; i < from + 4; ++i)
+        if (keys[i] < 0x20 || keys[i] > 0x3F) return false;
+      return t == 0 || keys[from + 4] == '\r' || keys[from + 4] == '\n';
+    };
+    if (report_at(1))
+      keys.remove_prefix(5 + t);
+    else if (report_at(0))
+      keys.remove_prefix(4 + t);
+  }
+  std::string kept(keys);
+  kept += reader.after_mark();
+  input_->unread(std::move(kept));
+  return true;
+}
+
+Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) {
+  write_dialogue(prompt);
+  for (;;) {
+    // Keys typed before the question was asked answer it: a typed line, no cross-hair.
+    const Event waiting = typed_ahead_.empty() ? input_->bytes(std::chrono::milliseconds(0))
+                                               : Event{Event::Kind::key, {}};
+    if (waiting.kind == Event::Kind::interrupt) {
+      write_dialogue("\n");
+      return waiting;
+    }
+    if (waiting.kind == Event::Kind::end) {
+      write_dialogue("\n");
+      return waiting;
+    }
+    if (waiting.kind == Event::Kind::key) {
+      input_->unread(waiting.text);
+      return typed_pick(edit_line({}));
+    }
+    DevicePoint at;
+    std::string request = screen_->enquire(at);
+    request += gin_on;
+    out_.write(request);
+    out_.flush();
+    GinReader reader(at.x, at.y, screen_->bits());
+    Event e;
+    while (!reader.done()) {
+      // Before the mark or between reports nothing limits the wait: a person is choosing.
+      e = input_->bytes(reader.unsettled() ? std::optional(answer_rest) : std::nullopt);
+      if (e.kind == Event::Kind::timeout) {
+        reader.settle();
+        continue;
+      }
+      if (e.kind != Event::Kind::key) break;
+      reader.feed(e.text);
+      // Keys typed before the cross-hair was up: the answer is being typed.
+      if (reader.marked() && !reader.ahead().empty()) break;
+    }
+    if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) {
+      // Ctrl-C: the terminal's report of it (the key, then its address) is read and dropped,
+      // and the question abandoned on a line of its own.
+      if (e.kind == Event::Kind::interrupt && !leave_gin()) e.kind = Event::Kind::end;
+      write_dialogue("\n");
+      return e;
+    }
+    if (!reader.done()) {
+      std::string typed(reader.ahead());
+      if (!leave_gin()) {
+        write_dialogue("\n");
+        return {Event::Kind::end, {}};
+      }
+      input_->unread(std::move(typed));
+      return typed_pick(edit_line({}));
+    }
+    const GinReport report = *reader.report();
+    input_->unread(std::string(reader.rest()));
+    const Clock::time_point when = now_();
+    if (report.button && last_click_ && second_click(*last_click_, last_click_at_, report, when))
+      continue;  // a double click's second: the cross-hair again
+    const char key = report.key;
+    const bool picks = report.button || key == ' ' || key == '\r' || key == '\n' ||
+                       (key != 0 && pick_keys.find(key) != std::string_view::npos);
+    if (!picks && !(key > ' ' && key < 0x7F)) continue;  // a control key: the cross-hair again
+    if (!picks) {
+      // The first key of a typed line: GIN mode is over, the rest comes as keys.
+      typed_ahead_.insert(typed_ahead_.begin(), std::string(1, key));
+      return typed_pick(edit_line({}));
+    }
+    if (report.button) {
+      last_click_ = report;
+      last_click_at_ = when;
+    }
+    Event picked{Event::Kind::pick, std::string(1, report.button ? ' ' : key)};
+    picked.x = report.x;
+    picked.y = report.y;
+    if (!prompt.empty()) write_dialogue(fmt::format("{} {}\n", picked.x, picked.y));
+    return picked;
+  }
+}
+
 Event Terminal::edit_line(std::string_view prompt) {
+  last_click_.reset();
   write_dialogue(prompt);
   std::string line;
   bool prefix = false;  // the APL prefix key was typed: the next key is a glyph's

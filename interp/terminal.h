@@ -11,8 +11,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "devices/gin.h"
 #include "devices/tek_screen.h"
 #include "devices/tek_stream.h"
 
@@ -38,6 +40,12 @@ class EventSource {
   // The next key, waiting at most `timeout` (forever when not given); only for sources that give
   // keys.
   virtual Event key(std::optional<std::chrono::milliseconds> timeout) = 0;
+  // Bytes as the terminal sent them (a cross-hair's report is no UTF-8): those read already and
+  // not given yet, else the next ones, waiting at most `timeout`. Only for sources that give
+  // keys.
+  virtual Event bytes(std::optional<std::chrono::milliseconds> timeout) { return key(timeout); }
+  // Bytes read that belong to what follows: given again, first, as keys.
+  virtual void unread(std::string bytes) { (void)bytes; }
   // Keys one by one (a terminal in tek mode): the terminal edits and echoes the line itself.
   virtual bool gives_keys() const { return false; }
   // It shows what is typed and its prompts (Readline, a terminal's own echo).
@@ -71,11 +79,21 @@ class Terminal {
 
   // The start of the session (tek mode: the alpha cursor to the first line).
   void begin();
-  // A line of dialogue.
+  // A line of dialogue. In tek mode, when it would turn the page while lines the person has not
+  // read are on it (a long APL result below the picture), it waits at MORE first.
   void say(std::string_view line);
-  // A long text (HELP LONG, listings). In tek mode it gets a page of its own when a picture is
-  // on the screen, and when it is longer than the screen and a person reads it, it stops at
-  // each full page (MORE) and at its end until RETURN.
+  // A line set out in columns by whoever made it (an APL result, a caret under its error): on
+  // the Tek screen cut at the width when it is longer, never broken at a blank.
+  void print(std::string_view line);
+  // The characters of a row of text: the Tek screen's (where a document goes), else the
+  // terminal's width (set_columns).
+  int columns() const;
+  void set_columns(int columns) { columns_ = columns; }
+  // A text written as paragraphs (HELP, listings), laid out at the screen's width (lay_out,
+  // devices/tek_screen.h). In tek mode, with a picture on the screen, a text of a few rows goes
+  // below it, a longer one on a page of its own; when it is longer than the screen and a person
+  // reads it, it stops at each full page (MORE) and, the picture waiting, at its end until
+  // RETURN.
   void document(std::string_view text);
   // DISPLAY: the picture on the screen, or (none mode, where `picture` may be null) `line`
   // saying what it shows.
@@ -89,12 +107,20 @@ class Terminal {
   // Readline shows as the first line of its prompt. Ends with Event::line, interrupt or end.
   Event read_line(std::string_view prompt, std::string_view above = {});
 
-  // A position picked on the screen (Event::pick), after `prompt`. On a Tek terminal typing
-  // keys, GIN mode: the crosshair, and the report of the key pressed (the key, then x and y in
-  // two 5-bit characters each, then xterm's ginTerminator). From a command file or a line
-  // source, a line `X Y [KEY]`. Anything else that line holds comes back as Event::line; an
-  // interrupt or the end of the input as themselves.
-  Event pick(std::string_view prompt);
+  // A position picked on the screen (Event::pick: the position in 4013 addresses and the key
+  // that made it, a blank for a mouse button), after `prompt`. On a Tek terminal typing keys:
+  // GIN mode, the cross-hair, read in step whatever comes (devices/gin.h, GinReader). A mouse
+  // button, the space bar, RETURN or one of `pick_keys` picks; any other printable key begins a
+  // typed line, edited and echoed as at any question (keys typed before the cross-hair was up
+  // do too); the second click of a double click is dropped. From a command file or a line
+  // source, a line. A line `X Y [KEY]` is a pick there too; any other line comes back as
+  // Event::line, an interrupt or the end of the input as themselves. A pick after a prompt is
+  // echoed after it as `X Y`.
+  Event pick(std::string_view prompt, std::string_view pick_keys = {});
+
+  // What the time is (the tests set their own).
+  using Clock = std::chrono::steady_clock;
+  void set_clock(Clock::time_point (*now)()) { now_ = now; }
 
   // The 2250 workspace (tek mode): `menu` drawn on every page and `layout` keeping the picture,
   // its caption and the dialogue clear of it, from the next page on.
@@ -114,11 +140,21 @@ class Terminal {
 
  private:
   void write_dialogue(std::string_view text);
+  // A line of dialogue in tek mode, after MORE when it is due; false when the input ended or
+  // Ctrl-C came at MORE.
+  bool write_row(std::string_view line, bool set_out);
   // The lines of `text`, stopping at each full page for a person (MORE); false when the input
   // ended at a stop.
   bool write_pages(std::string_view text);
   Event edit_line(std::string_view prompt);
   bool wait_for_return();
+  // The cross-hair of a Tek terminal typing keys (pick()).
+  Event cross_hair(std::string_view prompt, std::string_view pick_keys);
+  // GIN mode left and the terminal's answers until a new mark read and dropped (a report sent
+  // meanwhile among them); the keys typed meanwhile kept. False when the input ended.
+  bool leave_gin();
+  // A line typed at a cross-hair question: `X Y [KEY]` a pick, else the line.
+  static Event typed_pick(Event e);
 
   TermMode mode_;
   Output& out_;
@@ -126,6 +162,12 @@ class Terminal {
   EventSource* input_ = nullptr;
   bool told_how_to_see_ = false;
   std::vector<std::string> typed_ahead_;  // keys typed at a pause, for the next line
+  Clock::time_point (*now_)() = &Clock::now;
+  int columns_ = 80;                     // none and xterm modes: the terminal's width
+  int unseen_ = 0;                       // tek mode: rows written since the person last typed
+  std::optional<Event::Kind> held_;      // Ctrl-C or the end met at a pause, for the next wait
+  std::optional<GinReport> last_click_;  // the last pick by a mouse button, and when it came
+  Clock::time_point last_click_at_{};
 };
 
 }  // namespace igds

@@ -1,43 +1,40 @@
 #include "interp/ws2250.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
 
 #include "commands/picture.h"
+#include "interp/words.h"
 
 namespace igds {
 
 namespace {
 
-constexpr std::string_view general_help = R"(IGDS WITH A 2250: THE LIGHT PEN IS THE CROSS-HAIR
-
-The menu on the right is always on the screen: move the
-cross-hair onto an item with the mouse and click (or press
-any key). An item is a command and its option at once
-(D SURFACE is DISPLAY SURFACE).
-
-Two environments. In this one, the help environment, picking
-an item explains its command; RETURN goes to the execution
-environment, where picking an item runs it and HELP comes
-back here (the picture on the screen then is given back when
-you return).
-
-What a command needs besides its option (names, numbers,
-points, tangents, a projection) is asked at the bottom of
-the screen and typed on the keyboard, ended by RETURN; HELP
-typed there explains the question. An entry of several lines
-(POINTS?, TANGENTS?) is ended by an empty line (the 2250's
-key 0). Ctrl-C gives up the command in progress.
-
-While DISPLAY SURFACE's picture is up, keys pressed with the
-cross-hair: 5 the default display, 6 the points joined one
-after the other along the stringers, 7 along the curves
-(both drawn at a visible pace, in 3 seconds at most; any key
-shows the rest at once), 8 the points alone.
-
-The workspace, the disk and the session are those of igds
-4013: a session of one continues the other. END CMS leaves
-igds.)";
+constexpr std::string_view general_help =
+    "IGDS WITH A 2250: THE LIGHT PEN IS THE CROSS-HAIR\n"
+    "\n"
+    "The menu on the right is always on the screen: move the cross-hair onto an item with the "
+    "mouse and click (or press the space bar). An item is a command and its option at once (D "
+    "SURFACE is DISPLAY SURFACE). A command may be typed too, ended by RETURN.\n"
+    "\n"
+    "Two environments. In this one, the help environment, picking an item explains its "
+    "command; RETURN goes to the execution environment, where picking an item runs it and "
+    "HELP comes back here (the picture on the screen then is given back when you return).\n"
+    "\n"
+    "What a command needs besides its option (names, numbers, points, tangents, a projection) "
+    "is asked at the bottom of the screen and typed on the keyboard, ended by RETURN; HELP "
+    "typed there explains the question. An entry of several lines (POINTS?, TANGENTS?) is "
+    "ended by an empty line (the 2250's key 0). Ctrl-C gives up the command in progress.\n"
+    "\n"
+    "While DISPLAY SURFACE's picture is up, keys pressed with the cross-hair: 5 the default "
+    "display, 6 the points joined one after the other along the stringers, 7 along the curves "
+    "(both drawn at a visible pace, in 3 seconds at most; any key shows the rest at once), 8 "
+    "the points alone.\n"
+    "\n"
+    "The workspace, the disk and the session are those of igds 4013: a session of one "
+    "continues the other. END CMS leaves igds.";
 
 }  // namespace
 
@@ -131,10 +128,19 @@ void Workspace2250::function_key(SurfaceKey key) {
 Interpreter::Outcome Workspace2250::run() {
   if (!help_environment()) return Interpreter::Outcome::input_ended;
   for (;;) {
-    const Event e = terminal_.pick("");
+    // With DISPLAY SURFACE's picture up, the keys 5 to 8 are function keys; any other key
+    // begins a command typed on the keyboard.
+    const Event e = terminal_.pick("", surface_shown() ? "5678" : "");
     if (e.kind == Event::Kind::end) return Interpreter::Outcome::input_ended;
     if (terminal_.output_failed()) return Interpreter::Outcome::ended;
-    if (e.kind != Event::Kind::pick) continue;  // Ctrl-C, stray bytes: the cross-hair again
+    if (e.kind == Event::Kind::line) {
+      // An empty line is no command: the cross-hair again, as READY waits again.
+      if (split_words(e.text).empty()) continue;
+      if (auto outcome = interpreter_.run_line(e.text)) return *outcome;
+      terminal_.say("READY");
+      continue;
+    }
+    if (e.kind != Event::Kind::pick) continue;  // Ctrl-C: the cross-hair again
     if (e.text.size() == 1 && e.text[0] >= '5' && e.text[0] <= '8' && surface_shown()) {
       function_key(static_cast<SurfaceKey>(e.text[0]));
       continue;
@@ -146,6 +152,9 @@ Interpreter::Outcome Workspace2250::run() {
       if (!help_environment()) return Interpreter::Outcome::input_ended;
       continue;
     }
+    // The pick's echo: the command chosen, as if typed.
+    terminal_.say(item.option ? fmt::format("{} {}", item.command->name, item.option->word)
+                              : std::string(item.command->name));
     if (auto outcome = interpreter_.run_chosen(*item.command, item.option)) return *outcome;
     terminal_.say("READY");
   }

@@ -390,6 +390,24 @@ TEST_CASE("DISPLAY INPUT writes each point's number beside it, clear of the line
   }
 }
 
+TEST_CASE("the README's dome in a conic view: every point has its number, the lowest too") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  ctx.type({"3 3", "1 0 0 0  10 0 2  20 0 0", "4 0 10 2  10 10 4  20 10 2",
+            "7 0 20 0  10 20 2  20 20 0", "", "4 1 0 0.4", "6 1 0 \u00AF0.4", "2 0 1 0.4",
+            "8 0 1 \u00AF0.4", "", "3 3"});
+  ctx.run(build_command, "");
+  REQUIRE(ctx.ws.has_surface());
+  ctx.run(display_command, "INPUT", {"CONIC", "60", "\u00AF40", "30"});
+  const Picture pic = picture_of(ctx.ws.image);
+  std::vector<int> numbers;
+  for (const auto& item : pic.drawing.items())
+    if (item.kind == Drawing2::Kind::text) numbers.push_back(item.id.index);
+  std::sort(numbers.begin(), numbers.end());
+  // Point 3, the V of two border lines at the bottom of the picture, gets its number above it.
+  CHECK(numbers == std::vector<int>{1, 2, 3, 4, 5, 6, 7, 8, 9});
+}
+
 TEST_CASE("a grid too dense for its numbers gets none; zoomed into, its points have them") {
   auto numbers = [](const Image& im) {
     const Picture pic = picture_of(im);

@@ -115,8 +115,14 @@ TEST_CASE("the Tek screen: a picture with its caption, the dialogue below it, DI
   // Both captions, one below the other in the column right of the picture.
   CHECK(has("SURFACE", 600));
   CHECK(has("INPUT", 600));
-  for (const auto& s : page.segments)
-    for (const TekPoint& p : {s.a, s.b}) CHECK((p.x <= 583 && p.y >= 184));
+  // Vectors in the picture's square, and the caption's high minus (-40 is ¯40, as the echo
+  // shows it), a stroke in the column.
+  bool high_minus = false;
+  for (const auto& s : page.segments) {
+    for (const TekPoint& p : {s.a, s.b}) CHECK(((p.x <= 583 && p.y >= 184) || p.x >= 600));
+    high_minus = high_minus || (s.a.x >= 600 && s.a.y == s.b.y && s.a.x != s.b.x);
+  }
+  CHECK(high_minus);
   // The dialogue is below the picture, across the whole screen.
   for (const auto& t : page.texts)
     if (t.at.x == 0) CHECK(t.at.y <= 160);
@@ -217,6 +223,51 @@ TEST_CASE("the Tek window of --term xterm shows pictures only, in the full squar
   CHECK(large);
   CHECK(std::count_if(d.pages.back().texts.begin(), d.pages.back().texts.end(),
                       [](const TekText& t) { return t.at.x == 780; }) >= 6);
+}
+
+}  // namespace igds::test
+
+namespace igds::test {
+
+TEST_CASE("text as paragraphs laid out at a screen's width, each row hung where it belongs") {
+  const std::string text =
+      "DISPLAY makes a new current image and draws it on the left of the screen.\n"
+      "\n"
+      "  CONIC x y z         perspective from the view point x y z towards the centre\n"
+      "  DISPLAY INPUT [projection [parameters]]   the input points, the border\n"
+      " 1. NUMBER OF CURVES AND STRINGERS? NOCUR and NOSTR, whole numbers\n"
+      "                          projects and draws the input or the surface\n"
+      "  BUILD\n";
+  // At 56 columns: the explanation's column when it leaves half the row (CONIC's), else four
+  // more than the term (DISPLAY INPUT's); after a list's number; an indented paragraph at its
+  // indent.
+  const std::vector<std::string> expected = {
+      "DISPLAY makes a new current image and draws it on the",
+      "left of the screen.",
+      "",
+      "  CONIC x y z         perspective from the view point x",
+      "                      y z towards the centre",
+      "  DISPLAY INPUT [projection [parameters]]   the input",
+      "      points, the border",
+      " 1. NUMBER OF CURVES AND STRINGERS? NOCUR and NOSTR,",
+      "    whole numbers",
+      "                          projects and draws the input",
+      "                          or the surface",
+      "  BUILD"};
+  CHECK(lay_out(text, 56) == expected);
+  // Narrower, no hang takes more than half the row: the summary's later rows at 20, not 26.
+  const auto narrow = lay_out(text, 40);
+  CHECK(narrow.back() == "  BUILD");
+  CHECK(narrow[narrow.size() - 2].find_first_not_of(' ') == 20);
+  // A paragraph that fits is one row as written; a word longer than a row is cut.
+  CHECK(lay_out("  D SU O XY", 73) == std::vector<std::string>{"  D SU O XY"});
+  CHECK(lay_out(std::string(20, 'X'), 8) ==
+        std::vector<std::string>{"XXXXXXXX", "XXXXXXXX", "XXXX"});
+  // Every row of a help text fits the 2250's 61 columns and the 4013's 73.
+  for (const int columns : {61, 73})
+    for (const auto& row : lay_out(text, columns))
+      CHECK(utf32(row).size() <= static_cast<std::size_t>(columns));
+  CHECK(lay_out("", 73).empty());
 }
 
 }  // namespace igds::test

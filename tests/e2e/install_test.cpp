@@ -135,7 +135,7 @@ TEST_CASE("igds-tek: xterm -t with the 4013's window around igds, or what to ins
   CHECK(r.status == 0);
   CHECK(r.out ==
         "-t|-title|igds|-xrm|XTerm*tekGeometry: 1024x780|-xrm|XTerm*ginTerminator: "
-        "CRonly|-e|" +
+        "CRonly|-xrm|XTerm*tek4014.fontLarge: 10x20|-e|" +
             (installed.path() / "igds").string() + "|--disk|/tmp/x|hull.igds|");
   RunOptions no_display = no_xterm;
   no_display.env["DISPLAY"] = "";

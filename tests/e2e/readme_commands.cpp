@@ -11,6 +11,7 @@
 #include "commands/view.h"
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
+#include "tests/support/tek_decoder.h"
 
 namespace igds::test {
 
@@ -117,7 +118,7 @@ TEST_CASE("the README's command lines run, and print what the README shows") {
   RunOptions options;
   options.cwd = cwd.path();
   options.env = {{"IGDS_DISK", ""}};
-  int commands = 0;
+  int commands = 0, pictures = 0;
   for (const auto& block : fenced_blocks(readme_lines())) {
     if (block.info != "console") continue;
     for (std::size_t i = 0; i < block.lines.size(); ++i) {
@@ -138,9 +139,20 @@ TEST_CASE("the README's command lines run, and print what the README shows") {
       CHECK(r.status == 0);
       CHECK(r.err == "");
       CHECK(r.out == joined(shown));
+      // A page rendered by tek2plot shows a picture, not only dialogue.
+      std::smatch page;
+      if (std::regex_search(command, page,
+                            std::regex(R"(tek2plot .*--page-number (\d+) (\S+\.tek))"))) {
+        const TekDrawing d = decode_tek(read_file(cwd.path() / page[2].str()));
+        const auto n = static_cast<std::size_t>(std::stoi(page[1].str()));
+        REQUIRE(n < d.pages.size());
+        CHECK(d.pages[n].segments.size() > 100);
+        ++pictures;
+      }
     }
   }
   CHECK(commands >= 4);
+  CHECK(pictures >= 1);
 }
 
 TEST_CASE("the README's table of abbreviations is the command table's") {

@@ -61,8 +61,8 @@ POINTS? 1  0 0 0   0 10 2   0 20 0
 POINTS? 4  10 0 2  10 10 0  10 20 2
 POINTS? 7  20 0 0  20 10 2  20 20 0 ⍝ the third curve
 POINTS? H S
-A point number k and x y z (more triplets go to k+1, k+2, ...); an
-empty line ends the points.
+A point number k and x y z (more triplets go to k+1, k+2, ...); an empty line
+ends the points.
 POINTS?
 TANGENTS? 1 0 1 0 1
 TANGENTS? 1 1 0 0
@@ -133,6 +133,7 @@ TEST_CASE("every error report of the manual") {
 BUILD 3 3
 CHANGE
 SIDEWAYS
+GRID
 CHANGE GRID
 DISPLAY INPUT
 DISPLAY SURFACE
@@ -151,7 +152,9 @@ BUILD
   const std::string expected[] = {
       "FROBNICATE\nINCORRECT COMMAND OR PARAMETERS\nREADY\n",
       "BUILD 3 3\nINCORRECT COMMAND OR PARAMETERS\nREADY\n",
-      "GRID, TANGENTS, POINTS OR TWISTS? SIDEWAYS\nINCORRECT CHOICE OF PARAMETERS\nREADY\n",
+      // A word that is no option, typed at the question: the report, and the question again.
+      "GRID, TANGENTS, POINTS OR TWISTS? SIDEWAYS\nINCORRECT CHOICE OF PARAMETERS\nGRID, "
+      "TANGENTS, POINTS OR TWISTS? GRID\nINPUT NOT FOUND\nREADY\n",
       "CHANGE GRID\nINPUT NOT FOUND\nREADY\n",
       "DISPLAY INPUT\nINPUT NOT FOUND\nREADY\n",
       "DISPLAY SURFACE\nSURFACE NOT FOUND\nREADY\n",

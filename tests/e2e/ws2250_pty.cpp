@@ -16,6 +16,7 @@
 #include "tests/support/process.h"
 #include "tests/support/pty.h"
 #include "tests/support/tek_decoder.h"
+#include "tests/support/tek_terminal.h"
 
 namespace igds::test {
 
@@ -32,18 +33,13 @@ std::size_t count_of(const std::string& text, const std::string& word) {
 
 // Waits for the cross-hair, pressing RETURN at every MORE not answered yet: a text longer than
 // the text area beside the menu is paged, and how many pages it takes depends on the menu's width.
-bool expect_gin(PtySession& igds, std::size_t& answered) {
-  for (int page = 0; page < 20; ++page) {
-    // Whichever comes first: a MORE not answered yet, or the cross-hair.
-    bool gin = false;
-    if (!igds.wait_until([&] {
-          return count_of(igds.output(), more) > answered || (gin = igds.expect(gin_on, 0));
-        }))
-      return false;
-    if (gin) return true;
-    // Counted before the RETURN: sending it reads on, maybe up to the next MORE.
-    answered = count_of(igds.output(), more);
-    igds.send("\r");
+bool expect_gin(XtermPty& igds, std::size_t& answered) {
+  for (int wait = 0; wait < 20; ++wait) {
+    if (igds.expect_gin(1)) return true;
+    if (const std::size_t mores = count_of(igds.pty().output(), more); mores > answered) {
+      igds.pty().send("\r");
+      answered = mores;
+    }
   }
   return false;
 }
@@ -55,37 +51,29 @@ std::map<std::string, std::string> xterm_env(const TempDir& home) {
           {"IGDS_DISK", ""}};
 }
 
-// xterm's report of `key` at (x, y), with ginTerminator CR.
-std::string report(char key, int x, int y) {
-  std::string r{key};
-  r += static_cast<char>(0x20 | (x >> 5));
-  r += static_cast<char>(0x20 | (x & 31));
-  r += static_cast<char>(0x20 | (y >> 5));
-  r += static_cast<char>(0x20 | (y & 31));
-  return r + "\r";
-}
-
 struct Menu {
   std::vector<MenuItem> items = menu_items(false, menu_screen::label_columns);
   std::vector<MenuItem> help_items = menu_items(true, menu_screen::label_columns);
   MenuLayout layout = menu_layout(items.size());
-  // A mouse button's report (xterm sets the high bit) at the middle of the item labelled so.
-  std::string click(const std::string& label, bool help = false) const {
+  // A click of button l at the middle of the item labelled so (`dx` right of it: a click that
+  // follows one at the middle at once would be the second of a double click).
+  void click(XtermPty& igds, const std::string& label, bool help = false, int dx = 0) const {
     const auto& list = help ? help_items : items;
     const auto it =
         std::find_if(list.begin(), list.end(), [&](const MenuItem& i) { return i.label == label; });
     REQUIRE_MESSAGE(it != list.end(), label);
     const Box& b = layout.items[static_cast<std::size_t>(it - list.begin())];
-    return report(static_cast<char>('l' | 0x80), int((b.x0 + b.x1) / 2), int((b.y0 + b.y1) / 2));
+    igds.click('l', int((b.x0 + b.x1) / 2) + dx, int((b.y0 + b.y1) / 2));
   }
 };
 
 // What igds drew between two moments: the Tek stream without xterm's window switches and the
-// requests for the cross-hair (ESC SUB, which the decoder does not know).
+// requests for the cross-hair and the terminal's status (ESC SUB, ESC ENQ, which the decoder
+// does not know).
 TekDrawing decoded(const std::string& bytes) {
   std::string tek = bytes;
-  for (const std::string_view vt :
-       {std::string_view("\x1B[?38h"), std::string_view("\x1B\x03"), std::string_view(gin_on)})
+  for (const std::string_view vt : {std::string_view("\x1B[?38h"), std::string_view("\x1B\x03"),
+                                    std::string_view(gin_on), std::string_view("\x1B\x05")})
     for (auto at = tek.find(vt); at != std::string::npos; at = tek.find(vt))
       tek.erase(at, vt.size());
   return decode_tek(tek);
@@ -124,40 +112,47 @@ std::vector<std::vector<TekSegment>> chains(const std::vector<TekSegment>& segme
 TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, keys 5 to 8") {
   TempDir disk, home;
   const Menu menu;
-  PtySession igds({igds_binary().string(), "2250", "--disk", disk.path().string()},
-                  xterm_env(home));
+  XtermPty igds({igds_binary().string(), "2250", "--disk", disk.path().string()}, xterm_env(home));
   // The help environment at start: the general explanation and the menu with RETURN.
   REQUIRE(igds.expect("\x1B[?38h"));
   REQUIRE(igds.expect("IGDS WITH A 2250"));
   std::size_t mores = 0;  // MOREs answered
   REQUIRE(expect_gin(igds, mores));
   {
-    const TekDrawing d = decoded(igds.output());
+    const TekDrawing d = decoded(igds.pty().output());
     REQUIRE_FALSE(d.pages.empty());
     const TekPage& page = d.pages.back();
     for (const auto& item : menu.help_items) CHECK_MESSAGE(page_has(page, item.label), item.label);
     CHECK(page_has(page, "RETURN"));
     // How a multi-line entry ends, said in HELP (on its first page when the menu is long).
-    CHECK(igds.output().find("an empty line") != std::string::npos);
+    CHECK(igds.pty().output().find("an empty line") != std::string::npos);
     for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
   }
   // An item explains its command, with its HELP LONG text; a pick beside the menu is ignored.
-  igds.send(menu.click("BUILD", true));
+  menu.click(igds, "BUILD", true);
   REQUIRE(igds.expect("BUILD defines a new current surface"));
   // Longer than the page: RETURN at MORE, then the cross-hair again.
   REQUIRE(igds.expect(more));
   REQUIRE(expect_gin(igds, mores));
-  CHECK(igds.output().find("Tangents are per unit of chord length") != std::string::npos);
-  const std::size_t before_miss = igds.output().size();
-  igds.send(report('l', 300, 500));
-  REQUIRE(igds.expect(gin_on));
-  CHECK(igds.output().size() - before_miss == gin_on.size());  // nothing but the cross-hair
-  // RETURN: the execution environment, the menu with HELP, READY.
-  igds.send(menu.click("RETURN", true));
-  REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
+  CHECK(igds.pty().output().find("Tangents are per unit of chord length") != std::string::npos);
+  const std::size_t before_miss = igds.pty().output().size();
+  const int enquiries = igds.terminal().enquiries();
+  igds.click('l', 300, 500);
+  REQUIRE(igds.expect_gin());
+  // Nothing but the cross-hair again (the alpha cursor put back, the status asked, GIN mode).
+  CHECK(igds.terminal().enquiries() == enquiries + 1);
   {
-    const TekDrawing d = decoded(igds.output());
+    const TekDrawing miss = decoded(igds.pty().output().substr(before_miss));
+    CHECK(miss.pages.size() == 1);
+    CHECK(miss.pages.back().segments.empty());
+    CHECK(miss.pages.back().texts.empty());
+  }
+  // RETURN: the execution environment, the menu with HELP, READY.
+  menu.click(igds, "RETURN", true);
+  REQUIRE(igds.expect("READY"));
+  REQUIRE(igds.expect_gin());
+  {
+    const TekDrawing d = decoded(igds.pty().output());
     REQUIRE_FALSE(d.pages.empty());
     const TekPage& page = d.pages.back();
     CHECK(page_has(page, "HELP"));
@@ -166,32 +161,33 @@ TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, k
   }
 
   // BUILD picked, its questions answered on the keyboard: 2 curves of 3 points, 1 1 inserted.
-  igds.send(menu.click("BUILD"));
+  menu.click(igds, "BUILD");
   REQUIRE(igds.expect("NUMBER OF CURVES AND STRINGERS?"));
-  igds.send("2 3\r");
+  igds.pty().send("2 3\r");
   REQUIRE(igds.expect("POINTS?"));
-  igds.send("1  0 0 0  0 10 0  0 20 0  10 0 0  10 10 5  10 20 0\r");
+  igds.pty().send("1  0 0 0  0 10 0  0 20 0  10 0 0  10 10 5  10 20 0\r");
   REQUIRE(igds.expect("POINTS?"));
-  igds.send("\r");
+  igds.pty().send("\r");
   REQUIRE(igds.expect("TANGENTS?"));
-  igds.send("\r");
+  igds.pty().send("\r");
   REQUIRE(igds.expect("INTERPOLATED CURVES AND STRINGERS?"));
-  igds.send("1 1\r");
+  igds.pty().send("1 1\r");
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
+  REQUIRE(igds.expect_gin());
 
   // D SURFACE: the projection typed; 3 curves of 5 points, 5 stringers of 3.
-  igds.send(menu.click("D SURFACE"));
+  menu.click(igds, "D SURFACE");
   REQUIRE(igds.expect("PROJECTION?"));
-  igds.send("O XY\r");
+  igds.pty().send("O XY\r");
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
+  REQUIRE(igds.expect_gin());
   const Box square = menu.layout.picture;
   auto after_key = [&](char key) {
-    const std::size_t from = igds.output().size();
-    igds.send(report(key, 300, 400));
-    REQUIRE(igds.expect(gin_on));
-    const TekDrawing d = decoded(igds.output().substr(from));
+    const std::size_t from = igds.pty().output().size();
+    igds.point_at(300, 400);
+    igds.type(std::string(1, key));
+    REQUIRE(igds.expect_gin());
+    const TekDrawing d = decoded(igds.pty().output().substr(from));
     REQUIRE_FALSE(d.pages.empty());
     for (const auto& error : d.errors) FAIL_CHECK(error);
     return d.pages.back();
@@ -236,32 +232,32 @@ TEST_CASE("igds 2250: the menu, the help environment, picks and typed entries, k
 
   // HELP from the execution environment: the explanation on a page of its own, then RETURN
   // gives back the picture that was on the screen.
-  igds.send(menu.click("HELP"));
+  menu.click(igds, "HELP");
   REQUIRE(igds.expect("IGDS WITH A 2250"));
   REQUIRE(expect_gin(igds, mores));
-  CHECK(in_picture(decoded(igds.output()).pages.back(), square).empty());
-  igds.send(menu.click("RETURN", true));
+  CHECK(in_picture(decoded(igds.pty().output()).pages.back(), square).empty());
+  menu.click(igds, "RETURN", true, 30);
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
-  CHECK(in_picture(decoded(igds.output()).pages.back(), square).size() == 22);
+  REQUIRE(igds.expect_gin());
+  CHECK(in_picture(decoded(igds.pty().output()).pages.back(), square).size() == 22);
 
   // ST FIRST, D FIRST, SAVE with a name typed, END CMS.
-  igds.send(menu.click("ST FIRST"));
+  menu.click(igds, "ST FIRST");
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
-  igds.send(menu.click("D FIRST"));
+  REQUIRE(igds.expect_gin());
+  menu.click(igds, "D FIRST");
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
-  igds.send(menu.click("SAVE"));
+  REQUIRE(igds.expect_gin());
+  menu.click(igds, "SAVE");
   REQUIRE(igds.expect("FILE NAME?"));
-  igds.send("TWIST\r");
+  igds.pty().send("TWIST\r");
   REQUIRE(igds.expect("READY"));
-  REQUIRE(igds.expect(gin_on));
-  igds.send(menu.click("END CMS"));
-  CHECK(igds.wait(20) == 0);
+  REQUIRE(igds.expect_gin());
+  menu.click(igds, "END CMS");
+  CHECK(igds.pty().wait(20) == 0);
   CHECK(std::filesystem::exists(disk.path() / "TWIST.IGDSDATA"));
   // Back to the VT window it started in.
-  CHECK(igds.output().ends_with(std::string("\x1F\x1B\x03")));
+  CHECK(igds.pty().output().ends_with(std::string("\x1F\x1B\x03")));
 }
 
 TEST_CASE("igds 2250 without a terminal that has a cross-hair says how to run it") {

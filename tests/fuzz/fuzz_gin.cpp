@@ -1,6 +1,8 @@
-// libFuzzer target of the GIN report decoder (devices/gin.h): any bytes, at both address
-// widths; nothing may crash, a report takes 5 to 7 bytes, its position lies on the screen, and
-// the same bytes decode the same way with what follows them changed. Seeds: tests/fuzz/corpus/gin.
+// libFuzzer target of the GIN report decoder and reader (devices/gin.h): any bytes, at both
+// address widths; nothing may crash, a report takes 5 to 7 bytes, its position lies on the
+// screen, and the same bytes decode the same way with what follows them changed; the reader, fed
+// the bytes in pieces cut where the first byte says, finds the same mark and report as fed them
+// whole. Seeds: tests/fuzz/corpus/gin.
 //   scripts/fuzz 60 gin
 #include <cstddef>
 #include <cstdint>
@@ -27,6 +29,19 @@ int gin(const std::uint8_t* data, std::size_t size) {
     // The report alone decodes to the same report.
     const auto again = decode_gin(bytes.substr(0, r->used), bits);
     if (!again || again->x != r->x || again->y != r->y || again->used != r->used) std::abort();
+  }
+  if (size > 1) {
+    const std::size_t cut = 1 + data[0] % (size - 1);
+    GinReader whole(100, 200, 10), pieces(100, 200, 10);
+    whole.feed(bytes.substr(1));
+    pieces.feed(bytes.substr(1, cut - 1));
+    pieces.feed(bytes.substr(cut));
+    whole.settle();
+    pieces.settle();
+    if (whole.marked() != pieces.marked() || whole.ahead() != pieces.ahead() ||
+        whole.done() != pieces.done() || whole.rest() != pieces.rest())
+      std::abort();
+    if (whole.ahead().size() + whole.rest().size() > size) std::abort();
   }
   return 0;
 }

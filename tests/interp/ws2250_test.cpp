@@ -13,6 +13,7 @@
 #include "tests/support/process.h"
 #include "tests/support/scripted.h"
 #include "tests/support/tek_decoder.h"
+#include "tests/support/tek_terminal.h"
 
 namespace igds {
 extern const Command build_command, display_command, store_command, end_command;
@@ -46,18 +47,6 @@ const Choice* option(const Command& command, std::string_view word) {
 
 const std::vector<std::string> build_entries{"2 3", "1  0 0 0  0 10 0  0 20 0  10 0 0  10 10 5", "",
                                              "", "1 1"};
-
-// A GIN report of `key` at (x, y), ended by CR.
-std::string report(char key, int x, int y) {
-  std::string r{key};
-  for (const int v : {x >> 5, x & 31, y >> 5, y & 31}) r += static_cast<char>(0x20 | v);
-  return r + "\r";
-}
-
-std::string middle(const MenuLayout& l, std::size_t k, char key = 'l') {
-  const Box& b = l.items[k];
-  return report(key, int((b.x0 + b.x1) / 2), int((b.y0 + b.y1) / 2));
-}
 
 }  // namespace
 
@@ -107,46 +96,63 @@ TEST_CASE("a command chosen without its option asks for it, as the typed word al
   CHECK(chosen.out.text.find("APL OR CMS?") != std::string::npos);
 }
 
-TEST_CASE("tek mode: a mouse button's report, its key with the high bit, is a pick") {
-  Igds t(TermMode::tek, true);
-  t.input.type(report(static_cast<char>('m' | 0x80), 500, 300) + "\x04");
-  const Event e = t.terminal.pick("");
-  REQUIRE(e.kind == Event::Kind::pick);
-  CHECK(e.text == "m");
-  CHECK(e.x == 500);
-  CHECK(e.y == 300);
-  // Bytes that are no report come back as they are.
-  t.input.type("abcde");
-  CHECK(t.terminal.pick("").kind == Event::Kind::key);
-}
+namespace {
 
-TEST_CASE("the 2250 workspace driven by the cross-hair: help, RETURN, a miss, BUILD, END CMS") {
-  Igds t(TermMode::tek, true);
-  const auto items = menu_items(false, menu_screen::label_columns);
-  const MenuLayout l = menu_layout(items.size());
-  auto at = [&](std::string_view label) {
+// One igds on a scratch disk in xterm's Tek window (tests/support/tek_terminal.h).
+struct Igds2250 {
+  TempDir dir;
+  Disk disk{dir.path()};
+  Session session{disk};
+  StringOutput out;
+  TekKeys input{out.text};
+  Terminal terminal{TermMode::tek, {}, out};
+  Interpreter interpreter{Options{}, disk, session, session.load(), terminal};
+  const std::vector<MenuItem> items = menu_items(false, menu_screen::label_columns);
+  const MenuLayout layout = menu_layout(items.size());
+  Igds2250() {
+    terminal.use_input(&input);
+    terminal.begin();
+  }
+  void click(std::string_view label) {
     const auto it = std::find_if(items.begin(), items.end(),
                                  [&](const MenuItem& i) { return i.label == label; });
     REQUIRE(it != items.end());
-    return static_cast<std::size_t>(it - items.begin());
-  };
-  std::string keys = middle(l, at("ERASE"));  // in the help environment: its explanation
-  keys += middle(l, at("HELP"));              // RETURN
-  keys += report('l', 10, 10);                // no item there: ignored
-  keys += report('6', 10, 10);                // no surface shown: a pick on nothing
-  keys += middle(l, at("BUILD"));
-  for (const auto& line : build_entries) keys += line + "\r";
-  keys += middle(l, at("END CMS"));
-  t.input.type(keys);
+    const Box& b = layout.items[static_cast<std::size_t>(it - items.begin())];
+    input.click(int((b.x0 + b.x1) / 2), int((b.y0 + b.y1) / 2));
+  }
+};
+
+}  // namespace
+
+TEST_CASE("the 2250 workspace driven by the cross-hair: help, RETURN, a miss, BUILD, END CMS") {
+  Igds2250 t;
+  t.click("ERASE");       // in the help environment: its explanation
+  t.click("HELP");        // RETURN
+  t.input.click(10, 10);  // no item there: ignored
+  t.input.point_at(10, 10);
+  t.input.type("6");  // no surface shown: a typed line, not a function key
+  t.input.type("\r");
+  t.click("BUILD");
+  for (const auto& line : build_entries) t.input.type(line + "\r");
+  t.input.type("LIST SURFACE\r");  // a command typed at the menu
+  t.click("END CMS");
   CHECK(Workspace2250(t.interpreter, t.terminal).run() == Interpreter::Outcome::ended);
   const std::string& shown = t.out.text;
   CHECK(shown.find("IGDS WITH A 2250") != std::string::npos);
   CHECK(shown.find("ERASE clears the Tektronix screen") != std::string::npos);
   CHECK(shown.find("NUMBER OF CURVES AND STRINGERS?") != std::string::npos);
-  CHECK(shown.find("READY") != std::string::npos);
+  CHECK(shown.find("INCORRECT COMMAND") != std::string::npos);  // the line 6
+  CHECK(shown.find("NOCUR 2  NOSTR 3") != std::string::npos);   // LIST SURFACE
   CHECK(t.interpreter.workspace().nocur == 2);
   CHECK(t.interpreter.workspace().nostr == 3);
   CHECK(t.input.left() == 0);
+  // A pick is echoed as the command it chose; READY once after each command.
+  const auto d = decode_tek(shown);
+  std::string all;
+  for (const auto& page : d.pages)
+    for (const auto& text : page.texts) all += text.text + "\n";
+  CHECK(all.find("BUILD\nNUMBER OF CURVES AND STRINGERS?") != std::string::npos);
+  CHECK(all.find("READY\nREADY") == std::string::npos);
 }
 
 TEST_CASE("the function keys' pictures of a surface: all, stringers, curves, points") {

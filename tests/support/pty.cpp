@@ -64,6 +64,19 @@ void PtySession::send(std::string_view text) {
   }
 }
 
+void PtySession::send_raw(std::string_view bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = write(master_, bytes.data(), bytes.size());
+    if (n < 0 && (errno == EAGAIN || errno == EINTR)) {
+      read_some(10);
+      continue;
+    }
+    if (n <= 0) return;
+    bytes.remove_prefix(static_cast<std::size_t>(n));
+  }
+  read_some(0);
+}
+
 bool PtySession::read_some(int timeout_ms) {
   pollfd p{master_, POLLIN, 0};
   if (poll(&p, 1, timeout_ms) <= 0) return false;

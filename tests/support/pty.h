@@ -23,6 +23,10 @@ class PtySession {
 
   // Types `text` (use "\r" for Enter, "\x03" for Ctrl-C, "\x04" for Ctrl-D).
   void send(std::string_view text);
+  // Bytes as a terminal sends them in one write (a cross-hair's report).
+  void send_raw(std::string_view bytes);
+  // Reads what the program wrote, waiting `timeout_ms` at most for something.
+  void pump(int timeout_ms) { read_some(timeout_ms); }
   // Waits until `text` appears in the output after the last match; true when it did before
   // `timeout_seconds`. The next expect() looks after it.
   bool expect(std::string_view text, double timeout_seconds = 10);
