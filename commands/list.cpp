@@ -74,7 +74,8 @@ std::string tangent_listing(const Workspace& ws) {
 }
 
 // How the surface's tangents and twists were chosen. The workspace knows one way today: the
-// border tangents as typed (zero ones included) and zero twists (math.md, the manual's choice).
+// border tangents as typed (zero ones included) and zero twists (docs/kernels.md, the manual's
+// choice).
 std::vector<std::string> interpolation_modes(const Workspace& ws) {
   return {
       ws.auto_tangents() ? "TANGENTS: AUTO (MARKS'S RULE)" : "TANGENTS: TYPED",

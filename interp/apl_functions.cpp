@@ -335,7 +335,7 @@ void AplEnvironment::define_line_functions() {
         return std::nullopt;
       },
       "COONS: PATCHES from NOCUR NOSTR INPPN INPTG");
-  // The blending functions of the patches (math.md), of each number of the argument.
+  // The blending functions of the patches (docs/kernels.md), of each number of the argument.
   const std::pair<const char*, double Hermite::*> blends[] = {
       {"F0", &Hermite::f0}, {"F1", &Hermite::f1}, {"G0", &Hermite::g0}, {"G1", &Hermite::g1}};
   for (const auto& [name, member] : blends) {

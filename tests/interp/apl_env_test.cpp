@@ -292,7 +292,7 @@ TEST_CASE("the blending functions, DISTA and the spline of one line are igds's k
 
 TEST_CASE("ASSON is PROSPAR of the points scaled, as the manual says") {
   Apl apl(surface(3, 2, 1, 1));
-  // kx ky kz of the angles 110 130 120 (math.md), then PROSPAR with (γ-90) (β-90).
+  // kx ky kz of the angles 110 130 120 (docs/kernels.md), then PROSPAR with (γ-90) (β-90).
   CHECK(apl("R←○(110 130 120)÷180").empty());
   CHECK(apl("K←(-2○R[2 3 1])÷(1○R[1 2 3])×1○R[3 1 2]").empty());
   CHECK(apl("P←1 4 3⍴0 0 0 1 2 3 ¯4 5 6 7 ¯8 9").empty());

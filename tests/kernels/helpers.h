@@ -97,7 +97,7 @@ inline Grid wavy_grid(int nocur, int nostr, std::uint64_t seed) {
   return g;
 }
 
-// P(u,v) = [F0(u) F1(u) G0(u) G1(u)] M [F0(v) F1(v) G0(v) G1(v)]^T of one patch (math.md),
+// P(u,v) = [F0(u) F1(u) G0(u) G1(u)] M [F0(v) F1(v) G0(v) G1(v)]^T of one patch (docs/kernels.md),
 // written out here independently of the kernels.
 inline Vec3 eval_patch(const double* m, double u, double v) {
   auto basis = [](double s, double b[4]) {

@@ -38,7 +38,7 @@ double rel(Vec3 a, Vec3 b) {
   return distance(a, b) / std::max(1.0, norm(b));
 }
 
-// Entry (r, c) of coordinate `k` of patch p in PATCHES (math.md's M, row by row).
+// Entry (r, c) of coordinate `k` of patch p in PATCHES (docs/kernels.md's M, row by row).
 double entry(const Array& patches, std::size_t p, int k, int r, int c) {
   return patches.ravel[48 * p + 16 * k + 4 * r + c];
 }
@@ -353,8 +353,9 @@ TEST_CASE("the sphere octant of the report agrees with Coons's quasi-sphere") {
   const GridTangents t = marks_grid_tangents(n, n, p);
   const Array twists = marks_twists(n, n, p);
   auto tw = as_vec3(twists);
-  // Marks's B of the quadrant patch (math.md's M, the same places: marks.md), corners C (pole,
-  // longitude 0), S (equator, longitude 0), E (pole, longitude 90), SE (equator, longitude 90).
+  // Marks's B of the quadrant patch (docs/kernels.md's M, the same places: marks.md), corners C
+  // (pole, longitude 0), S (equator, longitude 0), E (pole, longitude 90), SE (equator, longitude
+  // 90).
   const int C = 1 * n + 1, S = 21 * n + 1, E = 1 * n + 21, SE = 21 * n + 21;
   auto H = [&](int k) { return 20.0 * t.along_curves[k]; };
   auto V = [&](int k) { return 20.0 * t.along_stringers[k]; };
@@ -394,7 +395,7 @@ TEST_CASE("the sphere octant of the report agrees with Coons's quasi-sphere") {
   }
   // The figures in closed form: the F-mesh tangent is the chord of 4.5 degrees (the shorter of
   // two equal chords), 20 x 2R sin(2.25 deg) = 157.04; the twist at the pole is R sin^2(4.5 deg),
-  // x 400 = 246.2 (math.md's reference figures).
+  // x 400 = 246.2 (docs/kernels.md's reference figures).
   CHECK(V(C).y == doctest::Approx(40 * R * std::sin(step / 2)).epsilon(1e-13));
   CHECK(V(C).y == doctest::Approx(157.04).epsilon(1e-4));
   CHECK(T(C).x == doctest::Approx(400 * R * std::sin(step) * std::sin(step)).epsilon(1e-12));

@@ -25,7 +25,7 @@ void spline_of(const std::vector<Vec3>& points, Vec3 first, Vec3 last, std::vect
 }
 
 // First and second derivatives with respect to the arc length t = s·L of the Hermite arc, from
-// the derivatives of F0 F1 G0 G1 (math.md), written out independently of the kernel.
+// the derivatives of F0 F1 G0 G1 (docs/kernels.md), written out independently of the kernel.
 Vec3 first_derivative(Vec3 p0, Vec3 p1, Vec3 t0, Vec3 t1, double s) {
   double l = norm(p1 - p0);
   double f0 = 6 * s * s - 6 * s, f1 = -f0, g0 = 3 * s * s - 4 * s + 1, g1 = 3 * s * s - 2 * s;
@@ -37,8 +37,8 @@ Vec3 second_derivative(Vec3 p0, Vec3 p1, Vec3 t0, Vec3 t1, double s) {
   return (1 / (l * l)) * (f0 * p0 + f1 * p1) + (1 / l) * (g0 * t0 + g1 * t1);
 }
 
-// The same C2 system (math.md) assembled as a dense n x n matrix, rows 0 and n-1 fixing the end
-// tangents, solved by Gaussian elimination with partial pivoting: the reference for Thomas.
+// The same C2 system (docs/kernels.md) assembled as a dense n x n matrix, rows 0 and n-1 fixing the
+// end tangents, solved by Gaussian elimination with partial pivoting: the reference for Thomas.
 std::vector<Vec3> dense_solve(const std::vector<Vec3>& p, Vec3 first, Vec3 last) {
   const std::size_t n = p.size();
   std::vector<std::vector<double>> a(n, std::vector<double>(n + 3, 0.0));

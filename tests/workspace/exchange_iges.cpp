@@ -237,9 +237,9 @@ TEST_CASE("IGES: one surface with inner knots of multiplicity 3") {
   for (std::size_t k = 0; k < net.xyz.size(); ++k) CHECK(real(p[41 + 130 + k]) == net.xyz[k]);
 }
 
-TEST_CASE("IGES: a net of many rows, its numbers made ahead on two threads, in both forms") {
-  // 88 net rows by 58 columns: the rows' texts are made some rows at a time (on two threads
-  // when there are many), each number as Records::real writes it, every patch from its rows.
+TEST_CASE("IGES: a net of many rows, its numbers made some rows at a time, in both forms") {
+  // 88 net rows by 58 columns: the rows' texts are made some rows at a time, each number as
+  // Records::real writes it, every patch from its rows.
   const TestSurface t = test_surface(30, 20, 0, 0);
   const BezierNet net = surface_net(t.input, t.surface.patches);
   REQUIRE(net.rows == 88);

@@ -7,10 +7,6 @@
 #include <cstring>
 #include <span>
 
-#ifdef __linux__
-#include <sys/mman.h>
-#endif
-
 #include "workspace/numbers/fortran.h"
 
 namespace igds::disk {
@@ -19,20 +15,6 @@ namespace {
 
 constexpr std::size_t per_card = 8;  // (8F10.3)
 constexpr std::size_t i5 = 5, f10 = 10;
-
-// Room for `bytes` in `out`, asked for as transparent huge pages where the system allows
-// (Linux): on a virtual machine, faulting in 4 KB pages one by one costs more than writing the
-// cards. Advice only: a refusal leaves the ordinary pages.
-void reserve_large(std::string& out, std::size_t bytes) {
-  out.reserve(bytes);
-#ifdef __linux__
-  const std::uintptr_t page = 4096;
-  const auto from = (reinterpret_cast<std::uintptr_t>(out.data()) + page - 1) & ~(page - 1);
-  const auto to = (reinterpret_cast<std::uintptr_t>(out.data()) + out.capacity()) & ~(page - 1);
-  if (to > from && to - from >= (std::uintptr_t(1) << 22))
-    madvise(reinterpret_cast<void*>(from), to - from, MADV_HUGEPAGE);
-#endif
-}
 
 char* shape_card(char* w, const Array& a, std::size_t rank) {
   // An empty array keeps the card of its rank, all zeros, so that a reader's layout holds.
@@ -105,7 +87,6 @@ std::string char_cards(const Workspace& ws, std::size_t* overflow) {
   CardMaker cards(ws);
   const std::size_t size = cards.size();
   std::string out;
-  reserve_large(out, size + CardMaker::longest_card);
   out.resize(size + CardMaker::longest_card);
   out.resize(cards.fill(out.data(), out.size()));
   *overflow = cards.overflow();

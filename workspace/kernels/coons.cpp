@@ -53,8 +53,8 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
   const auto& tu = tangents.along_curves;
   const auto& tv = tangents.along_stringers;
   const bool per_chord = tangents.units == TangentUnits::per_chord;
-  // The factor of the tangents of an arc: its chord (math.md), or 1 for tangents per unit of
-  // parameter, 0 on a zero-length arc either way so that the arc is its point.
+  // The factor of the tangents of an arc: its chord (docs/kernels.md), or 1 for tangents per unit
+  // of parameter, 0 on a zero-length arc either way so that the arc is its point.
   auto scale = [per_chord](double chord) { return per_chord ? chord : chord > 0 ? 1.0 : 0.0; };
   assert(twists.empty() || twists.size() == nc * ns);
   auto twist = [&](std::size_t k) { return twists.empty() ? Vec3{} : Vec3(twists[k]); };
@@ -64,7 +64,7 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
       for (std::size_t j = 0; j + 1 < ns; ++j, m += 48) {
         const std::size_t k00 = i * ns + j, k10 = k00 + 1, k01 = k00 + ns, k11 = k01 + 1;
         // P(a,b) = P[i+b][j+a]; Pu(a,b) is scaled by the chord of curve i+b's arc j, Pv(a,b) by
-        // the chord of stringer j+a's arc i (math.md), the same chords the splines used.
+        // the chord of stringer j+a's arc i (docs/kernels.md), the same chords the splines used.
         const double lu0 = scale(chord_length(points[k00], points[k10]));
         const double lu1 = scale(chord_length(points[k01], points[k11]));
         const double lv0 = scale(chord_length(points[k00], points[k01]));

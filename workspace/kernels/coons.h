@@ -1,5 +1,5 @@
 // COONS: the tangents at every grid point and the patch matrices PATCHES (IGDS manual 3.2 and
-// Appendix III; spec math.md "Patches").
+// Appendix III; spec docs/kernels.md, "The mathematics").
 #pragma once
 
 #include <span>
@@ -11,8 +11,8 @@
 namespace igds {
 
 // What a tangent is measured against: IGDS's splines give tangents per unit of chord length, which
-// PATCHES scales by the chord of each arc (math.md); Marks's tangents (marks.h) are already per
-// unit of the patch parameter and go into PATCHES as they are.
+// PATCHES scales by the chord of each arc (docs/kernels.md); Marks's tangents (marks.h) are already
+// per unit of the patch parameter and go into PATCHES as they are.
 enum class TangentUnits { per_chord, per_parameter };
 
 // Tangents at every input point, NOCUR x NOSTR in point-number order: along the curves (the rows)
@@ -31,12 +31,12 @@ Vec3 border_tangent(const Array& inptg, std::size_t row);
 // by the border tangents of INPTG (2(NOCUR+NOSTR) x 4, row order as in workspace/state.h).
 GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg);
 
-// PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of math.md,
-// corners, then the tangents (per_chord: scaled by the chord length of their arc; per_parameter:
-// as they are, but zero along a zero-length arc, which is its point), then the twists: `twists`
-// holds one per input point (per unit of both patch parameters, marks.md), or is empty for the
-// zero twists of the manual. Written into `patches`, whose memory is reused when it is large
-// enough (Array::reshape_for_output).
+// PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of
+// docs/kernels.md, corners, then the tangents (per_chord: scaled by the chord length of their arc;
+// per_parameter: as they are, but zero along a zero-length arc, which is its point), then the
+// twists: `twists` holds one per input point (per unit of both patch parameters, marks.md), or is
+// empty for the zero twists of the manual. Written into `patches`, whose memory is reused when it
+// is large enough (Array::reshape_for_output).
 void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
                    Array& patches, Vec3View twists = {});
 

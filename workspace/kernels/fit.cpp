@@ -29,7 +29,8 @@ GridShape intpn_shape(int nocur, int nostr, int intcu, int intst) {
 namespace {
 
 // The blending weights of the int+2 parameter values a/(int+1), a = 0..int+1, as an
-// (int+2) x 4 matrix W (math.md); the parameters are computed as a/(int+1), never accumulated.
+// (int+2) x 4 matrix W (docs/kernels.md); the parameters are computed as a/(int+1), never
+// accumulated.
 std::vector<double> weights(int inserted) {
   const int n = inserted + 2;
   std::vector<double> w(4 * std::size_t(n));
@@ -84,7 +85,7 @@ template <class = void>
     v4 m[3][4];
     for (int k = 0; k < 3; ++k) {
       for (int r = 0; r < 4; ++r) std::memcpy(&m[k][r], src + 16 * k + 4 * r, sizeof(v4));
-      // Corners relative to the local origin: large offsets cost no precision (math.md).
+      // Corners relative to the local origin: large offsets cost no precision (docs/kernels.md).
       const v4 shift = {job.centre[k], job.centre[k], 0, 0};
       m[k][0] -= shift;
       m[k][1] -= shift;
@@ -278,7 +279,7 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3V
   choose_kernels(job, intpn.size());
   parallel_for(shape.rows, threads,
                [&job](std::size_t first, std::size_t last) { fit_rows(job, first, last); });
-  // The input points come out bit-exact (math.md).
+  // The input points come out bit-exact (docs/kernels.md).
   MutableVec3View grid = as_vec3(intpn);
   for (std::size_t i = 0; i < std::size_t(nocur); ++i) {
     for (std::size_t j = 0; j < std::size_t(nostr); ++j) {

@@ -1,5 +1,5 @@
 // FIT: the interpolated grid INTPN from the patch matrices (IGDS manual 3.3 and Appendix III;
-// spec math.md "Interpolated grid INTPN").
+// spec docs/kernels.md, "The mathematics").
 #pragma once
 
 #include <cstddef>

@@ -27,7 +27,7 @@ Line stringer(Vec3View points, std::size_t nocur, std::size_t nostr, std::size_t
 }
 
 // The first point after k that differs from point k (line.size if none): runs of equal
-// consecutive points are merged (math.md, degenerate data).
+// consecutive points are merged (docs/kernels.md, "Choices").
 std::size_t next_run(const Line& p, std::size_t k) {
   const Vec3 here = p[k];
   while (++k < p.size && p[k] == here) {
@@ -129,8 +129,9 @@ End last_end(const Line& p) {
   return {2 * (p[e0] - p[e1]) - t1, chord};
 }
 
-// A tangent per unit of patch parameter as IGDS stores it, per unit of chord (math.md); divided,
-// not multiplied by 1/chord, so that COONS's product by the chord comes back within an ulp.
+// A tangent per unit of patch parameter as IGDS stores it, per unit of chord (docs/kernels.md);
+// divided, not multiplied by 1/chord, so that COONS's product by the chord comes back within an
+// ulp.
 Vec3 per_chord(Vec3 t, double chord) {
   return chord > 0 ? Vec3{t.x / chord, t.y / chord, t.z / chord} : Vec3{};
 }

@@ -17,8 +17,8 @@ namespace igds {
 //           shorter of the two chords (zero when P(i+1) = P(i-1): no direction);
 //   ends, m >= 3 (parabolas): P'(1) = 2(P(2) - P(1)) - P'(2), P'(m) = 2(P(m) - P(m-1)) - P'(m-1).
 // Runs of equal consecutive points are merged first and every duplicate gets its merged point's
-// tangent, as the spline does (math.md); a line whose points all coincide (the pole of a sphere
-// octant) and a line of one point get zero tangents. O(n), allocates nothing.
+// tangent, as the spline does (docs/kernels.md); a line whose points all coincide (the pole of a
+// sphere octant) and a line of one point get zero tangents. O(n), allocates nothing.
 void marks_tangents(Vec3View points, std::span<Vec3> out);
 
 // Marks's tangents at every point of a NOCUR x NOSTR grid (point-number order): along the curves

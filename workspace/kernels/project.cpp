@@ -25,8 +25,8 @@ Vec3 unit(Vec3 v) {
   return (1 / norm(v)) * v;
 }
 
-// CONIC's frame (math.md): w towards the centre, r to the right of it, t up, z vertical on the
-// screen; D the distance from the eye to the centre.
+// CONIC's frame (docs/kernels.md): w towards the centre, r to the right of it, t up, z vertical on
+// the screen; D the distance from the eye to the centre.
 struct ConicFrame {
   Vec3 w, r, t;
   double distance;
@@ -55,7 +55,7 @@ AssonMatrix prospar_matrix(double px, double py) {
   return {-std::sin(px), std::sin(py), std::cos(px), std::cos(py), 1};
 }
 
-// ASSON's matrix (math.md): PROSPAR's with the axes at the angles z-x and y-z, each axis
+// ASSON's matrix (docs/kernels.md): PROSPAR's with the axes at the angles z-x and y-z, each axis
 // foreshortened as a true orthographic axonometric view makes it (the manual's ASSON: the
 // points scaled, then PROSPAR).
 AssonMatrix asson_matrix(std::array<double, 3> angles_degrees) {
@@ -203,7 +203,8 @@ void isom(Vec3View in, int axis, double angle_degrees, MutablePoint2View out) {
   check_sizes(in, out);
   if (!isom_parameters_valid(axis, angle_degrees))
     refuse(DataError::Problem::projection_parameters);
-  // math.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn obliquely.
+  // docs/kernels.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn
+  // obliquely.
   const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
   for (std::size_t k = 0; k < in.size(); ++k) {
     const Vec3 p = in[k];

@@ -49,12 +49,12 @@ ProjectiveMap projection_map(const View& view, Vec3 centre);
 // The manual's four functions, which project() dispatches to.
 // ORTHOGONAL plane: 1 XY -> (x, y), 2 XZ -> (x, z), 3 YZ -> (y, z) (DESIM[3] of the manual).
 void orthog(Vec3View in, int plane, MutablePoint2View out);
-// ISOMETRIC: axis 1, 2, 3 (x, y, z) dropped, angle in degrees, 0..90 (math.md).
+// ISOMETRIC: axis 1, 2, 3 (x, y, z) dropped, angle in degrees, 0..90 (docs/kernels.md).
 void isom(Vec3View in, int axis, double angle_degrees, MutablePoint2View out);
-// CONIC from view point V towards the centre C of the input's bounding box (math.md).
+// CONIC from view point V towards the centre C of the input's bounding box (docs/kernels.md).
 void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out);
 // ASSONOMETRIC (axonometric) with the angles between the projected x-y, y-z, z-x axes, each
-// strictly between 90 and 180 degrees, summing to 360 (math.md).
+// strictly between 90 and 180 degrees, summing to 360 (docs/kernels.md).
 void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out);
 // PROSPAR, the parallel projection ASSON makes of its scaled points, with the manual's two
 // angles a1 a2 in degrees: X = y cos a2 - x cos a1, Y = z - (x sin a1 + y sin a2).

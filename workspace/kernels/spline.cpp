@@ -50,7 +50,7 @@ void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out
     return;
   }
   // Merge runs of equal consecutive points, solve on the distinct ones and give every duplicate
-  // its merged point's tangent (math.md, degenerate data).
+  // its merged point's tangent (docs/kernels.md, "Choices").
   auto& q = scratch.distinct;
   auto& to = scratch.merged_to;
   q.clear();

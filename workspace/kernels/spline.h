@@ -1,5 +1,5 @@
 // CURVILINEO: the clamped chord-length cubic spline through one grid line (IGDS manual 3.1 and
-// Appendix III; spec math.md "Splines along every curve and every stringer").
+// Appendix III; docs/kernels.md, "The mathematics").
 #pragma once
 
 #include <cmath>
@@ -11,7 +11,8 @@
 
 namespace igds {
 
-// The cubic Hermite blending functions at s in [0, 1] (math.md): the manual's A0, A1, B0, B1.
+// The cubic Hermite blending functions at s in [0, 1] (docs/kernels.md): the manual's A0, A1, B0,
+// B1.
 struct Hermite {
   double f0, f1, g0, g1;
 };
@@ -20,7 +21,7 @@ inline Hermite hermite(double s) {
   return {2 * s3 - 3 * s2 + 1, -2 * s3 + 3 * s2, s3 - 2 * s2 + s, s3 - s2};
 }
 
-// The chord |p1 - p0| without overflow or underflow (math.md: hypot style): the plain square
+// The chord |p1 - p0| without overflow or underflow (docs/kernels.md, "Choices"): the plain square
 // root while the squares are safely representable, std::hypot beyond.
 inline double chord_length(Vec3 p0, Vec3 p1) {
   const Vec3 d = p1 - p0;
@@ -29,8 +30,8 @@ inline double chord_length(Vec3 p0, Vec3 p1) {
   return norm(d);
 }
 
-// Row i of the C2 system (math.md, coefficients crossed on purpose), for the points before, at
-// and after i: lower TG_(i-1) + diagonal TG_i + upper TG_(i+1) = known, with L_(i-1) = |back|
+// Row i of the C2 system (docs/kernels.md, coefficients crossed on purpose), for the points before,
+// at and after i: lower TG_(i-1) + diagonal TG_i + upper TG_(i+1) = known, with L_(i-1) = |back|
 // and L_i = |ahead| the chords. The manual's COEFFICIENTI and NOTO.
 struct SplineRow {
   double lower, diagonal, upper;
@@ -56,16 +57,17 @@ struct SplineScratch {
 };
 
 // Tangents (per unit of chord length) at every point of one grid line, given the end tangents
-// `first` and `last`: the C2 system of math.md with the crossed coefficients, solved by the Thomas
-// algorithm in O(n). Runs of equal consecutive points are merged, the spline is solved on the
-// distinct points and every duplicate gets its merged point's tangent; a line whose points all
+// `first` and `last`: the C2 system of docs/kernels.md with the crossed coefficients, solved by the
+// Thomas algorithm in O(n). Runs of equal consecutive points are merged, the spline is solved on
+// the distinct points and every duplicate gets its merged point's tangent; a line whose points all
 // coincide gets zero tangents. `out` has the size of `points`.
 void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out,
                      SplineScratch& scratch);
 void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out);
 
 // The point at s in [0, 1] of the arc from p0 to p1 with tangents t0, t1 per unit of length: the
-// tangents are scaled by the chord length |p1 - p0| (math.md), so a zero-length arc is its point.
+// tangents are scaled by the chord length |p1 - p0| (docs/kernels.md), so a zero-length arc is its
+// point.
 Vec3 spline_arc_point(Vec3 p0, Vec3 p1, Vec3 t0, Vec3 t1, double s);
 
 }  // namespace igds

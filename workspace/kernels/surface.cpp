@@ -34,7 +34,7 @@ std::size_t tangent_point(const SurfaceInput& in, std::size_t row) {
   return (row % 2 == 0 ? 0 : nc - 1) * ns + j + 1;
 }
 
-// What every interpolation needs: sizes, shapes, finite points (math.md, bad data).
+// What every interpolation needs: sizes, shapes, finite points (docs/kernels.md, "Data checks").
 void check_grid(const SurfaceInput& in) {
   // One curve or one stringer is a surface too (manual 4.1: "two integer positive numbers").
   if (in.nocur < 1 || in.nostr < 1 || double(in.nocur) * in.nostr < 2)
@@ -96,7 +96,7 @@ void interpolate_line(const SurfaceInput& in, Surface& out) {
           spline_arc_point(points[k], points[k + 1], tangents[k], tangents[k + 1], s);
     }
   }
-  // The input points come out bit-exact (math.md).
+  // The input points come out bit-exact (docs/kernels.md).
   for (std::size_t k = 0; k < n; ++k) grid[k * (inserted + 1)] = points[k];
 }
 
