@@ -20,7 +20,7 @@
 
 namespace igds {
 
-// The command-line options of igds (spec igds.md section 1), resolved at start.
+// The command-line options of igds (docs/interp.md, "Command line"), resolved at start.
 struct Options {
   std::filesystem::path disk = ".";
   TermMode term = TermMode::none;
@@ -43,8 +43,8 @@ struct Choice {
   std::string_view help = {};     // one line: what it stands for
 };
 
-// The first choice whose word starts with `typed`, case ignored (spec igds.md section 2: the
-// first entry in table order wins); nullptr when none does or `typed` is empty.
+// The first choice whose word starts with `typed`, case ignored (docs/interp.md, "The dialogue":
+// the first entry in table order wins); nullptr when none does or `typed` is empty.
 const Choice* choose(std::span<const Choice> choices, std::string_view typed);
 
 // What the user is asked for: the prompt's words, the HELP SHORT text at that prompt (one or two

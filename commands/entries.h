@@ -1,6 +1,6 @@
-// The entries of BUILD and CHANGE: point, tangent and grid entries (spec igds.md section 3),
-// their questions, and the loops that ask for them. Parsing is separate from asking, so that it
-// can be tested on words alone.
+// The entries of BUILD and CHANGE: point, tangent and grid entries (docs/interp.md, "The
+// questions"), their questions, and the loops that ask for them. Parsing is separate from asking,
+// so that it can be tested on words alone.
 #pragma once
 
 #include <cstddef>
@@ -21,12 +21,12 @@ namespace igds {
 void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* edits = nullptr);
 
 // `k tx ty tz` at a border point that is not a corner, `k tx ty tz f` at a corner (f = 1 along
-// the curve, 0 along the stringer): sets the matching row of `inptg` (spec igds.md section 3).
-// Throws EntryError. The row it changed is added to `edits` when given.
+// the curve, 0 along the stringer): sets the matching row of `inptg` (docs/interp.md, "The
+// questions"). Throws EntryError. The row it changed is added to `edits` when given.
 void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
                          Edits* edits = nullptr);
 
-// AUTO at TANGENTS? (spec marks.md): every border tangent of `inptg` set by Marks's rule from
+// AUTO at TANGENTS? (docs/marks.md): every border tangent of `inptg` set by Marks's rule from
 // the points of `inppn`, per unit of chord so that PATCHES holds Marks's vectors. Entries typed
 // after it override single tangents.
 void apply_auto_tangents(int nocur, int nostr, const Array& inppn, Array& inptg,

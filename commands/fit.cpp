@@ -1,4 +1,4 @@
-// FIT [name] (Marks 1970, CADA/REM/SUBROUTS; spec marks.md): NAME.CADADATA, Marks's fitting
+// FIT [name] (Marks 1970, CADA/REM/SUBROUTS; docs/marks.md): NAME.CADADATA, Marks's fitting
 // deck, becomes the current surface with Marks's tangents and twists, and NAME.CADALIST its
 // listing.
 #include <fmt/format.h>

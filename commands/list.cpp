@@ -42,7 +42,7 @@ std::string point_listing(const Workspace& ws) {
   for (int c = 1; c <= ws.nocur; ++c) {
     if (c > 1) out += '\n';  // curve by curve
     for (int place = 1; place <= ws.nostr; ++place) {
-      const int k = (c - 1) * ws.nostr + place;  // point-number order (spec igds.md section 4)
+      const int k = (c - 1) * ws.nostr + place;  // point-number order (docs/interp.md, "END APL")
       if (static_cast<std::size_t>(k) > rows) break;
       const double* xyz = p + 3 * (k - 1);
       out += fmt::format("{:>5}{:>6}{:>6}{}{}{}\n", k, c, place, column(xyz[0]), column(xyz[1]),

@@ -1,4 +1,4 @@
-// PUNCH [name] (Marks 1970, CADA/REM/BINARY; spec marks.md "The tape"): PATCHES on the 8-track
+// PUNCH [name] (Marks 1970, CADA/REM/BINARY; docs/marks.md, "The tape"): PATCHES on the 8-track
 // paper tape of the PDP-7 Multi-Patch Design Program, NAME.MPDPTAPE.
 #include <fmt/format.h>
 
@@ -14,7 +14,7 @@ namespace {
 
 using exchange::TapeError;
 
-// The PDP-7 held about ten patches at a time (marks.md).
+// The PDP-7 held about ten patches at a time (docs/marks.md).
 constexpr std::size_t mpdp_patches = 10;
 
 const Prompt file_prompt{"FILE NAME?",

@@ -1,4 +1,4 @@
-// The HP-GL/1 encoder and the plot layout (spec hpgl.md).
+// The HP-GL/1 encoder and the plot layout (docs/devices.md, "HP-GL plotter").
 #pragma once
 
 #include <algorithm>
@@ -25,7 +25,7 @@ struct PlotterModel {
   DevicePoint limit(Paper paper) const { return limits[static_cast<int>(paper)]; }
 };
 
-// HP 7475A (spec hpgl.md, Paper).
+// HP 7475A (docs/devices.md, "HP-GL plotter").
 inline constexpr PlotterModel hp7475a{
     "7475A", 0.02488, {{11040, 7721}, {16158, 11040}, {10365, 7962}, {16640, 10365}}};
 

@@ -1,5 +1,5 @@
-// PLOT: a picture on an HP-GL pen plotter (spec hpgl.md): the layout on the sheet, the stroke
-// order, the statistics.
+// PLOT: a picture on an HP-GL pen plotter (docs/devices.md, "HP-GL plotter"): the layout on the
+// sheet, the stroke order, the statistics.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// The order in which a plotter draws the strokes of a picture (spec hpgl.md, Quality of a plot),
+// The order in which a plotter draws the strokes of a picture (docs/devices.md, "HP-GL plotter"),
 // and the pen-up travel an order costs.
 #pragma once
 
@@ -40,7 +40,7 @@ double pen_up_travel(std::span<const Line> lines, DevicePoint from, DevicePoint 
 double pen_up_travel(const PlotOrder& order, std::span<const Line> lines, DevicePoint from,
                      DevicePoint to);
 
-// The plot order of spec hpgl.md, Quality of a plot: duplicate segments dropped (the first
+// The plot order of docs/devices.md, "HP-GL plotter": duplicate segments dropped (the first
 // drawn is kept; a zero-length segment cuts its path), paths whose ends meet (two at a point)
 // joined, then paths taken greedily by the nearest end from `start` (reversed when that end is
 // nearer; equal distances go to the earlier end); a path that starts where the last one ended

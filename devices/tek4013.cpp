@@ -8,7 +8,7 @@ struct Address {
   char hi_y, extra, lo_y, hi_x, lo_x;
 };
 
-// Spec tek4013.md, Address bytes.
+// docs/devices.md, "Tektronix 4013".
 Address split(int x, int y, int bits) {
   if (bits == 12)
     return {static_cast<char>(0x20 | ((y >> 7) & 31)),

@@ -1,5 +1,5 @@
-// The Tektronix 4013 encoder (spec tek4013.md): graph-mode addresses shortened as the terminal
-// allows, one GS per polyline, 7-bit bytes only, no CR or LF inside graph data.
+// The Tektronix 4013 encoder (docs/devices.md, "Tektronix 4013"): graph-mode addresses shortened as
+// the terminal allows, one GS per polyline, 7-bit bytes only, no CR or LF inside graph data.
 #pragma once
 
 #include <optional>

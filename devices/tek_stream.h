@@ -1,5 +1,5 @@
-// The terminal modes (spec tek4013.md), and the 4013 streams of a picture alone on the screen
-// (EXPORT TEK; the Tek screen of a session is devices/tek_screen.h).
+// The terminal modes (docs/devices.md, "Tektronix 4013"), and the 4013 streams of a picture alone
+// on the screen (EXPORT TEK; the Tek screen of a session is devices/tek_screen.h).
 #pragma once
 
 #include <string>

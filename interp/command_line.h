@@ -1,5 +1,5 @@
-// The command line of igds (spec igds.md section 1) and the choice of the terminal mode
-// (spec tek4013.md).
+// The command line of igds (docs/interp.md, "Command line") and the choice of the terminal mode
+// (docs/devices.md, "Tektronix 4013").
 #pragma once
 
 #include <optional>

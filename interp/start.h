@@ -4,7 +4,7 @@
 
 namespace igds {
 
-// The whole program; returns the exit status (spec igds.md section 1).
+// The whole program; returns the exit status (docs/interp.md, "Command line").
 int igds_main(int argc, char** argv);
 
 }  // namespace igds

@@ -1,5 +1,5 @@
-// The words of a line as IGDS reads them (spec igds.md section 2): blanks and commas separate
-// words, case is ignored by lookups, and comments are dropped.
+// The words of a line as IGDS reads them (docs/interp.md, "The dialogue"): blanks and commas
+// separate words, case is ignored by lookups, and comments are dropped.
 #pragma once
 
 #include <string>

@@ -9,7 +9,7 @@
 
 namespace igds {
 
-// The reports of the manual (spec igds.md section 2), word for word.
+// The reports of the manual (docs/interp.md, "The dialogue"), word for word.
 namespace reports {
 inline constexpr const char* incorrect_command = "INCORRECT COMMAND OR PARAMETERS";
 inline constexpr const char* incorrect_choice = "INCORRECT CHOICE OF PARAMETERS";

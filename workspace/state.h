@@ -1,4 +1,4 @@
-// The IGDS workspace variables (manual section 7, spec igds.md section 4): the whole session.
+// The IGDS workspace variables (manual section 7, docs/interp.md, "END APL"): the whole session.
 #pragma once
 
 #include <array>
@@ -27,7 +27,7 @@ struct Description {
   friend bool operator==(const Description&, const Description&) = default;
 };
 
-// The picture of DISPLAY PICTURE: the DUCT picture file's text (spec duct.md), which is what is
+// The picture of DISPLAY PICTURE: the DUCT picture file's text (docs/exchange.md), which is what is
 // kept on the disk, and the drawing it makes seen as `desim` says, made once when the image is
 // made (workspace/images.h picture_image).
 struct ImagePicture {
@@ -222,7 +222,7 @@ struct Workspace {
   Changes changes;  // not a variable of the manual: how the variables above changed
 
   // STATUS[3]: the twists of the surface's patches, 0 ZERO (the manual's), 1 MARKS (CHANGE
-  // TWISTS; spec marks.md). STATUS[4]: 1 when its border tangents were set by AUTO.
+  // TWISTS; docs/marks.md). STATUS[4]: 1 when its border tangents were set by AUTO.
   static constexpr std::size_t status_twists = 2, status_auto = 3;
   bool marks_twists() const { return status[status_twists] == 1; }
   bool auto_tangents() const { return status[status_auto] == 1; }

@@ -1,4 +1,4 @@
-// The workspace's variables by name (manual section 7, spec igds.md section 4): one table that
+// The workspace's variables by name (manual section 7, docs/interp.md, "END APL"): one table that
 // the session file, the checks of every file and of the APL environment, and the listings read.
 // Each variable's element type, rank, shape and limits are stated here and nowhere else.
 #pragma once

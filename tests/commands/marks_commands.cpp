@@ -1,4 +1,4 @@
-// Marks 1970 in the conversation (spec marks.md): AUTO at TANGENTS?, CHANGE TWISTS, FIT, PUNCH,
+// Marks 1970 in the conversation (docs/marks.md): AUTO at TANGENTS?, CHANGE TWISTS, FIT, PUNCH,
 // and the surface's modes kept by SAVE, RESTORE and the session.
 #include <doctest/doctest.h>
 
@@ -86,7 +86,7 @@ double element(const Array& patches, std::size_t p, int k, int r, int c) {
   return patches.ravel[48 * p + 16 * std::size_t(k) + 4 * std::size_t(r) + std::size_t(c)];
 }
 
-// Card images of a deck (spec marks.md): MR NC, the keys 18 a card, then per point x y z and the
+// Card images of a deck (docs/marks.md): MR NC, the keys 18 a card, then per point x y z and the
 // given vectors, nine fields a card.
 std::string deck_text(int rows, int columns, const std::vector<int>& keys,
                       const std::vector<std::vector<double>>& numbers) {
@@ -341,7 +341,7 @@ TEST_CASE("PUNCH writes the tape; read back it is PATCHES number by number, MPDP
     for (int k = 0; k < 3; ++k)
       for (int r = 0; r < 4; ++r)
         for (int c = 0; c < 4; ++c) {
-          // S_V, SE_V, E_H and SE_H change sign on the tape (marks.md).
+          // S_V, SE_V, E_H and SE_H change sign on the tape (docs/marks.md).
           const bool reversed =
               (r == 0 && c == 3) || (r == 1 && c == 3) || (r == 3 && c == 0) || (r == 3 && c == 1);
           const double value = element(m, p, k, r, c);

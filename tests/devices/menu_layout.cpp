@@ -29,7 +29,7 @@ bool inside(const Box& a, const Box& outer) {
 }  // namespace
 
 TEST_CASE("menu layout: boxes inside the screen, apart from each other and from the rest") {
-  // xterm's Tek window shows x 0..1023, y 0..767 (spec tek4013.md).
+  // xterm's Tek window shows x 0..1023, y 0..767 (docs/devices.md, "Tektronix 4013").
   const Box screen{0, 0, 1023, 767};
   for (const std::size_t n : {1u, 19u, 23u, 29u, 31u, 32u, 45u, 62u}) {
     CAPTURE(n);

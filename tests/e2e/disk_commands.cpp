@@ -1,5 +1,5 @@
-// RESTORE, SAVE and WRITE with the real binary (manual 4.3, 4.6, 4.7; spec igds.md sections 3
-// and 5): the dialogue, every report, and what reaches the disk.
+// RESTORE, SAVE and WRITE with the real binary (manual 4.3, 4.6, 4.7; docs/disk.md): the
+// dialogue, every report, and what reaches the disk.
 #include <doctest/doctest.h>
 
 #include <filesystem>

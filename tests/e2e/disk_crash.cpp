@@ -1,4 +1,4 @@
-// Crash safety of the session (spec igds.md section 4): igds killed with SIGKILL at random
+// Crash safety of the session (docs/disk.md): igds killed with SIGKILL at random
 // moments of a command file always leaves, on restart, the state after one of its commands,
 // never before a command that had printed READY, and never a damaged session.
 #include <doctest/doctest.h>

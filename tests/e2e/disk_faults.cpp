@@ -1,5 +1,5 @@
 // Every command that touches the disk, on a disk that fails under igds's feet (issue: one error
-// base; spec igds.md section 5): read-only, full, or removed while igds runs. Each command gives
+// base; docs/disk.md): read-only, full, or removed while igds runs. Each command gives
 // its report, igds goes on to READY, and the session on the disk stays the last saved one.
 #include <doctest/doctest.h>
 

@@ -1,4 +1,4 @@
-// One igds per disk (spec igds.md section 4), with the real binary: a second one is told which
+// One igds per disk (docs/disk.md), with the real binary: a second one is told which
 // process holds the disk and stops without touching anything; a lock left by a killed igds is
 // taken over with a notice.
 #include <doctest/doctest.h>

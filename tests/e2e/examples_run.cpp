@@ -19,7 +19,7 @@ namespace igds::test {
 
 namespace {
 
-// The numbers of an IGDSCHAR file (spec igds.md section 5), by variable.
+// The numbers of an IGDSCHAR file (docs/disk.md), by variable.
 struct CharFile {
   std::vector<int> status, sizes;  // STATUS; NOCUR NOSTR INTCU INTST
   std::vector<int> inppn_shape, inptg_shape, intpn_shape, patches_shape;
@@ -161,7 +161,8 @@ TEST_CASE("every example's 4013 stream is rendered by tek2plot without complaint
     auto r = run_igds({"--disk", disk.path().string(), "--term", "tek", e.file.string()});
     CHECK(r.status == 0);
     CHECK(r.err == "");
-    // A 4013 is a 7-bit terminal (spec tek4013.md): APL characters must not reach it as UTF-8.
+    // A 4013 is a 7-bit terminal (docs/devices.md, "Tektronix 4013"): APL characters must not reach
+    // it as UTF-8.
     auto wide = std::find_if(r.out.begin(), r.out.end(),
                              [](char c) { return static_cast<unsigned char>(c) >= 0x80; });
     if (wide != r.out.end()) {

@@ -1,4 +1,4 @@
-// Marks 1970 with the real binary (spec marks.md): AUTO, CHANGE TWISTS, FIT, PUNCH, the
+// Marks 1970 with the real binary (docs/marks.md): AUTO, CHANGE TWISTS, FIT, PUNCH, the
 // transcript word for word, the files on the disk, and the modes kept by the session.
 #include <doctest/doctest.h>
 

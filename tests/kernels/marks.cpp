@@ -1,5 +1,5 @@
 // Marks's tangents and twists (workspace/kernels/marks.h) and PATCHES built from them (coons.h),
-// checked against the formulas of spec marks.md and against the report's own sphere octant.
+// checked against the formulas of docs/marks.md and against the report's own sphere octant.
 #include "workspace/kernels/marks.h"
 
 #include <doctest/doctest.h>
@@ -90,7 +90,7 @@ TEST_CASE("two points: the chord at both; one point: zero") {
   CHECK(tangents_of(none).empty());
 }
 
-TEST_CASE("the formulas of marks.md on three points") {
+TEST_CASE("the formulas of docs/marks.md on three points") {
   const Vec3 p1{0, 0, 0}, p2{3, 4, 0}, p3{4, 4, 1};
   const auto t = tangents_of({p1, p2, p3});
   // Interior: direction P3 - P1, length min(|P2 - P1|, |P3 - P2|) = sqrt(2).
@@ -337,9 +337,9 @@ TEST_CASE("a translational surface has zero twists") {
   for (Vec3 v : as_vec3(far_twists)) CHECK(v == Vec3{});
 }
 
-// The report's check (marks.md "The paper's check"): an octant of a sphere of radius 100 divided
-// 20 x 20 in latitude and longitude, with one more row and column of sphere points on every side,
-// its corner tangents x 20 and twists x 400 against Coons's quasi-sphere (a = 4(sqrt 2 - 1)).
+// The report's check (docs/marks.md "The paper's check"): an octant of a sphere of radius 100
+// divided 20 x 20 in latitude and longitude, with one more row and column of sphere points on every
+// side, its corner tangents x 20 and twists x 400 against Coons's quasi-sphere (a = 4(sqrt 2 - 1)).
 TEST_CASE("the sphere octant of the report agrees with Coons's quasi-sphere") {
   const double R = 100, step = std::numbers::pi / 40;  // 4.5 degrees
   const int n = 23;                                    // 21 + one more on each side
@@ -353,8 +353,8 @@ TEST_CASE("the sphere octant of the report agrees with Coons's quasi-sphere") {
   const GridTangents t = marks_grid_tangents(n, n, p);
   const Array twists = marks_twists(n, n, p);
   auto tw = as_vec3(twists);
-  // Marks's B of the quadrant patch (docs/kernels.md's M, the same places: marks.md), corners C
-  // (pole, longitude 0), S (equator, longitude 0), E (pole, longitude 90), SE (equator, longitude
+  // Marks's B of the quadrant patch (docs/kernels.md's M, the same places: docs/marks.md), corners
+  // C (pole, longitude 0), S (equator, longitude 0), E (pole, longitude 90), SE (equator, longitude
   // 90).
   const int C = 1 * n + 1, S = 21 * n + 1, E = 1 * n + 21, SE = 21 * n + 21;
   auto H = [&](int k) { return 20.0 * t.along_curves[k]; };

@@ -110,7 +110,7 @@ TekDrawing decode_tek(std::string_view s) {
       beam.x += cell_w;
       continue;
     }
-    // Graph or point mode: address bytes (spec tek4013.md, Address bytes).
+    // Graph or point mode: address bytes (docs/devices.md, "Tektronix 4013").
     if (c < 0x20 || c >= 0x80) {
       error(i, fmt::format("byte 0x{:02X} inside graph data", c));
       continue;

@@ -1,4 +1,4 @@
-// CMS names (spec igds.md section 5): what is a name, and that nothing else reaches the disk.
+// CMS names (docs/disk.md): what is a name, and that nothing else reaches the disk.
 #include <doctest/doctest.h>
 
 #include <filesystem>

@@ -1,5 +1,5 @@
 // The user's disk (CMS's P-disk): CMS file names and the files igds reads and writes there
-// (spec igds.md section 5). Nothing is ever read or written outside the disk's folder.
+// (docs/disk.md). Nothing is ever read or written outside the disk's folder.
 #pragma once
 
 #include <cstddef>

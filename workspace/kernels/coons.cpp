@@ -69,7 +69,7 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
         const double lu1 = scale(chord_length(points[k01], points[k11]));
         const double lv0 = scale(chord_length(points[k00], points[k01]));
         const double lv1 = scale(chord_length(points[k10], points[k11]));
-        // The twists T(a,b) of corner P(a,b) fill the lower right block (marks.md).
+        // The twists T(a,b) of corner P(a,b) fill the lower right block (docs/marks.md).
         const Vec3 rows[4][4] = {
             {points[k00], points[k01], lv0 * tv[k00], lv0 * tv[k01]},
             {points[k10], points[k11], lv1 * tv[k10], lv1 * tv[k11]},

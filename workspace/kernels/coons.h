@@ -34,9 +34,9 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
 // PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of
 // docs/kernels.md, corners, then the tangents (per_chord: scaled by the chord length of their arc;
 // per_parameter: as they are, but zero along a zero-length arc, which is its point), then the
-// twists: `twists` holds one per input point (per unit of both patch parameters, marks.md), or is
-// empty for the zero twists of the manual. Written into `patches`, whose memory is reused when it
-// is large enough (Array::reshape_for_output).
+// twists: `twists` holds one per input point (per unit of both patch parameters, docs/marks.md), or
+// is empty for the zero twists of the manual. Written into `patches`, whose memory is reused when
+// it is large enough (Array::reshape_for_output).
 void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
                    Array& patches, Vec3View twists = {});
 

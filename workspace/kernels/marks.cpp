@@ -44,7 +44,7 @@ std::size_t previous_run(const Line& p, std::size_t k) {
   return p.size;
 }
 
-// Forrest's F-mesh rule between `previous` and `next` (marks.md): the direction of next -
+// Forrest's F-mesh rule between `previous` and `next` (docs/marks.md): the direction of next -
 // previous, the length of the shorter of the chords `back` and `ahead` to the point between them;
 // no direction when the line turns back onto the previous point.
 Vec3 f_mesh(Vec3 previous, Vec3 next, double back, double ahead) {

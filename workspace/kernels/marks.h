@@ -1,4 +1,4 @@
-// Marks 1970 (spec marks.md; CADA/REM/SUBROUTS's HORTANV, VERTANV and TWISTV): the tangents and
+// Marks 1970 (docs/marks.md; CADA/REM/SUBROUTS's HORTANV, VERTANV and TWISTV): the tangents and
 // twists of a grid estimated from its points alone, per unit of the patch parameter.
 #pragma once
 
@@ -11,7 +11,7 @@
 namespace igds {
 
 // Marks's tangents per unit of patch parameter at every point of one grid line, into `out` (the
-// size of `points`). With P(1..m) the line's distinct points (marks.md):
+// size of `points`). With P(1..m) the line's distinct points (docs/marks.md):
 //   m = 2:  P'(1) = P'(2) = P(2) - P(1);
 //   interior points (Forrest's F-mesh): the direction of P(i+1) - P(i-1), the length of the
 //           shorter of the two chords (zero when P(i+1) = P(i-1): no direction);
@@ -39,7 +39,7 @@ Array marks_border_tangents(int nocur, int nostr, Vec3View points);
 Array border_tangents_of(int nocur, int nostr, Vec3View points, const GridTangents& tangents);
 
 // TWISTV: twists per unit of both patch parameters at every point, (NOCUR*NOSTR) x 3 in
-// point-number order, by Birkhoff and de Boor (marks.md):
+// point-number order, by Birkhoff and de Boor (docs/marks.md):
 //   P''(i,j) = 1/4 [P(i+1,j+1) + P(i-1,j-1) - P(i+1,j-1) - P(i-1,j+1)].
 // A diagonal neighbour off the grid is rebuilt from the two points between it and the centre, and
 // the twist is zero when one of those is off the grid too. On a rectangular grid whose points are

@@ -124,7 +124,7 @@ void interpolate_into(const SurfaceInput& input, Surface& out) {
     return;
   }
   const auto points = as_vec3(*input.inppn);
-  // Marks's twists (marks.md, Birkhoff and de Boor) or the manual's zero block.
+  // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
   const Array twists =
       input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
   coons_patches(input.nocur, input.nostr, points,
