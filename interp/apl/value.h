@@ -160,7 +160,7 @@ struct UninitialisedAllocator {
     if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
     return static_cast<T*>(::operator new(n * sizeof(T)));
   }
-  void deallocate(T* p, std::size_t n) { ::operator delete(p, n * sizeof(T)); }
+  void deallocate(T* p, std::size_t) { ::operator delete(p); }
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
     ::new (static_cast<void*>(p)) U;
