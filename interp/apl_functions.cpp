@@ -338,7 +338,9 @@ void AplEnvironment::define_line_functions() {
   // The blending functions of the patches (docs/kernels.md), of each number of the argument.
   const std::pair<const char*, double Hermite::*> blends[] = {
       {"F0", &Hermite::f0}, {"F1", &Hermite::f1}, {"G0", &Hermite::g0}, {"G1", &Hermite::g1}};
-  for (const auto& [name, member] : blends) {
+  for (const auto& blend : blends) {
+    const char* name = blend.first;
+    double Hermite::*member = blend.second;
     session_.define_native(
         name, 1,
         [member](Args, Args s) -> std::optional<Value> {
