@@ -23,6 +23,9 @@ namespace igds {
 
 class Disk;
 struct Command;
+namespace disk {
+struct AplWorkspace;
+}
 
 inline constexpr std::string_view apl_prompt = "      ";
 
@@ -101,6 +104,13 @@ class AplEnvironment final : public apl::Host {
   void run_command(std::vector<std::string> words);
   // The workspace as APL values again, and nothing pending for START (the surface was replaced).
   void surface_replaced();
+  // The user's variables into the workspace (Workspace::apl_variables), when they changed.
+  void keep_variables();
+  // )LOAD and )COPY: the functions and variables of `from` (those `wanted`, all when empty) into
+  // the session, replacing those of the same names; `found` gets the names taken. Returns the
+  // names that could not be taken.
+  std::vector<std::string> take(const disk::AplWorkspace& from, const std::set<std::string>& wanted,
+                                std::set<std::string>& found);
   // A line read for ALFINP and NUMINP: HELP there is answered (EXPL) and the line read again.
   std::string read_answer(int code);
   // The codes of a command's words (PARxx, GETCOM), its option asked when it is missing.
@@ -114,6 +124,8 @@ class AplEnvironment final : public apl::Host {
   // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
   // statement, not a copy of INTPN.
   std::map<std::string, apl::Value, std::less<>> values_;
+  std::uint64_t kept_version_ = ~std::uint64_t{0};  // of the variables in ws_.apl_variables
+  std::set<std::string> not_kept_;                  // too large for the session, said once
 };
 
 }  // namespace igds

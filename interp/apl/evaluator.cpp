@@ -146,6 +146,7 @@ void Evaluator::store(std::uint32_t id, Value v) {
     return;
   }
   sym.value = std::move(v);
+  ++global_changes_;
 }
 
 void Evaluator::index_store(std::uint32_t id, const Instr& in) {
@@ -178,6 +179,7 @@ void Evaluator::index_store(std::uint32_t id, const Instr& in) {
   }
   if (!sym.value) throw Error(ErrorKind::value);
   index_assign(ctx, *sym.value, indices, v);
+  ++global_changes_;
 }
 
 NameClass Evaluator::static_class(const std::string& name) const {
@@ -304,6 +306,7 @@ bool Evaluator::erase(const std::string& name) {
   }
   if (sym.value) {
     sym.value.reset();
+    ++global_changes_;
     return true;
   }
   return false;
@@ -315,6 +318,7 @@ void Evaluator::clear() {
     s.value.reset();
     s.function.reset();
   }
+  ++global_changes_;
   ctx.io = 1;
   ctx.pp = 10;
   ctx.ct = 1e-13;
@@ -1316,6 +1320,7 @@ Value Evaluator::system_function(SystemName s, const Value& b) {
               r = 1;
             } else if (!slot && !sym.owned && !sym.native) {
               sym.value.reset();
+              ++global_changes_;
               r = 1;
             }
           }

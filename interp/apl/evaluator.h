@@ -53,6 +53,8 @@ class Evaluator {
 
   // The session's global variables, defined functions and natives, by name.
   std::vector<std::pair<std::string, Value>> globals() const;
+  // Changes with every assignment or erasure of a global variable.
+  std::uint64_t global_changes() const { return global_changes_; }
   std::vector<std::string> function_names(bool natives) const;
   std::shared_ptr<const DefinedFunction> function(const std::string& name) const;
   const NativeEntry* native(const std::string& name) const;
@@ -169,6 +171,7 @@ class Evaluator {
   int shadowing_ = 0;             // frames whose locals hide a function's name
   std::u32string pending_;        // what ⍞← put on the line, not yet ended
   std::uint64_t started_ = 0;     // the session's start, for ⎕AI (milliseconds)
+  std::uint64_t global_changes_ = 0;
 };
 
 }  // namespace igds::apl
