@@ -460,6 +460,15 @@ TEST_CASE("the user's variables and functions are the workspace's: kept, back in
   CHECK(clash("C") == Lines{"⍴AB"});
   CHECK(clash.ws.apl_variables == apl.ws.apl_variables);
 
+  // Functions forged in a session or a file are defined as typed ones are, or said and left out.
+  Workspace forged = apl.ws;
+  forged.functions = {{"Z←G\xFF X", "Z←X"}, {"Z←INPPN X", "Z←X"}, {"Z←H X", "Z←X+\xE2\x88"}};
+  forged.apl_variables = {{"\xE2\x88\x86X", {}, false, {3}, {}}};
+  Apl odd(forged);
+  CHECK(odd.reported.size() == 2);
+  CHECK(odd("∆X") == Lines{"3"});
+  CHECK(odd.ws.functions.size() == 1);
+
   // The session file holds at most 8 MB of them: a larger one is said once, and )SAVE keeps it.
   CHECK(apl("B←1100000⍴1.5") ==
         Lines{"B IS NOT KEPT WITH THE SESSION (MORE THAN 8 MB IN ALL); )SAVE KEEPS IT"});
