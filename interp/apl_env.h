@@ -71,6 +71,8 @@ class AplEnvironment final : public apl::Host {
   // variable made again from it: PATCHES from the inputs, INTPN from PATCHES), or the reason it
   // cannot be, in which case the environment stays.
   std::optional<std::string> start();
+  // No IGDS variable assigned since the last START: the workspace is whole, and may be saved.
+  bool settled() const { return assigned_.empty(); }
   // Names completion offers: variables, functions, system commands.
   std::vector<std::string> names() const;
   // The workspace may have changed outside APL (commands ran since the last line).

@@ -2,10 +2,13 @@
 // start on the same disk, and )SAVE )CLEAR )LOAD )COPY act on them with the surface.
 #include <doctest/doctest.h>
 
+#include <signal.h>
+
 #include <filesystem>
 #include <string>
 
 #include "tests/e2e/e2e_support.h"
+#include "tests/support/pty.h"
 #include "workspace/disk/frame.h"
 
 namespace igds::test {
@@ -58,6 +61,33 @@ IGDS: )"));
   auto third = run_commands(disk, "END APL\n)VARS\n)FNS\n)OFF\n");
   CHECK(shows(third.out, "      )VARS\nE T\nIGDS: "));
   CHECK(shows(third.out, "      )FNS\nIGDS: "));
+}
+
+TEST_CASE("END APL: what a line defined is on the disk when igds is killed after it") {
+  TempDir disk, home;
+  {
+    PtySession igds({igds_binary().string(), "--term", "none", "--disk", disk.path().string()},
+                    {{"TERM", "dumb"},
+                     {"INPUTRC", "/dev/null"},
+                     {"HOME", home.path().string()},
+                     {"IGDS_DISK", ""}});
+    REQUIRE(igds.expect("READY"));
+    igds.send("END APL\r");
+    igds.send(
+        "V\xE2\x86\x90\xE2\x8D\xB3"
+        "3\r");  // V←⍳3
+    igds.send(
+        "\xE2\x88\x87Z\xE2\x86\x90"
+        "F X\r");                                 // ∇Z←F X
+    igds.send("Z\xE2\x86\x90X+V\xE2\x88\x87\r");  // Z←X+V∇
+    // The lines are read one after the other: this one's answer comes after the others' saves.
+    igds.send("'DONE'\r");
+    REQUIRE(igds.expect("DONE\r\n"));
+    ::kill(igds.pid(), SIGKILL);
+    igds.wait();
+  }
+  auto after = run_commands(disk, "END APL\nF 10\n)OFF\n");
+  CHECK(shows(after.out, "      F 10\n11 12 13\n"));
 }
 
 TEST_CASE("END APL: )SAVE, )CLEAR, )LOAD and )COPY on the whole APL workspace") {

@@ -438,7 +438,6 @@ Workspace Session::State::read_session() {
   }
   ws.functions = t.functions;
   ws.apl_variables = t.apl_variables;
-  if (!t.apl_variables_damage.empty()) keep_apl_variables_aside(t.apl_variables_damage);
   if (t.current != 0) {
     if (!t.derived) {
       for (auto [v, stored] :
@@ -513,6 +512,8 @@ Workspace Session::State::read_session() {
     // Refused, it is written no more: the next save writes the session with the journal then.
     rewrite = rewrite || !journal;
   }
+  // The rest of the session read: a forged section of END APL's variables costs itself alone.
+  if (!t.apl_variables_damage.empty()) keep_apl_variables_aside(t.apl_variables_damage);
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
   saved_known = true;
