@@ -438,6 +438,11 @@ TEST_CASE("the user's variables and functions are the workspace's: kept, back in
   REQUIRE(apl.ws.apl_variables.size() == 2);
   CHECK(apl.ws.apl_variables[0] == AplVariable{"C", {3}, true, {}, U"⍴AB"});
   CHECK(apl.ws.apl_variables[1] == AplVariable{"V", {2, 3}, false, {1, 2, 3, 4, 5, 6}, {}});
+  // The system variables are the session's, not the user's.
+  CHECK(apl("⎕IO←0").empty());
+  CHECK(apl("⎕PP←5").empty());
+  CHECK(apl.ws.apl_variables.size() == 2);
+  CHECK(apl("⎕IO←1").empty());
   // Changed in place, erased: the workspace follows.
   CHECK(apl("V[1;1]←¯0.5").empty());
   CHECK(apl.ws.apl_variables[1].numbers[0] == -0.5);

@@ -191,8 +191,8 @@ TEST_CASE("a forged NAME.IGDSAPLW: each refusal says its reason, nothing huge is
   }
   {
     Forged v;
-    v.name = std::string(300, 'A');
-    CHECK(loaded(disk, with_variables({v})) == refused("A VARIABLE'S NAME THAT IS NO APL NAME"));
+    v.name = std::string(3000, 'A');  // APL's names have no limit of length
+    CHECK(loaded(disk, with_variables({v})) == "(loaded)");
     v.name = "INPPN";
     CHECK(loaded(disk, with_variables({v})) == refused("INPPN IS AN IGDS VARIABLE"));
   }

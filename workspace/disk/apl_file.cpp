@@ -16,12 +16,11 @@ namespace {
 // The largest IGDSAPLW file read (larger ones are refused before they are read).
 constexpr std::size_t max_apl_file_bytes = std::size_t(1) << 31;
 constexpr std::uint32_t max_rank = 8;
-constexpr std::size_t max_name_bytes = 256;
 constexpr std::uint64_t max_axis = std::uint64_t(1) << 53;
 
 // An APL name as END APL folds it: A-Z, then A-Z, 0-9, _, ∆ or ⍙ (UTF-8).
 bool apl_name(std::string_view name) {
-  if (name.empty() || name.size() > max_name_bytes) return false;
+  if (name.empty()) return false;
   for (std::size_t i = 0; i < name.size();) {
     const char c = name[i];
     const bool letter = (c >= 'A' && c <= 'Z') || c == '_';
@@ -95,9 +94,7 @@ std::vector<AplVariable> read_variables(Reader& r) {
   std::vector<AplVariable> out(count);
   for (std::size_t k = 0; k < out.size(); ++k) {
     AplVariable& v = out[k];
-    const std::uint32_t name_bytes = r.u32();
-    if (name_bytes > max_name_bytes) throw Damage("FORMAT: A VARIABLE'S NAME THAT IS NO APL NAME");
-    v.name = std::string(r.bytes(name_bytes));
+    v.name = std::string(r.bytes(r.u32()));  // as long as APL's names: bounded by the bytes
     if (!apl_name(v.name)) throw Damage("FORMAT: A VARIABLE'S NAME THAT IS NO APL NAME");
     // IGDS's own variables are the workspace's, never the user's.
     if (find_variable(v.name)) throw Damage(fmt::format("FORMAT: {} IS AN IGDS VARIABLE", v.name));
