@@ -178,7 +178,10 @@ AplEnvironment::AplEnvironment(Workspace& ws, Hooks hooks)
     }
   }
   ws_.functions = session_.defined_functions();
-  for (const AplVariable& v : ws_.apl_variables) {
+  // The variables likewise; the workspace keeps those the session has (keep_variables).
+  const std::vector<AplVariable> saved = std::move(ws_.apl_variables);
+  ws_.apl_variables.clear();
+  for (const AplVariable& v : saved) {
     try {
       if (owns(v.name)) throw apl::Error(ErrorKind::defn);  // an IGDS variable's name
       session_.assign(v.name, value_of(v));
@@ -190,16 +193,29 @@ AplEnvironment::AplEnvironment(Workspace& ws, Hooks hooks)
 }
 
 void AplEnvironment::keep_variables() {
-  if (session_.variables_version() == kept_version_) return;
-  kept_version_ = session_.variables_version();
-  // The session file is written after every command and read whole at start: the variables it
-  // keeps are bounded in all (disk::max_session_apl_bytes); those beyond are said once.
-  std::vector<AplVariable> kept;
-  std::size_t room = disk::max_session_apl_bytes;
-  for (const auto& [name, v] : session_.variables()) {
-    const std::size_t bytes =
-        disk::stored_bytes(name.size(), v.shape().size(), v.size(), v.is_character());
-    if (bytes > room) {
+  const std::uint64_t now = session_.variables_version();
+  if (now == kept_version_) return;
+  // Only the variables assigned or erased since the last time are copied: a statement costs its
+  // own assignments, not the workspace's. The session file is written after every line and read
+  // whole at start: the variables it keeps are bounded in all (disk::max_session_apl_bytes); one
+  // that does not fit when assigned is said once.
+  auto& kept = ws_.apl_variables;
+  auto bytes_of = [](std::string_view name, const apl::Value& v) {
+    return disk::stored_bytes(name.size(), v.shape().size(), v.size(), v.is_character());
+  };
+  for (const auto& [name, value] : session_.variables_changed(kept_version_)) {
+    auto at =
+        std::lower_bound(kept.begin(), kept.end(), name,
+                         [](const AplVariable& v, const std::string& n) { return v.name < n; });
+    if (at != kept.end() && at->name == name) {
+      kept_bytes_ -=
+          disk::stored_bytes(at->name.size(), at->shape.size(),
+                             at->characters ? at->text.size() : at->numbers.size(), at->characters);
+      at = kept.erase(at);
+    }
+    if (!value) continue;
+    const std::size_t bytes = bytes_of(name, *value);
+    if (bytes > disk::max_session_apl_bytes - kept_bytes_) {
       if (not_kept_.insert(name).second)
         hooks_.say(
             fmt::format("{} IS NOT KEPT WITH THE SESSION (MORE THAN {} MB IN ALL); )SAVE "
@@ -207,10 +223,10 @@ void AplEnvironment::keep_variables() {
                         name, disk::max_session_apl_bytes >> 20));
       continue;
     }
-    room -= bytes;
-    kept.push_back(stored(name, v));
+    kept_bytes_ += bytes;
+    kept.insert(at, stored(name, *value));
   }
-  if (kept != ws_.apl_variables) ws_.apl_variables = std::move(kept);
+  kept_version_ = now;
 }
 
 std::string AplEnvironment::help(bool long_text) {

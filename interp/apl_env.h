@@ -126,8 +126,9 @@ class AplEnvironment final : public apl::Host {
   // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
   // statement, not a copy of INTPN.
   std::map<std::string, apl::Value, std::less<>> values_;
-  std::uint64_t kept_version_ = ~std::uint64_t{0};  // of the variables in ws_.apl_variables
-  std::set<std::string> not_kept_;                  // too large for the session, said once
+  std::uint64_t kept_version_ = 0;  // of the variables in ws_.apl_variables
+  std::size_t kept_bytes_ = 0;      // what they take in the session file
+  std::set<std::string> not_kept_;  // too large for the session, said once
 };
 
 }  // namespace igds

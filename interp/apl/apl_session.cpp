@@ -341,6 +341,11 @@ std::uint64_t AplSession::variables_version() const {
   return impl_->eval.global_changes();
 }
 
+std::vector<std::pair<std::string, std::optional<Value>>> AplSession::variables_changed(
+    std::uint64_t version) const {
+  return impl_->eval.globals_changed(version);
+}
+
 std::optional<Value> AplSession::variable(std::string_view name) const {
   return impl_->eval.lookup(folded(name));
 }
