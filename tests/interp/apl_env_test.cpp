@@ -355,13 +355,20 @@ TEST_CASE("the session functions: AUTOMSAVE, RESTORE, DEFVAR, INIT") {
   CHECK(apl("AUTOMSAVE").at(0) == "CANNOT START: INPPN IS 6 BY 3, NOT 8 BY 3");
   CHECK(apl.session_saves == 1);
   CHECK(apl("RESTORE").at(0) == "THE SESSION ON THE DISK CANNOT BE READ");
+  CHECK(apl("V←1 2").empty());
+  const auto mine = apl.ws.apl_variables;
   apl.saved_session = surface(2, 2, 0, 0);
+  apl.saved_session->apl_variables = {{"OLD", {}, false, {1}, {}}};
   CHECK(apl("RESTORE").empty());
   CHECK(apl("NOCUR,⍴INTPN") == Lines{"2 2 2 3"});
   CHECK(!apl.env.start());  // nothing pending: NOCUR←4 went with the restored surface
+  CHECK(apl.ws.apl_variables == mine);  // the APL workspace's own stay
   CHECK(apl("DEFVAR").empty());
   CHECK(apl("NOCUR,⍴INPPN") == Lines{"0 0"});
-  CHECK(apl.ws == Workspace{});
+  CHECK(apl.ws.apl_variables == mine);
+  Workspace empty;
+  empty.apl_variables = mine;
+  CHECK(apl.ws == empty);
 }
 
 TEST_CASE("the devices: PLOTG PLOTP PLOTV, TKX and TEKG TEKP TEKV TEKC, DISPLA, OUT") {
