@@ -85,7 +85,8 @@ names are there, →N goes on at its line N, → leaves it.
 START goes back to IGDS (READY): what was made from a changed variable is made again
 (PATCHES from the inputs, INTPN from PATCHES); a workspace that does not agree with
 itself is refused, with the reason, and APL goes on. )SAVE NAME and )LOAD NAME keep
-and bring back the surface with your variables and functions; )OFF leaves.
+and bring back the surface with your variables and functions (the session keeps
+them too), )COPY NAME [names] takes theirs, )CLEAR empties yours; )OFF leaves.
 Here HELP is a name like any other, and a line starting with * a statement.
 Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).
 Example:
