@@ -117,6 +117,7 @@ std::string_view type_meaning(std::string_view type) {
   if (type == "IGDSLOCK") return "THE LOCK OF THE SESSION";
   if (type == "IGDSBAD") return "DAMAGED SESSIONS, KEPT ASIDE";
   if (type == "IGDSHIST") return "THE HISTORY OF TYPED LINES";
+  if (type == "IGDSAPLW") return "APL FUNCTIONS AND VARIABLES ()SAVE, )LOAD IN END APL)";
   return "";
 }
 

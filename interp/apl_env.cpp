@@ -13,6 +13,9 @@
 #include "interp/apl/keyboard.h"
 #include "interp/apl_args.h"
 #include "interp/words.h"
+#include "workspace/disk/apl_file.h"
+#include "workspace/disk/disk.h"
+#include "workspace/disk/session_file.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
@@ -82,13 +85,37 @@ names are there, →N goes on at its line N, → leaves it.
 START goes back to IGDS (READY): what was made from a changed variable is made again
 (PATCHES from the inputs, INTPN from PATCHES); a workspace that does not agree with
 itself is refused, with the reason, and APL goes on. )SAVE NAME and )LOAD NAME keep
-and bring back the surface with your variables and functions; )OFF leaves.
+and bring back the surface with your variables and functions (the session keeps
+them too), )COPY NAME [names] takes theirs, )CLEAR empties yours; )OFF leaves.
 Here HELP is a name like any other, and a line starting with * a statement.
 Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).
 Example:
       INPPN[5;3]←2
       ⍴INTPN
 9 9 3)";
+
+// A variable of the user's as the workspace keeps it, and back.
+AplVariable stored(const std::string& name, const Value& v) {
+  AplVariable a;
+  a.name = name;
+  a.shape.assign(v.shape().begin(), v.shape().end());
+  a.characters = v.is_character();
+  if (a.characters) {
+    auto c = v.characters();
+    a.text.assign(c.begin(), c.end());
+  } else {
+    auto x = v.numbers();
+    a.numbers.assign(x.begin(), x.end());
+  }
+  return a;
+}
+
+Value value_of(const AplVariable& a) {
+  const apl::Shape shape(a.shape.begin(), a.shape.end());
+  if (!a.characters) return Value::of_numbers(shape, std::span<const double>(a.numbers));
+  apl::Characters c(a.text.begin(), a.text.end());
+  return Value::of_characters(shape, std::move(c));
+}
 
 bool is_error_report(std::string_view line) {
   for (auto kind : {ErrorKind::syntax, ErrorKind::value, ErrorKind::domain, ErrorKind::length,
@@ -152,6 +179,55 @@ AplEnvironment::AplEnvironment(Workspace& ws, Hooks hooks)
     }
   }
   ws_.functions = session_.defined_functions();
+  // The variables likewise; the workspace keeps those the session has (keep_variables).
+  const std::vector<AplVariable> saved = std::move(ws_.apl_variables);
+  ws_.apl_variables.clear();
+  for (const AplVariable& v : saved) {
+    try {
+      if (owns(v.name)) throw apl::Error(ErrorKind::defn);  // an IGDS variable's name
+      session_.assign(v.name, value_of(v));
+    } catch (const apl::Error& e) {
+      hooks_.report(fmt::format("{}: {}", e.what(), v.name));
+    }
+  }
+  keep_variables();
+}
+
+void AplEnvironment::keep_variables() {
+  const std::uint64_t now = session_.variables_version();
+  if (now == kept_version_) return;
+  // Only the variables assigned or erased since the last time are copied: a statement costs its
+  // own assignments, not the workspace's. The session file is written after every line and read
+  // whole at start: the variables it keeps are bounded in all (disk::max_session_apl_bytes); one
+  // that does not fit when assigned is said once.
+  auto& kept = ws_.apl_variables;
+  auto bytes_of = [](std::string_view name, const apl::Value& v) {
+    return disk::stored_bytes(name.size(), v.shape().size(), v.size(), v.is_character());
+  };
+  for (const auto& [name, value] : session_.variables_changed(kept_version_)) {
+    auto at =
+        std::lower_bound(kept.begin(), kept.end(), name,
+                         [](const AplVariable& v, const std::string& n) { return v.name < n; });
+    if (at != kept.end() && at->name == name) {
+      kept_bytes_ -=
+          disk::stored_bytes(at->name.size(), at->shape.size(),
+                             at->characters ? at->text.size() : at->numbers.size(), at->characters);
+      at = kept.erase(at);
+    }
+    if (!value) continue;
+    const std::size_t bytes = bytes_of(name, *value);
+    if (bytes > disk::max_session_apl_bytes - kept_bytes_) {
+      if (not_kept_.insert(name).second)
+        hooks_.say(
+            fmt::format("{} IS NOT KEPT WITH THE SESSION (MORE THAN {} MB IN ALL); )SAVE "
+                        "KEEPS IT",
+                        name, disk::max_session_apl_bytes >> 20));
+      continue;
+    }
+    kept_bytes_ += bytes;
+    kept.insert(at, stored(name, *value));
+  }
+  kept_version_ = now;
 }
 
 std::string AplEnvironment::help(bool long_text) {
@@ -182,11 +258,12 @@ apl::AplSession::Next AplEnvironment::execute(std::string_view line) {
     return apl::AplSession::Next::stay;
   }
   const auto next = session_.execute(line);
-  // Defined functions are part of the workspace: the session keeps them.
+  // Defined functions and variables are part of the workspace: the session keeps them.
   if (!session_.defining()) {
     auto functions = session_.defined_functions();
     if (functions != ws_.functions) ws_.functions = std::move(functions);
   }
+  keep_variables();
   return next;
 }
 
@@ -455,22 +532,132 @@ std::vector<std::string> AplEnvironment::variable_names() const {
   return defined_variables(ws_);
 }
 
-std::vector<std::string> AplEnvironment::save_workspace(std::string_view name) {
+std::vector<std::string> AplEnvironment::save_workspace(std::string_view typed) {
+  // )SAVE NAME: the surface in NAME.IGDSDATA as SAVE writes it (when there is one), then the
+  // user's functions and variables in NAME.IGDSAPLW, which says whether the surface went with
+  // them.
+  const auto name = cms_name(typed);
+  if (!name || !hooks_.disk) {
+    hooks_.report(reports::incorrect_parameter);
+    return {};
+  }
   // A surface that does not agree with itself is never written.
   if (auto problem = start()) return {fmt::format("NOT SAVED: {}", *problem)};
-  if (!hooks_.command({std::string(save_command.name), std::string(name)})) return {};
-  return {fmt::format("SAVED {}", upper(name))};
+  disk::AplWorkspace apl;
+  apl.surface = ws_.has_input();
+  if (apl.surface && !hooks_.command({std::string(save_command.name), *name})) return {};
+  apl.functions = session_.defined_functions();
+  for (const auto& [n, v] : session_.variables()) apl.variables.push_back(stored(n, v));
+  try {
+    // The surface is saved by then: a refusal says so.
+    disk::save_apl_workspace(*hooks_.disk, *name, apl,
+                             apl.surface ? "ONLY THE SURFACE SAVED" : "NOT SAVED");
+  } catch (const Report& r) {
+    hooks_.report(r.what());
+    return {};
+  }
+  return {fmt::format("SAVED {}", *name)};
 }
 
-std::vector<std::string> AplEnvironment::load_workspace(std::string_view name) {
-  if (!hooks_.command({std::string(restore_command.name), std::string(name)})) return {};
-  surface_replaced();
-  return {fmt::format("LOADED {}", upper(name))};
+// The functions and variables of a saved APL workspace into the session, those `wanted` (all
+// when empty), replacing the session's of the same names; the names that could not be.
+std::vector<std::string> AplEnvironment::take(const disk::AplWorkspace& from,
+                                              const std::set<std::string>& wanted,
+                                              std::set<std::string>& found) {
+  auto chosen = [&](const std::string& n) {
+    if (!wanted.empty() && !wanted.count(n)) return false;
+    found.insert(n);
+    return true;
+  };
+  std::vector<std::string> refused;
+  for (const auto& source : from.functions) {
+    std::string name;
+    try {
+      name = apl::AplSession::function_name(source);
+    } catch (const apl::Error&) {
+      refused.push_back(source.empty() ? "?" : source[0]);
+      continue;
+    }
+    if (!chosen(name)) continue;
+    // A variable of that name gives way to the function, and comes back if it does not define.
+    const std::optional<apl::Value> was = session_.variable(name);
+    if (was) session_.erase(name);
+    try {
+      session_.define_function(source);
+    } catch (const apl::Error&) {
+      if (was) session_.assign(name, *was);
+      refused.push_back(name);
+    }
+  }
+  for (const AplVariable& v : from.variables) {
+    if (!chosen(v.name)) continue;
+    try {
+      if (owns(v.name)) throw apl::Error(ErrorKind::defn);  // an IGDS variable's name
+      session_.erase(v.name);
+      session_.assign(v.name, value_of(v));
+    } catch (const apl::Error&) {
+      refused.push_back(v.name);
+    }
+  }
+  return refused;
 }
 
-std::vector<std::string> AplEnvironment::copy_workspace(std::string_view,
-                                                        const std::vector<std::string>&) {
-  return {"INCORRECT COMMAND"};
+std::vector<std::string> AplEnvironment::load_workspace(std::string_view typed) {
+  // )LOAD NAME: the functions and variables of NAME.IGDSAPLW replace the session's, and its
+  // surface (NAME.IGDSDATA, as RESTORE reads it) the current one when )SAVE wrote one with
+  // them. Without NAME.IGDSAPLW (a SAVE of IGDS's), the surface alone. The APL file is read and
+  // checked first: a damaged one changes nothing.
+  const auto name = cms_name(typed);
+  if (!name || !hooks_.disk) {
+    hooks_.report(reports::incorrect_parameter);
+    return {};
+  }
+  std::optional<disk::AplWorkspace> loaded;
+  try {
+    if (hooks_.disk->exists(*name, disk::apl_workspace_type))
+      loaded = disk::load_apl_workspace(*hooks_.disk, *name);
+  } catch (const Report& r) {
+    hooks_.report(r.what());
+    return {};
+  }
+  if (!loaded || loaded->surface) {
+    if (!hooks_.command({std::string(restore_command.name), *name})) return {};
+    // Nothing APL held of the old surface is written back by START.
+    surface_replaced();
+  }
+  if (loaded) {
+    session_.clear();
+    std::set<std::string> found;
+    for (const auto& r : take(*loaded, {}, found)) hooks_.report(fmt::format("NOT LOADED: {}", r));
+  }
+  return {fmt::format("LOADED {}", *name)};
+}
+
+std::vector<std::string> AplEnvironment::copy_workspace(std::string_view typed,
+                                                        const std::vector<std::string>& names) {
+  // )COPY NAME [names]: the functions and variables of NAME.IGDSAPLW (those named, or all) added
+  // to the session's, replacing those of the same names; the surface is not touched.
+  const auto name = cms_name(typed);
+  if (!name || !hooks_.disk) {
+    hooks_.report(reports::incorrect_parameter);
+    return {};
+  }
+  disk::AplWorkspace loaded;
+  try {
+    loaded = disk::load_apl_workspace(*hooks_.disk, *name, "NOTHING COPIED");
+  } catch (const Report& r) {
+    hooks_.report(r.what());
+    return {};
+  }
+  const std::set<std::string> wanted(names.begin(), names.end());
+  std::set<std::string> found;
+  const auto refused = take(loaded, wanted, found);
+  std::string missing;
+  for (const auto& n : wanted)
+    if (!found.count(n)) missing += " " + n;
+  if (!missing.empty()) hooks_.report("NOT FOUND:" + missing);
+  for (const auto& r : refused) hooks_.report(fmt::format("NOT COPIED: {}", r));
+  return {fmt::format("COPIED {}", *name)};
 }
 
 }  // namespace igds

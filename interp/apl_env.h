@@ -23,6 +23,9 @@ namespace igds {
 
 class Disk;
 struct Command;
+namespace disk {
+struct AplWorkspace;
+}
 
 inline constexpr std::string_view apl_prompt = "      ";
 
@@ -68,6 +71,8 @@ class AplEnvironment final : public apl::Host {
   // variable made again from it: PATCHES from the inputs, INTPN from PATCHES), or the reason it
   // cannot be, in which case the environment stays.
   std::optional<std::string> start();
+  // No IGDS variable assigned since the last START: the workspace is whole, and may be saved.
+  bool settled() const { return assigned_.empty(); }
   // Names completion offers: variables, functions, system commands.
   std::vector<std::string> names() const;
   // The workspace may have changed outside APL (commands ran since the last line).
@@ -101,6 +106,13 @@ class AplEnvironment final : public apl::Host {
   void run_command(std::vector<std::string> words);
   // The workspace as APL values again, and nothing pending for START (the surface was replaced).
   void surface_replaced();
+  // The user's variables into the workspace (Workspace::apl_variables), when they changed.
+  void keep_variables();
+  // )LOAD and )COPY: the functions and variables of `from` (those `wanted`, all when empty) into
+  // the session, replacing those of the same names; `found` gets the names taken. Returns the
+  // names that could not be taken.
+  std::vector<std::string> take(const disk::AplWorkspace& from, const std::set<std::string>& wanted,
+                                std::set<std::string>& found);
   // A line read for ALFINP and NUMINP: HELP there is answered (EXPL) and the line read again.
   std::string read_answer(int code);
   // The codes of a command's words (PARxx, GETCOM), its option asked when it is missing.
@@ -114,6 +126,9 @@ class AplEnvironment final : public apl::Host {
   // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
   // statement, not a copy of INTPN.
   std::map<std::string, apl::Value, std::less<>> values_;
+  std::uint64_t kept_version_ = 0;  // of the variables in ws_.apl_variables
+  std::size_t kept_bytes_ = 0;      // what they take in the session file
+  std::set<std::string> not_kept_;  // too large for the session, said once
 };
 
 }  // namespace igds

@@ -562,7 +562,9 @@ void AplEnvironment::define_disk_functions() {
       [this](Args, Args) -> std::optional<Value> {
         std::optional<Workspace> loaded = hooks_.load_session();
         if (!loaded) throw AplError(ErrorKind::domain, "THE SESSION ON THE DISK CANNOT BE READ");
-        loaded->functions = ws_.functions;  // the APL workspace's own stay
+        // The APL workspace's own stay.
+        loaded->functions = ws_.functions;
+        loaded->apl_variables = std::move(ws_.apl_variables);
         ws_ = std::move(*loaded);
         assigned_.clear();
         values_.clear();
@@ -574,6 +576,7 @@ void AplEnvironment::define_disk_functions() {
       [this](Args, Args) -> std::optional<Value> {
         Workspace empty;
         empty.functions = std::move(ws_.functions);
+        empty.apl_variables = std::move(ws_.apl_variables);
         ws_ = std::move(empty);
         assigned_.clear();
         values_.clear();

@@ -402,6 +402,9 @@ Interpreter::Outcome Interpreter::apl_environment() {
     } catch (const std::exception& x) {
       report(upper(x.what()));
     }
+    // The user's functions and variables are saved as they change, as a command's work is (a
+    // killed igds keeps them); not while an IGDS variable APL assigned waits for START.
+    if (apl_->settled()) save();
     if (options_.strict && terminal_.command_file() && errors_ > before)
       return Outcome::strict_stop;
     if (next == apl::AplSession::Next::start && leave_apl()) return Outcome::input_ended;

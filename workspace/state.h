@@ -197,6 +197,17 @@ struct Changes {
   }
 };
 
+// A variable of the user's own in END APL (not one of the manual's): its name (as APL folds it:
+// capitals, digits, _ ∆ ⍙ in UTF-8), its shape and its elements, numbers or characters.
+struct AplVariable {
+  std::string name;
+  std::vector<std::size_t> shape;
+  bool characters = false;
+  std::vector<double> numbers;  // when !characters
+  std::u32string text;          // when characters
+  friend bool operator==(const AplVariable&, const AplVariable&) = default;
+};
+
 struct Workspace {
   int nocur = 0, nostr = 0;  // NOCUR, NOSTR: input curves and stringers (0: no input yet)
   int intcu = 0, intst = 0;  // INTCU, INTST: curves/stringers interpolated between input ones
@@ -215,9 +226,10 @@ struct Workspace {
   // (0 none yet, 1 SELECTRIC, 2 EBCDIC); STATUS[3] and STATUS[4] belong to the surface
   // (status_twists, status_auto below); the others are reserved.
   std::array<int, 10> status{1, 0, 0, 0, 0, 0, 0, 0, 0, 0};
-  // The functions defined in END APL, each as its source (header, then lines): part of the
-  // APL workspace, kept with the session.
+  // The functions defined in END APL, each as its source (header, then lines), and the user's
+  // variables there: the APL workspace, kept with the session.
   std::vector<std::vector<std::string>> functions;
+  std::vector<AplVariable> apl_variables;
 
   Changes changes;  // not a variable of the manual: how the variables above changed
 
@@ -237,7 +249,8 @@ struct Workspace {
     return a.nocur == b.nocur && a.nostr == b.nostr && a.intcu == b.intcu && a.intst == b.intst &&
            a.inppn == b.inppn && a.inptg == b.inptg && a.patches == b.patches &&
            a.intpn == b.intpn && same_image(a.image, b.image) && same_image(a.temp1, b.temp1) &&
-           same_image(a.temp2, b.temp2) && a.status == b.status && a.functions == b.functions;
+           same_image(a.temp2, b.temp2) && a.status == b.status && a.functions == b.functions &&
+           a.apl_variables == b.apl_variables;
   }
 };
 

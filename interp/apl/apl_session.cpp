@@ -329,8 +329,21 @@ void AplSession::define_function(const std::vector<std::string>& source) {
   impl_->eval.define(std::move(f));
 }
 
+std::string AplSession::function_name(const std::vector<std::string>& source) {
+  return make_function(source).header.name;
+}
+
 std::vector<std::pair<std::string, Value>> AplSession::variables() const {
   return impl_->eval.globals();
+}
+
+std::uint64_t AplSession::variables_version() const {
+  return impl_->eval.global_changes();
+}
+
+std::vector<std::pair<std::string, std::optional<Value>>> AplSession::variables_changed(
+    std::uint64_t version) const {
+  return impl_->eval.globals_changed(version);
 }
 
 std::optional<Value> AplSession::variable(std::string_view name) const {

@@ -97,9 +97,16 @@ class AplSession {
   // Defines (or replaces) a function from its source; DEFN ERROR when the source is bad or the
   // name is a variable or a native function.
   void define_function(const std::vector<std::string>& source);
+  // The name a function's source defines; DEFN ERROR for a bad header.
+  static std::string function_name(const std::vector<std::string>& source);
 
   // The session's own variables (not the host's), in alphabetical order, for )SAVE.
   std::vector<std::pair<std::string, Value>> variables() const;
+  // A number that changes whenever one of those variables is assigned or erased, and those
+  // assigned or erased since it was `version`, each with its value (none: erased).
+  std::uint64_t variables_version() const;
+  std::vector<std::pair<std::string, std::optional<Value>>> variables_changed(
+      std::uint64_t version) const;
   // A variable's value as a statement would see it (inside a statement: with its pending
   // assignments, and the running functions' local names); nullopt when it has none.
   std::optional<Value> variable(std::string_view name) const;

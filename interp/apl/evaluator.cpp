@@ -146,6 +146,7 @@ void Evaluator::store(std::uint32_t id, Value v) {
     return;
   }
   sym.value = std::move(v);
+  changed(sym);
 }
 
 void Evaluator::index_store(std::uint32_t id, const Instr& in) {
@@ -178,6 +179,7 @@ void Evaluator::index_store(std::uint32_t id, const Instr& in) {
   }
   if (!sym.value) throw Error(ErrorKind::value);
   index_assign(ctx, *sym.value, indices, v);
+  changed(sym);
 }
 
 NameClass Evaluator::static_class(const std::string& name) const {
@@ -227,6 +229,15 @@ std::vector<std::pair<std::string, Value>> Evaluator::globals() const {
   std::vector<std::pair<std::string, Value>> out;
   for (const auto& s : symbols_)
     if (s.value) out.emplace_back(s.name, *s.value);
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return out;
+}
+
+std::vector<std::pair<std::string, std::optional<Value>>> Evaluator::globals_changed(
+    std::uint64_t version) const {
+  std::vector<std::pair<std::string, std::optional<Value>>> out;
+  for (const auto& s : symbols_)
+    if (s.changed > version) out.emplace_back(s.name, s.value);
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   return out;
 }
@@ -304,6 +315,7 @@ bool Evaluator::erase(const std::string& name) {
   }
   if (sym.value) {
     sym.value.reset();
+    changed(sym);
     return true;
   }
   return false;
@@ -312,6 +324,7 @@ bool Evaluator::erase(const std::string& name) {
 void Evaluator::clear() {
   clear_state_indicator();
   for (auto& s : symbols_) {
+    if (s.value) changed(s);
     s.value.reset();
     s.function.reset();
   }
@@ -1316,6 +1329,7 @@ Value Evaluator::system_function(SystemName s, const Value& b) {
               r = 1;
             } else if (!slot && !sym.owned && !sym.native) {
               sym.value.reset();
+              changed(sym);
               r = 1;
             }
           }

@@ -53,6 +53,12 @@ class Evaluator {
 
   // The session's global variables, defined functions and natives, by name.
   std::vector<std::pair<std::string, Value>> globals() const;
+  // Changes with every assignment or erasure of a global variable.
+  std::uint64_t global_changes() const { return global_changes_; }
+  // The global variables assigned or erased since global_changes() was `version`, by name, each
+  // with its value (none: erased).
+  std::vector<std::pair<std::string, std::optional<Value>>> globals_changed(
+      std::uint64_t version) const;
   std::vector<std::string> function_names(bool natives) const;
   std::shared_ptr<const DefinedFunction> function(const std::string& name) const;
   const NativeEntry* native(const std::string& name) const;
@@ -87,7 +93,8 @@ class Evaluator {
  private:
   struct Symbol {
     std::string name;
-    bool owned = false;  // the host's
+    std::uint64_t changed = 0;  // global_changes_ when its value was last assigned or erased
+    bool owned = false;         // the host's
     std::optional<Value> value;
     std::shared_ptr<const DefinedFunction> function;
     std::optional<NativeEntry> native;
@@ -169,6 +176,8 @@ class Evaluator {
   int shadowing_ = 0;             // frames whose locals hide a function's name
   std::u32string pending_;        // what ⍞← put on the line, not yet ended
   std::uint64_t started_ = 0;     // the session's start, for ⎕AI (milliseconds)
+  std::uint64_t global_changes_ = 0;
+  void changed(Symbol& s) { s.changed = ++global_changes_; }
 };
 
 }  // namespace igds::apl

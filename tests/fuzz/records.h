@@ -370,10 +370,42 @@ inline void mutate_table(disk::SessionTable& t, std::minstd_rand& rng) {
       t.status[rng() % 10] = as_int(interesting_int(rng, 1));
       break;
     case 7:
-      if (rng() % 2 || t.functions.empty())
-        t.functions.push_back({"Z←F X", std::string(rng() % 8, 'Z')});
-      else
-        t.functions.pop_back();
+      switch (rng() % 4) {
+        case 0:
+          t.functions.push_back({"Z←F X", std::string(rng() % 8, 'Z')});
+          break;
+        case 1:
+          if (!t.functions.empty()) t.functions.pop_back();
+          break;
+        case 2: {
+          // END APL's variables: a name APL may or may not have, elements that may not fill
+          // the shape, numbers that may not be finite.
+          static const char* const names[] = {"A",
+                                              "Z_",
+                                              "\xE2\x88\x86"
+                                              "1",
+                                              "INPPN",
+                                              "a",
+                                              "1A",
+                                              ""};
+          AplVariable v;
+          v.name = names[rng() % 7];
+          for (std::size_t k = rng() % 3; k > 0; --k)
+            v.shape.push_back(static_cast<std::size_t>(interesting_int(rng, 2)));
+          v.characters = rng() % 2;
+          for (std::size_t k = rng() % 4; k > 0; --k) {
+            if (v.characters)
+              v.text.push_back(static_cast<char32_t>(interesting_int(rng, 65)));
+            else
+              v.numbers.push_back(interesting_double(rng));
+          }
+          t.apl_variables.push_back(std::move(v));
+          break;
+        }
+        default:
+          if (!t.apl_variables.empty()) t.apl_variables.erase(t.apl_variables.begin());
+          break;
+      }
       break;
     case 8:
       if (disk::Record* r = pick_record()) {

@@ -120,4 +120,34 @@ TEST_CASE("fuzz_records reads a disk igds saved as igds does, journal and images
   records(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
 }
 
+TEST_CASE("fuzz_records' changes of a session with END APL's variables: reports, never a crash") {
+  test::TempDir dir;
+  Disk disk(dir.path());
+  Workspace ws = test::make_interpolated(3, 3, 1, 1);
+  ws.functions = {{"Z←F X", "Z←X"}};
+  ws.apl_variables = {{"A", {2}, false, {1, 2}, {}}, {"T", {1}, true, {}, U"X"}};
+  {
+    Session session(disk);
+    session.load();
+    session.save(ws);
+  }
+  const RecordsInput in = pack_records(dir.path());
+  std::size_t forged = 0;
+  for (unsigned seed = 1; seed <= 300; ++seed) {
+    RecordsInput mutated = in;
+    const auto session = std::find_if(mutated.files.begin(), mutated.files.end(),
+                                      [](const RecordsFile& f) { return f.kind == 0; });
+    REQUIRE(session != mutated.files.end());
+    disk::SessionTable t = disk::decode_session(session->payload);
+    REQUIRE(t.apl_variables == ws.apl_variables);
+    std::minstd_rand rng(seed);
+    for (int k = 0; k < 3; ++k) mutate_table(t, rng);
+    forged += t.apl_variables != ws.apl_variables;
+    session->payload = disk::encode_session(t);
+    const std::string bytes = records_bytes(mutated);
+    records(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+  }
+  CHECK(forged > 10);  // the variables were among what changed
+}
+
 }  // namespace igds::fuzz

@@ -200,9 +200,6 @@ TEST_CASE("the manual's functions call igds's code") {
   CHECK(apl("COONS").empty());
   CHECK(apl("⍴PATCHES") == Lines{"2 1 3 4 4"});
   CHECK(apl("INIT").at(0).starts_with("INIT: "));
-  CHECK(apl(")SAVE HULL") == Lines{"SAVED HULL"});
-  CHECK(apl(")LOAD HULL") == Lines{"LOADED HULL"});
-  CHECK(apl.commands.back() == Lines{"RESTORE", "HULL"});
 }
 
 TEST_CASE("an image assigned is checked at START") {
@@ -358,13 +355,20 @@ TEST_CASE("the session functions: AUTOMSAVE, RESTORE, DEFVAR, INIT") {
   CHECK(apl("AUTOMSAVE").at(0) == "CANNOT START: INPPN IS 6 BY 3, NOT 8 BY 3");
   CHECK(apl.session_saves == 1);
   CHECK(apl("RESTORE").at(0) == "THE SESSION ON THE DISK CANNOT BE READ");
+  CHECK(apl("V←1 2").empty());
+  const auto mine = apl.ws.apl_variables;
   apl.saved_session = surface(2, 2, 0, 0);
+  apl.saved_session->apl_variables = {{"OLD", {}, false, {1}, {}}};
   CHECK(apl("RESTORE").empty());
   CHECK(apl("NOCUR,⍴INTPN") == Lines{"2 2 2 3"});
   CHECK(!apl.env.start());  // nothing pending: NOCUR←4 went with the restored surface
+  CHECK(apl.ws.apl_variables == mine);  // the APL workspace's own stay
   CHECK(apl("DEFVAR").empty());
   CHECK(apl("NOCUR,⍴INPPN") == Lines{"0 0"});
-  CHECK(apl.ws == Workspace{});
+  CHECK(apl.ws.apl_variables == mine);
+  Workspace empty;
+  empty.apl_variables = mine;
+  CHECK(apl.ws == empty);
 }
 
 TEST_CASE("the devices: PLOTG PLOTP PLOTV, TKX and TEKG TEKP TEKV TEKC, DISPLA, OUT") {
@@ -415,7 +419,9 @@ TEST_CASE(")HELP is the APL environment's HELP; HELP and * lines are APL's") {
 }
 
 TEST_CASE(")LOAD: no stale copy of a variable afterwards") {
-  Apl apl(surface(3, 2, 1, 1));
+  TempDir dir;
+  const Disk disk(dir.path());
+  Apl apl(surface(3, 2, 1, 1), &disk);
   CHECK(apl("INPPN[1;1]").at(0) == "0");
   CHECK(apl("INPPN[1;1]←5").empty());
   apl.run = [&apl](const Lines& words) {  // RESTORE replaces the surface
@@ -427,6 +433,143 @@ TEST_CASE(")LOAD: no stale copy of a variable afterwards") {
   CHECK(apl("INPPN[1;1]") == Lines{"9"});
   CHECK(!apl.env.start());  // INPPN←5 went with the surface it was made on
   CHECK(apl.ws.inppn.ravel[0] == 9);
+}
+
+TEST_CASE("the user's variables and functions are the workspace's: kept, back in a new session") {
+  Apl apl(surface(3, 2, 1, 1));
+  CHECK(apl("V←2 3⍴⍳6").empty());
+  CHECK(apl("C←'⍴AB'").empty());
+  CHECK(apl("∇Z←F X").empty());
+  CHECK(apl("Z←X×V∇").empty());
+  CHECK(apl.ws.functions == std::vector<Lines>{{"Z←F X", "Z←X×V"}});
+  REQUIRE(apl.ws.apl_variables.size() == 2);
+  CHECK(apl.ws.apl_variables[0] == AplVariable{"C", {3}, true, {}, U"⍴AB"});
+  CHECK(apl.ws.apl_variables[1] == AplVariable{"V", {2, 3}, false, {1, 2, 3, 4, 5, 6}, {}});
+  // The system variables are the session's, not the user's.
+  CHECK(apl("⎕IO←0").empty());
+  CHECK(apl("⎕PP←5").empty());
+  CHECK(apl.ws.apl_variables.size() == 2);
+  CHECK(apl("⎕IO←1").empty());
+  // Changed in place, erased: the workspace follows.
+  CHECK(apl("V[1;1]←¯0.5").empty());
+  CHECK(apl.ws.apl_variables[1].numbers[0] == -0.5);
+  CHECK(apl(")ERASE C").empty());
+  CHECK(apl.ws.apl_variables.size() == 1);
+  CHECK(apl("C←'⍴AB'").empty());
+
+  // A new environment on that workspace (a new start of igds) has them.
+  Apl again(apl.ws);
+  CHECK(again.reported.empty());
+  CHECK(again("F 2") == Lines{"¯1  4  6", " 8 10 12"});
+  CHECK(again("C") == Lines{"⍴AB"});
+  CHECK(again.ws.apl_variables == apl.ws.apl_variables);
+
+  // One whose name is a function's now is said and left out; the others come.
+  Workspace ws = apl.ws;
+  ws.apl_variables.push_back({"FIT", {}, false, {1}, {}});
+  Apl clash(ws);
+  CHECK(clash.reported == Lines{"SYNTAX ERROR: FIT"});
+  CHECK(clash("C") == Lines{"⍴AB"});
+  CHECK(clash.ws.apl_variables == apl.ws.apl_variables);
+
+  // Functions forged in a session or a file are defined as typed ones are, or said and left out.
+  Workspace forged = apl.ws;
+  forged.functions = {{"Z←G\xFF X", "Z←X"}, {"Z←INPPN X", "Z←X"}, {"Z←H X", "Z←X+\xE2\x88"}};
+  forged.apl_variables = {{"\xE2\x88\x86X", {}, false, {3}, {}}};
+  Apl odd(forged);
+  CHECK(odd.reported.size() == 2);
+  CHECK(odd("∆X") == Lines{"3"});
+  CHECK(odd.ws.functions.size() == 1);
+
+  // The session file holds at most 8 MB of them: a larger one is said once, and )SAVE keeps it.
+  CHECK(apl("B←1100000⍴1.5") ==
+        Lines{"B IS NOT KEPT WITH THE SESSION (MORE THAN 8 MB IN ALL); )SAVE KEEPS IT"});
+  CHECK(apl("B←B+1").empty());
+  CHECK(apl.ws.apl_variables.size() == 2);
+}
+
+TEST_CASE(")SAVE, )LOAD, )COPY and )CLEAR act on the whole APL workspace") {
+  TempDir dir;
+  const Disk disk(dir.path());
+  Apl apl(surface(3, 2, 1, 1), &disk);
+  const Workspace saved_surface = apl.ws;
+  apl.run = [&](const Lines& words) {  // RESTORE gives back the surface SAVE saved
+    if (words[0] == "RESTORE") {
+      apl.ws.inppn = saved_surface.inppn;
+      apl.ws.patches = saved_surface.patches;
+      apl.ws.intpn = saved_surface.intpn;
+    }
+  };
+  CHECK(apl("V←1 2 3").empty());
+  CHECK(apl("T←2 2⍴'ABCD'").empty());
+  CHECK(apl("∇Z←F X").empty());
+  CHECK(apl("Z←X+V∇").empty());
+  CHECK(apl(")SAVE W1") == Lines{"SAVED W1"});
+  CHECK(apl.commands.back() == Lines{"SAVE", "W1"});
+  const auto kept = apl.ws.apl_variables;
+  const auto functions = apl.ws.functions;
+
+  // )CLEAR: no variables, no functions; the surface is IGDS's and stays.
+  CHECK(apl(")CLEAR") == Lines{"CLEAR WS"});
+  CHECK(apl("V").at(0) == "VALUE ERROR");
+  CHECK(apl.ws.apl_variables.empty());
+  CHECK(apl.ws.functions.empty());
+  CHECK(apl.ws.inppn == saved_surface.inppn);
+
+  // )LOAD: the saved functions and variables replace the session's, the surface is restored, and
+  // nothing assigned before is written back by START.
+  CHECK(apl("V←9").empty());
+  CHECK(apl("U←9").empty());
+  CHECK(apl("INPPN[1;1]←5").empty());
+  CHECK(apl(")LOAD W1") == Lines{"LOADED W1"});
+  CHECK(apl.commands.back() == Lines{"RESTORE", "W1"});
+  CHECK(apl("F 1") == Lines{"2 3 4"});
+  CHECK(apl("T") == Lines{"AB", "CD"});
+  CHECK(apl("U").at(0) == "VALUE ERROR");
+  CHECK(apl.ws.apl_variables == kept);
+  CHECK(apl.ws.functions == functions);
+  CHECK(!apl.env.start());
+  CHECK(apl.ws.inppn == saved_surface.inppn);
+
+  // )COPY: those named, or all, over the session's of the same names; the surface untouched.
+  const std::size_t commands = apl.commands.size();
+  CHECK(apl("V←7").empty());
+  CHECK(apl("T←'X'").empty());
+  CHECK(apl(")COPY W1 V NOPE") == Lines{"NOT FOUND: NOPE", "COPIED W1"});
+  CHECK(apl("V") == Lines{"1 2 3"});
+  CHECK(apl("T") == Lines{"X"});
+  CHECK(apl(")ERASE F").empty());
+  CHECK(apl("F←5").empty());  // a variable gives way to a function copied
+  CHECK(apl(")COPY W1") == Lines{"COPIED W1"});
+  CHECK(apl("F 0") == Lines{"1 2 3"});
+  CHECK(apl("T") == Lines{"AB", "CD"});
+  CHECK(apl.commands.size() == commands);
+
+  // Files that are not there or do not read change nothing.
+  CHECK(apl(")COPY NONE") == Lines{"FILE NOT FOUND"});
+  CHECK(apl(")LOAD ../W1") == Lines{"INCORRECT PARAMETER"});
+  std::string bytes = read_file(disk.path("W1", "IGDSAPLW"));
+  bytes[bytes.size() - 12] ^= 4;
+  rewrite_file(disk.path("W1", "IGDSAPLW"), bytes);
+  CHECK(apl("V←0").empty());
+  CHECK(apl(")LOAD W1") == Lines{"FILE DAMAGED: W1.IGDSAPLW (CHECKSUM); NOTHING LOADED"});
+  CHECK(apl(")COPY W1") == Lines{"FILE DAMAGED: W1.IGDSAPLW (CHECKSUM); NOTHING COPIED"});
+  CHECK(apl("V") == Lines{"0"});
+  CHECK(apl.commands.size() == commands);
+
+  // A workspace saved without a surface leaves the current one at )LOAD (a W2.IGDSDATA there is
+  // of another time); a NAME.IGDSDATA alone (SAVE of IGDS) is the surface alone.
+  Apl empty(Workspace{}, &disk);
+  CHECK(empty("X←1").empty());
+  CHECK(empty(")SAVE W2") == Lines{"SAVED W2"});
+  CHECK(empty.commands.empty());
+  CHECK(apl(")LOAD W2") == Lines{"LOADED W2"});
+  CHECK(apl.commands.size() == commands);
+  CHECK(apl("X") == Lines{"1"});
+  CHECK(apl("V").at(0) == "VALUE ERROR");
+  CHECK(apl(")LOAD W3") == Lines{"LOADED W3"});
+  CHECK(apl.commands.back() == Lines{"RESTORE", "W3"});
+  CHECK(apl("X") == Lines{"1"});
 }
 
 }  // namespace igds::test

@@ -182,6 +182,7 @@ inline void check_same_workspace(const Workspace& a, const Workspace& b) {
   CHECK(same_bits(a.temp2, b.temp2));
   CHECK(a.status == b.status);
   CHECK(a.functions == b.functions);
+  CHECK(a.apl_variables == b.apl_variables);
 }
 
 }  // namespace igds::test

@@ -149,6 +149,21 @@ TEST_CASE("END APL's defined functions are kept with the session") {
   CHECK_THROWS_AS(disk::decode_session(bytes.substr(0, bytes.size() - 1)), disk::Damage);
 }
 
+TEST_CASE("END APL's own variables are kept with the session") {
+  Scratch s;
+  Workspace ws = test::make_workspace(3, 3, 1, 1);
+  ws.apl_variables = {{"V", {3}, false, {1, 2, 3}, {}}, {"W", {2}, true, {}, U"⍴A"}};
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+    // A variable changed alone is a change: the session is written again.
+    ws.apl_variables.pop_back();
+    session.save(ws);
+  }
+  CHECK(load_fresh(s.disk).apl_variables == ws.apl_variables);
+}
+
 TEST_CASE("a save rewrites only what changed") {
   Scratch s;
   Workspace ws = test::make_workspace(10, 10, 10, 10);  // INTPN 100 x 100 x 3, three images

@@ -400,6 +400,7 @@ struct Session::State {
   };
   void keep_lost_images_aside(SessionTable& t, const std::array<std::optional<Lost>, 3>& lost);
   void collect_garbage(const SessionTable& table);
+  void keep_apl_variables_aside(const std::string& reason);
 };
 
 Workspace Session::State::read_session() {
@@ -436,6 +437,7 @@ Workspace Session::State::read_session() {
     ws.status = t.status;
   }
   ws.functions = t.functions;
+  ws.apl_variables = t.apl_variables;
   if (t.current != 0) {
     if (!t.derived) {
       for (auto [v, stored] :
@@ -510,6 +512,8 @@ Workspace Session::State::read_session() {
     // Refused, it is written no more: the next save writes the session with the journal then.
     rewrite = rewrite || !journal;
   }
+  // The rest of the session read: a forged section of END APL's variables costs itself alone.
+  if (!t.apl_variables_damage.empty()) keep_apl_variables_aside(t.apl_variables_damage);
   next_number = std::max(next_number, t.next_number < disk::file_numbers ? t.next_number : 1);
   saved = std::move(t);
   saved_known = true;
@@ -643,6 +647,29 @@ void Session::State::keep_lost_images_aside(SessionTable& t,
   rewrite = true;
 }
 
+// END APL's variables that do not read cost themselves alone: a copy of the session file goes
+// aside (BINSAVEn.IGDSBAD) before the next save writes the session without them.
+void Session::State::keep_apl_variables_aside(const std::string& reason) {
+  const std::string what =
+      fmt::format("END APL'S VARIABLES IN {} DAMAGED ({})", session_file(), reason);
+  const auto copy = disk::temporary_for(disk.path(session_name, "IGDSAPLV"));
+  std::string kept;
+  try {
+    ::unlink(copy.c_str());  // a temporary: never data
+    if (disk::copy_file(disk.path(session_name, session_type), copy))
+      kept = disk::put_aside(disk.dir(), session_name, copy.filename().string());
+  } catch (const disk::IoError& e) {
+    ::unlink(copy.c_str());
+    notices.push_back(fmt::format("{}: NOT KEPT ASIDE ({}); THEY START EMPTY", what, e.reason()));
+    rewrite = true;
+    return;
+  }
+  notices.push_back(
+      kept.empty() ? fmt::format("{}: THEY START EMPTY", what)
+                   : fmt::format("{}: THE SESSION FILE KEPT AS {}; THEY START EMPTY", what, kept));
+  rewrite = true;
+}
+
 // Removes what a crash can leave behind: temporaries, and the variable files the session does
 // not name (written by a save that did not finish, or left by one whose removals did not).
 void Session::State::collect_garbage(const SessionTable& table) {
@@ -742,7 +769,7 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
     images_same = images_same && (now ? now.is(e.shown) : e.kind == ImageEntry::absent);
   }
   if (!s.rewrite && surface_same && images_same && old.status == ws.status &&
-      old.functions == ws.functions)
+      old.functions == ws.functions && old.apl_variables == ws.apl_variables)
     return {};
 
   // Never a session that the next start would refuse (PATCHES and INTPN are read only when the
@@ -757,6 +784,7 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
   SessionTable next = old;
   next.status = ws.status;
   next.functions = ws.functions;
+  next.apl_variables = ws.apl_variables;
   State::Writing w{s, next, {}};
   std::vector<UnsavedImage> unsaved;
   try {

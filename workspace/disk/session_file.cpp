@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "workspace/disk/apl_file.h"
 #include "workspace/disk/frame.h"
 
 namespace igds::disk {
@@ -15,8 +16,9 @@ constexpr std::uint32_t max_pieces = 1u << 16;
 constexpr std::uint64_t max_piece_bytes = std::uint64_t(1) << 40;
 // The fewest bytes a piece takes in the file (an empty one kept in the session file).
 constexpr std::size_t min_piece_bytes = 9;
-// The tag of the journal's section ("JRNL").
+// The tags of the journal's section ("JRNL") and of END APL's variables' ("APLV").
 constexpr std::uint32_t journal_tag = 0x4c4e524a;
+constexpr std::uint32_t apl_variables_tag = 0x564c5041;
 
 void write_ref(Writer& w, const FileRef& f) {
   w.u32(f.number);
@@ -167,14 +169,7 @@ std::string encode_session(const SessionTable& t) {
         break;
     }
   }
-  w.u32(static_cast<std::uint32_t>(t.functions.size()));
-  for (const auto& f : t.functions) {
-    w.u32(static_cast<std::uint32_t>(f.size()));
-    for (const auto& line : f) {
-      w.u32(static_cast<std::uint32_t>(line.size()));
-      w.bytes(line);
-    }
-  }
+  write_functions(w, t.functions);
   // The surfaces' twists and AUTO tangents, after the functions (a section added later).
   std::uint32_t marked = 0;
   for (const Record& rec : t.records) marked += (rec.twists | rec.auto_tangents) != 0;
@@ -184,6 +179,14 @@ std::string encode_session(const SessionTable& t) {
     w.u32(rec.id);
     w.u8(rec.twists);
     w.u8(rec.auto_tangents);
+  }
+  if (!t.apl_variables.empty()) {
+    Writer v;
+    write_variables(v, t.apl_variables);
+    const std::string bytes = v.str();
+    w.u32(apl_variables_tag);
+    w.u64(bytes.size());
+    w.bytes(bytes);
   }
   if (!t.journal.empty()) {
     w.u32(journal_tag);
@@ -241,18 +244,7 @@ SessionTable decode_session(std::string_view payload) {
         break;
     }
   }
-  if (!r.at_end()) {
-    // Each count is checked against what is left, so a crafted count cannot make a huge table.
-    const std::uint32_t functions = r.u32();
-    if (functions > r.left() / 8) throw Damage("FORMAT");  // a count of lines and one line
-    t.functions.resize(functions);
-    for (auto& f : t.functions) {
-      const std::uint32_t lines = r.u32();
-      if (lines == 0 || lines > r.left() / 4) throw Damage("FORMAT");
-      f.resize(lines);
-      for (auto& line : f) line = std::string(r.bytes(r.u32()));
-    }
-  }
+  if (!r.at_end()) t.functions = read_functions(r);
   if (!r.at_end()) {
     const std::uint32_t marked = r.u32();
     if (marked > t.records.size()) throw Damage("FORMAT");
@@ -264,8 +256,26 @@ SessionTable decode_session(std::string_view payload) {
       if (rec->twists > 1 || rec->auto_tangents > 1) throw Damage("FORMAT");
     }
   }
-  if (!r.at_end()) {
-    if (r.u32() != journal_tag) throw Damage("FORMAT");
+  bool more = !r.at_end();
+  std::uint32_t tag = more ? r.u32() : 0;
+  if (more && tag == apl_variables_tag) {
+    const std::uint64_t n = r.u64();
+    if (n == 0 || n > r.left()) throw Damage("FORMAT");
+    Reader section(r.bytes(static_cast<std::size_t>(n)));
+    try {
+      // More than igds writes there: a forged section.
+      if (n > max_session_apl_bytes + 4) throw Damage("FORMAT: MORE THAN 8 MB");
+      t.apl_variables = read_variables(section);
+      if (!section.at_end()) throw Damage("FORMAT: BYTES AFTER THE VARIABLES");
+    } catch (const Damage& d) {
+      t.apl_variables.clear();
+      t.apl_variables_damage = d.reason();
+    }
+    more = !r.at_end();
+    tag = more ? r.u32() : 0;
+  }
+  if (more) {
+    if (tag != journal_tag) throw Damage("FORMAT");
     const std::uint64_t n = r.u64();
     if (n == 0 || n > r.left()) throw Damage("FORMAT");
     t.journal = std::string(r.bytes(static_cast<std::size_t>(n)));

@@ -78,6 +78,11 @@ struct SessionTable {
   // END APL's defined functions, each its lines (written after the images; a file without them,
   // from an igds that did not keep them, has none).
   std::vector<std::vector<std::string>> functions;
+  // The user's own variables of END APL (workspace/disk/apl_file.h), a tagged section before the
+  // journal's; a file without it has none. A section that does not read costs itself alone:
+  // decode_session leaves the variables empty and says why in `apl_variables_damage`.
+  std::vector<AplVariable> apl_variables;
+  std::string apl_variables_damage;  // in memory only
   // The undo journal (workspace/disk/journal_file.h), as its own encoding: the last section,
   // tagged; a file without it has an empty journal.
   std::string journal;
@@ -91,6 +96,9 @@ struct SessionTable {
 inline constexpr std::size_t inline_limit = 1024;          // bytes kept in the session file
 inline constexpr std::size_t piece_bytes = 2u << 20;       // an input array's pieces: 2 MB
 inline constexpr std::uint32_t file_numbers = 0x10000000;  // seven hex digits
+// The most bytes END APL's variables take in the session file (itself at most 16 MB): a larger
+// variable is kept by )SAVE only.
+inline constexpr std::size_t max_session_apl_bytes = std::size_t(8) << 20;
 
 std::string encode_session(const SessionTable& table);
 // Throws Damage("FORMAT") for anything malformed (lengths, kinds, counts).
