@@ -22,37 +22,6 @@ namespace igds {
 
 extern const Command save_command, restore_command;
 
-namespace {
-
-constexpr std::string_view apl_short_help =
-    "Type an APL statement (the IGDS variables are APL variables), )VARS, )FNS, START to go back "
-    "to IGDS or )OFF to leave.";
-// Paragraphs, one a line: the terminal lays them out at the screen's width.
-constexpr std::string_view apl_long_help =
-    "The APL environment is APL\\360: any statement, on the IGDS workspace variables (manual "
-    "section 7) and on variables and functions of your own.\n"
-    "  NOCUR NOSTR INTCU INTST  the grid: input curves and stringers, interpolated ones\n"
-    "  INPPN    input points, (NOCUR x NOSTR) x 3\n"
-    "  INPTG    border tangents and point numbers\n"
-    "  PATCHES  the Coons matrices of every patch\n"
-    "  INTPN    the interpolated grid\n"
-    "  IMAGE DESIM  the current image and its description\n"
-    "  TEMP1 DEST1 TEMP2 DEST2  the copies of STORE FIRST and SECOND\n"
-    "  STATUS   STATUS[1] is 1 for HELP LONG, 0 for SHORT\n"
-    "The manual's functions: FIT COONS ASSON CONIC ISOM ORTHOG SCALE DESCR LUT INIT, and COMDIS "
-    "'SURFACE ISOMETRIC 3 30' (COMBUI COMCHA COMSTO COMSAV COMRES COMPLO COMWRI COMEND) runs "
-    "that command. )VARS and )FNS list the names.\n"
-    "START goes back to IGDS (READY): a changed INPPN, INPTG, NOCUR ... INTST makes PATCHES and "
-    "INTPN again; a workspace that does not agree with itself is refused, with the reason, and "
-    "APL goes on. )SAVE NAME and )LOAD NAME are SAVE and RESTORE; )OFF leaves.\n"
-    "Without an APL keyboard, ` then a key types a symbol (`r is ⍴, `- is ×; list below).\n"
-    "Example:\n"
-    "      INPPN[5;3]←2\n"
-    "      ⍴INTPN\n"
-    "9 9 3";
-
-}  // namespace
-
 Interpreter::Interpreter(Options options, Disk disk, Session& session, Workspace ws,
                          Terminal& terminal)
     : options_(std::move(options)),
