@@ -380,14 +380,7 @@ inline void mutate_table(disk::SessionTable& t, std::minstd_rand& rng) {
         case 2: {
           // END APL's variables: a name APL may or may not have, elements that may not fill
           // the shape, numbers that may not be finite.
-          static const char* const names[] = {"A",
-                                              "Z_",
-                                              "\xE2\x88\x86"
-                                              "1",
-                                              "INPPN",
-                                              "a",
-                                              "1A",
-                                              ""};
+          static const char* const names[] = {"A", "Z_", "∆1", "INPPN", "a", "1A", ""};
           AplVariable v;
           v.name = names[rng() % 7];
           for (std::size_t k = rng() % 3; k > 0; --k)

@@ -189,8 +189,8 @@ TEST_CASE("Fw.d of other widths and decimals agrees with fmt, by the library bey
     for (long long k = -20'000; k <= 20'000; ++k) c.check(static_cast<double>(k) / 16);
     for (double v : {0.0, -0.0, 0.5, -0.5, 1e15, 4503599627370496.0, 9007199254740993.0, 1e22})
       c.check(v);
-    CAPTURE(w);
-    CAPTURE(d);
+    CAPTURE(c.w);
+    CAPTURE(c.d);
     c.report();
   }
 }
