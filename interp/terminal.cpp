@@ -407,7 +407,7 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
       // Keys typed before the cross-hair was up, or sent with it left up: a typed line, once
       // GIN mode is left (a click meanwhile is no key of it). Ctrl-C meanwhile abandons it.
       std::string typed(reader.ahead());
-      if (reader.typed()) typed = without_clicks(reader.rest(), reader.terminator());
+      if (reader.typed()) typed += without_clicks(reader.rest(), reader.terminator());
       const Event::Kind left = leave_gin(mark);
       if (left != Event::Kind::key) {
         write_dialogue("\n");
