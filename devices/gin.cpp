@@ -15,6 +15,42 @@ bool carriage_return(char c) {
   return c == '\r' || c == '\n';
 }
 
+enum class Fit { whole, short_of, none };
+
+// Whether the bytes begin with a report ending in `terminator` bytes (CR, then EOT).
+Fit report_fits(std::string_view bytes, std::size_t terminator) {
+  for (std::size_t i = 1; i < 5 + terminator; ++i) {
+    if (i >= bytes.size()) return Fit::short_of;
+    const char c = bytes[i];
+    if (!(i < 5 ? address_byte(c) : i == 5 ? carriage_return(c) : c == '\x04')) return Fit::none;
+  }
+  return Fit::whole;
+}
+
+constexpr std::size_t npos = std::string::npos;
+
+// The length of the escape sequence the bytes begin with, as xterm sends keys (ESC or 8-bit CSI
+// and SS3): 0 when they begin with none, npos while it is not whole.
+std::size_t sequence_length(std::string_view bytes) {
+  const auto at = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  std::size_t from = 1;
+  if (at(0) == 0x1B) {
+    if (bytes.size() < 2) return npos;
+    if (bytes[1] == 'O') return bytes.size() < 3 ? npos : 3;
+    if (bytes[1] != '[') return 2;
+    from = 2;
+  } else if (at(0) == 0x8F) {
+    return bytes.size() < 2 ? npos : 2;
+  } else if (at(0) != 0x9B) {
+    return 0;
+  }
+  for (std::size_t i = from; i < bytes.size(); ++i) {
+    if (at(i) >= 0x40 && at(i) <= 0x7E) return i + 1;  // the final byte
+    if (at(i) < 0x20 || at(i) > 0x3F) return i;        // cut short: the next byte is not its
+  }
+  return npos;
+}
+
 }  // namespace
 
 std::optional<GinReport> decode_gin(std::string_view bytes, int bits) {
@@ -56,12 +92,20 @@ void GinReader::feed(std::string_view bytes) {
   scan();
 }
 
+bool GinReader::unsettled() const {
+  return mark_end_ != npos && (terminator_ < 0 || (!done() && searched_ < bytes_.size()));
+}
+
 void GinReader::settle() {
-  if (mark_end_ == npos || terminator_ >= 0) return;
-  // Whatever terminator bytes have come are all there is.
-  terminator_ = mark_end_ < bytes_.size() ? 1 : 0;
-  searched_ = mark_end_ + static_cast<std::size_t>(terminator_);
-  scan();
+  if (mark_end_ == npos) return;
+  if (terminator_ < 0) {
+    // Whatever terminator bytes have come are all there is.
+    terminator_ = mark_end_ < bytes_.size() ? 1 : 0;
+    searched_ = mark_end_ + static_cast<std::size_t>(terminator_);
+    scan();
+  } else if (!done() && searched_ < bytes_.size()) {
+    typed_at_ = searched_;  // a report begun and never ended: keys
+  }
 }
 
 std::string_view GinReader::ahead() const {
@@ -69,7 +113,8 @@ std::string_view GinReader::ahead() const {
 }
 
 std::string_view GinReader::rest() const {
-  return report_ ? std::string_view(bytes_).substr(report_end_) : std::string_view{};
+  if (report_) return std::string_view(bytes_).substr(report_end_);
+  return typed() ? std::string_view(bytes_).substr(typed_at_) : std::string_view{};
 }
 
 std::string_view GinReader::after_mark() const {
@@ -102,22 +147,39 @@ void GinReader::scan() {
     }
     searched_ = mark_end_ + static_cast<std::size_t>(terminator_);
   }
-  if (report_) return;
-  const std::size_t length = 5 + static_cast<std::size_t>(terminator_);
-  while (searched_ + length <= bytes_.size()) {
-    const std::string_view candidate = std::string_view(bytes_).substr(searched_, length);
-    bool whole = true;
-    for (std::size_t i = 1; i < 5; ++i) whole = whole && address_byte(candidate[i]);
-    if (terminator_ >= 1) whole = whole && carriage_return(candidate[5]);
-    if (terminator_ == 2) whole = whole && candidate[6] == '\x04';
-    if (whole) {
-      report_ = decode_gin(candidate.substr(0, 5), bits_);
-      report_->used = length;
-      report_end_ = searched_ + length;
+  if (done()) return;
+  const auto t = static_cast<std::size_t>(terminator_);
+  while (searched_ < bytes_.size()) {
+    const std::string_view from = std::string_view(bytes_).substr(searched_);
+    const Fit fit = report_fits(from, t);
+    if (fit == Fit::whole) {
+      report_ = decode_gin(from.substr(0, 5), bits_);
+      report_->used = 5 + t;
+      report_end_ = searched_ + 5 + t;
       return;
     }
-    ++searched_;  // a byte that begins no report: a key that sends none (an arrow's sequence)
+    if (fit == Fit::short_of) return;
+    const std::size_t sequence = sequence_length(from);
+    if (sequence == npos) return;
+    if (sequence == 0) {
+      typed_at_ = searched_;  // no report can begin here: keys sent as they are
+      return;
+    }
+    searched_ += sequence;  // a key that sends no report (an arrow's sequence)
   }
+}
+
+std::string without_clicks(std::string_view keys, int terminator) {
+  std::string out;
+  for (std::size_t i = 0; i < keys.size();) {
+    if (static_cast<unsigned char>(keys[i]) >= 0xC0 &&
+        report_fits(keys.substr(i), static_cast<std::size_t>(terminator)) == Fit::whole) {
+      i += 5 + static_cast<std::size_t>(terminator);
+      continue;
+    }
+    out += keys[i++];
+  }
+  return out;
 }
 
 bool second_click(const GinReport& first, std::chrono::steady_clock::time_point first_at,

@@ -37,9 +37,13 @@ std::string gin_address(int x, int y);
 // arrives and however it is cut into reads. Just before GIN mode igds puts the alpha cursor at a
 // place of its choice and asks for the terminal's status (ESC ENQ): the answer, a status byte
 // and that place's address, is the mark. Bytes before it are keys typed before the cross-hair
-// was up; after it comes the report (bytes before the report that cannot begin one are keys
-// that send no report, such as the arrows, and are dropped); what follows the report was typed
-// after it. The mark also tells which terminator the terminal ends its answers with.
+// was up. After it, in GIN mode, xterm sends the report, or first the keys it sends as they are
+// with the cross-hair left up: an escape sequence (an arrow, a function key), dropped, or a plain
+// key (the numeric keypad, or a key pressed between the terminal's reading of ESC ENQ and of ESC
+// SUB). Those are typed: the report is looked for at the first byte that is no escape sequence
+// only, and bytes there that cannot be one, or that stop short of one, are keys, never read as
+// addresses. What follows the report was typed after it. The mark also tells which terminator
+// the terminal ends its answers with.
 class GinReader {
  public:
   // `mark_x`, `mark_y`: where the alpha cursor was put, in 4013 points.
@@ -47,20 +51,25 @@ class GinReader {
 
   // Bytes as they arrive.
   void feed(std::string_view bytes);
-  // Nothing more came for a while where the mark's terminator might still follow: it has none,
-  // or only the CR of CR EOT.
+  // Nothing more came for a while (a report comes whole, in one write): where the mark's
+  // terminator might still follow, it has none, or only the CR of CR EOT; else bytes after the
+  // mark that began a report without ending one are keys.
   void settle();
 
   bool marked() const { return mark_end_ != npos && terminator_ >= 0; }
-  // The mark has been read, up to where its terminator may still follow: wait a moment (then
-  // settle()) rather than for ever.
-  bool unsettled() const { return mark_end_ != npos && terminator_ < 0; }
-  bool done() const { return report_.has_value(); }
+  // The mark has been read, up to where its terminator or a report begun may still follow: wait
+  // a moment (then settle()) rather than for ever.
+  bool unsettled() const;
+  // A report, or keys after the mark (typed()).
+  bool done() const { return report_.has_value() || typed_at_ != npos; }
+  // Keys came after the mark where the report was looked for: the terminal may still be in GIN
+  // mode.
+  bool typed() const { return typed_at_ != npos; }
 
   // The bytes before the mark (known as soon as the mark is found).
   std::string_view ahead() const;
   const std::optional<GinReport>& report() const { return report_; }
-  // The bytes after the report.
+  // The bytes after the report, or from the first key typed after the mark.
   std::string_view rest() const;
   // The bytes after the mark and its terminator, report or not.
   std::string_view after_mark() const;
@@ -76,10 +85,16 @@ class GinReader {
   std::string bytes_;
   std::size_t mark_at_ = npos, mark_end_ = npos;  // the mark's status byte; just after its address
   int terminator_ = -1;
-  std::size_t searched_ = 0;  // where the report is looked for from
+  std::size_t searched_ = 0;  // where the report is looked for
   std::optional<GinReport> report_;
   std::size_t report_end_ = 0;
+  std::size_t typed_at_ = npos;  // the first key after the mark that is no report
 };
+
+// `keys` (typed where a report may have come among them) without a mouse button's report: its
+// letter with the high bit set (a UTF-8 lead byte, which never has an address byte after it in
+// text), four address bytes and `terminator` bytes of CR or EOT.
+std::string without_clicks(std::string_view keys, int terminator);
 
 // Two clicks of one button, at one place, less than `interval` apart: a double click, which
 // chooses once (xterm reports each click that finds GIN mode on).

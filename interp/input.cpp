@@ -113,8 +113,11 @@ KeySource::KeySource(int fd, Interrupts& interrupts) : fd_(fd), interrupts_(inte
   termios t;
   if (tcgetattr(fd_, &t) == 0) {
     saved_ = t;
-    // Keys one at a time, not echoed (igds echoes them on its screen); Ctrl-C still a signal.
+    // Keys one at a time, not echoed (igds echoes them on its screen); Ctrl-C still a signal,
+    // but the tty drops no output with it: what the terminal had not yet read would be missing
+    // from a screen igds keeps account of. igds drops the keys typed ahead itself.
     t.c_lflag &= static_cast<tcflag_t>(~(ICANON | ECHO | ECHONL));
+    t.c_lflag |= NOFLSH;
     t.c_cc[VMIN] = 1;
     t.c_cc[VTIME] = 0;
     tcsetattr(fd_, TCSANOW, &t);
@@ -141,6 +144,7 @@ bool KeySource::read_more(std::optional<std::chrono::milliseconds> timeout, Even
     kind = wait_for(fd_, &interrupts_, ms);
     if (kind == Event::Kind::interrupt) {
       pending_.clear();
+      tcflush(fd_, TCIFLUSH);
       return false;
     }
     if (kind == Event::Kind::timeout) return false;
@@ -157,7 +161,16 @@ bool KeySource::read_more(std::optional<std::chrono::milliseconds> timeout, Even
   }
 }
 
+bool KeySource::interrupted() {
+  if (!interrupts_.take()) return false;
+  pending_.clear();
+  tcflush(fd_, TCIFLUSH);
+  return true;
+}
+
 Event KeySource::key(std::optional<std::chrono::milliseconds> timeout) {
+  // Keys read already do not hide a Ctrl-C typed after them.
+  if (!pending_.empty() && interrupted()) return {Event::Kind::interrupt, {}};
   for (;;) {
     // One character: a UTF-8 lead byte and its continuation bytes (a lead byte followed by a
     // byte that continues nothing is a key of its own).
@@ -178,6 +191,7 @@ Event KeySource::key(std::optional<std::chrono::milliseconds> timeout) {
 }
 
 Event KeySource::bytes(std::optional<std::chrono::milliseconds> timeout) {
+  if (!pending_.empty() && interrupted()) return {Event::Kind::interrupt, {}};
   Event::Kind kind;
   if (pending_.empty() && !read_more(timeout, kind)) return {kind, {}};
   return {Event::Kind::key, std::exchange(pending_, {})};

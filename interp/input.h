@@ -76,6 +76,9 @@ class KeySource final : public EventSource {
   // The next bytes from the terminal, waiting at most `timeout`: false at a timeout, an
   // interrupt (`kind` says which) or the end.
   bool read_more(std::optional<std::chrono::milliseconds> timeout, Event::Kind& kind);
+  // Ctrl-C came: what was typed ahead is dropped, here and in the tty, as the tty's own flush
+  // would (it is off, NOFLSH). False when none came.
+  bool interrupted();
 
   std::optional<termios> saved_;
   std::string pending_;  // bytes read but not yet given

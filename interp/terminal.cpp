@@ -279,13 +279,34 @@ namespace {
 constexpr std::chrono::milliseconds answer_rest{30}, answer_limit{2000};
 constexpr std::string_view gin_on = "\x1B\x1A", alpha_mode = "\x1F";
 
+// `keys` without the answers to the status asked at `places` (a status byte, the place's
+// address, the terminator), which came before the answer waited for last.
+std::string without_answers(std::string keys, const std::vector<std::string>& places,
+                            std::size_t terminator) {
+  for (const std::string& address : places)
+    for (auto at = keys.find(address, 1); at != std::string::npos; at = keys.find(address, at)) {
+      std::size_t end = at + address.size();
+      for (std::size_t k = 0; k < terminator && end < keys.size(); ++k)
+        if (keys[end] == (k == 0 ? '\r' : '\x04') || (k == 0 && keys[end] == '\n')) ++end;
+      keys.erase(at - 1, end - (at - 1));
+      at = std::max<std::size_t>(at - 1, 1);
+    }
+  return keys;
+}
+
 }  // namespace
 
-bool Terminal::leave_gin() {
+Event::Kind Terminal::leave_gin(std::string_view asked) {
   // Any control character ends GIN mode; the mark is put aside of the last one, so that an
-  // answer to that one still on its way is not taken for it. Ctrl-C meanwhile makes the tty drop
-  // what it holds, the answer perhaps: the status is asked again, a point further aside.
+  // answer to that one still on its way is not taken for it. Ctrl-C meanwhile may make a tty
+  // drop what it holds, the answer perhaps: the status is asked again, a point further aside,
+  // and the answers to the earlier requests that did come are dropped (the cross-hair's too,
+  // when Ctrl-C came before it).
   GinReader reader(0, 0, 10);
+  bool interrupted = false;
+  std::string read;                  // all bytes read here
+  std::vector<std::string> earlier;  // the places asked before the last
+  if (!asked.empty()) earlier.emplace_back(asked);
   for (int aside = 1; !reader.marked(); ++aside) {
     DevicePoint at;
     std::string request(alpha_mode);
@@ -293,20 +314,30 @@ bool Terminal::leave_gin() {
     out_.write(request);
     out_.flush();
     reader = GinReader(at.x, at.y, 10);
+    reader.feed(read);
+    earlier.push_back(gin_address(at.x, at.y));
     const auto deadline = now_() + answer_limit;
     Event e;
     while (!reader.marked() && now_() < deadline) {
       e = input_->bytes(reader.unsettled() ? answer_rest : answer_limit);
-      if (e.kind == Event::Kind::end) return false;
+      if (e.kind == Event::Kind::end) return Event::Kind::end;
       if (e.kind == Event::Kind::interrupt) break;
       if (e.kind == Event::Kind::timeout && reader.unsettled()) reader.settle();
-      if (e.kind == Event::Kind::key) reader.feed(e.text);
+      if (e.kind == Event::Kind::key) {
+        read += e.text;
+        reader.feed(e.text);
+      }
     }
     if (e.kind != Event::Kind::interrupt && !reader.marked()) break;  // no answer: none comes
+    interrupted = interrupted || e.kind == Event::Kind::interrupt;
   }
   // A report that left before GIN mode did is dropped, or what the tty left of one whose key
   // was Ctrl-C (its address and terminator); the keys typed meanwhile are kept.
-  std::string_view keys = reader.ahead();
+  earlier.pop_back();
+  const std::string answered =
+      without_answers(std::string(reader.ahead()), earlier,
+                      static_cast<std::size_t>(std::max(0, reader.terminator())));
+  std::string_view keys = answered;
   if (reader.marked()) {
     const std::size_t t = static_cast<std::size_t>(reader.terminator());
     auto report_at = [&](std::size_t from) {
@@ -323,7 +354,7 @@ bool Terminal::leave_gin() {
   std::string kept(keys);
   kept += reader.after_mark();
   input_->unread(std::move(kept));
-  return true;
+  return interrupted ? Event::Kind::interrupt : Event::Kind::key;
 }
 
 Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) {
@@ -350,6 +381,7 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
     out_.write(request);
     out_.flush();
     GinReader reader(at.x, at.y, screen_->bits());
+    const std::string mark = gin_address(at.x, at.y);
     Event e;
     while (!reader.done()) {
       // Before the mark or between reports nothing limits the wait: a person is choosing.
@@ -366,15 +398,20 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
     if (e.kind == Event::Kind::interrupt || e.kind == Event::Kind::end) {
       // Ctrl-C: the terminal's report of it (the key, then its address) is read and dropped,
       // and the question abandoned on a line of its own.
-      if (e.kind == Event::Kind::interrupt && !leave_gin()) e.kind = Event::Kind::end;
+      if (e.kind == Event::Kind::interrupt && leave_gin(mark) == Event::Kind::end)
+        e.kind = Event::Kind::end;
       write_dialogue("\n");
       return e;
     }
-    if (!reader.done()) {
+    if (!reader.done() || reader.typed()) {
+      // Keys typed before the cross-hair was up, or sent with it left up: a typed line, once
+      // GIN mode is left (a click meanwhile is no key of it). Ctrl-C meanwhile abandons it.
       std::string typed(reader.ahead());
-      if (!leave_gin()) {
+      if (reader.typed()) typed += without_clicks(reader.rest(), reader.terminator());
+      const Event::Kind left = leave_gin(mark);
+      if (left != Event::Kind::key) {
         write_dialogue("\n");
-        return {Event::Kind::end, {}};
+        return {left, {}};
       }
       input_->unread(std::move(typed));
       return typed_pick(edit_line({}));

@@ -151,8 +151,10 @@ class Terminal {
   // The cross-hair of a Tek terminal typing keys (pick()).
   Event cross_hair(std::string_view prompt, std::string_view pick_keys);
   // GIN mode left and the terminal's answers until a new mark read and dropped (a report sent
-  // meanwhile among them); the keys typed meanwhile kept. False when the input ended.
-  bool leave_gin();
+  // meanwhile among them, and the answer to the status `asked` at the cross-hair's place); the
+  // keys typed meanwhile kept. Event::Kind::key, or the end of the input, or an interrupt that
+  // came meanwhile.
+  Event::Kind leave_gin(std::string_view asked = {});
   // A line typed at a cross-hair question: `X Y [KEY]` a pick, else the line.
   static Event typed_pick(Event e);
 

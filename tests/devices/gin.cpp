@@ -1,6 +1,6 @@
 // The GIN report decoder (devices/gin.h): the key and the cross-hair's position, with each of
 // xterm's ginTerminator settings, both address widths, a mouse button's high bit, and bytes
-// that are no report.
+// that are no report; the reader's keys after the mark.
 #include "devices/gin.h"
 
 #include <doctest/doctest.h>
@@ -77,6 +77,45 @@ TEST_CASE("GIN: bytes that are no report") {
       r[static_cast<std::size_t>(place)] = static_cast<char>(b);
       CHECK_FALSE(decode_gin(r));
     }
+}
+
+TEST_CASE("GIN reader: after the mark, arrows are dropped and plain keys are keys, not addresses") {
+  const std::string mark = "4" + gin_address(100, 200) + "\r";
+  // An arrow's sequences (CSI and SS3), then the click's report and what was typed after it.
+  GinReader arrow(100, 200, 10);
+  arrow.feed(mark + "\x1B[A\x1BOB" + report(static_cast<char>(0xEC), 30, 40, "\r") + "NEXT");
+  REQUIRE(arrow.report());
+  CHECK_FALSE(arrow.typed());
+  CHECK(arrow.report()->x == 30);
+  CHECK(arrow.report()->y == 40);
+  CHECK(arrow.rest() == "NEXT");
+  // Keys xterm sends as they are with the cross-hair up (the keypad, or keys pressed before it
+  // read ESC SUB): typed, although "5 101" and a CR look like a report one byte on.
+  GinReader split(100, 200, 10);
+  split.feed(mark + "65 101\n" + report('H', 10, 20, "\r"));
+  REQUIRE(split.done());
+  CHECK(split.typed());
+  CHECK_FALSE(split.report());
+  CHECK(split.rest().starts_with("65 101\n"));
+  // A report begun and not ended: waited for a moment, then a key.
+  GinReader one(100, 200, 10);
+  one.feed(mark + "5");
+  CHECK_FALSE(one.done());
+  CHECK(one.unsettled());
+  one.settle();
+  CHECK(one.typed());
+  CHECK(one.rest() == "5");
+  // Fed byte by byte, the same.
+  GinReader bytes(100, 200, 10);
+  for (const char c : mark + "\x1B[A" + report(' ', 7, 8, "\r")) bytes.feed(std::string(1, c));
+  REQUIRE(bytes.report());
+  CHECK(bytes.report()->x == 7);
+}
+
+TEST_CASE("GIN: a click's report is taken out of keys typed with the cross-hair up") {
+  CHECK(without_clicks("5" + report(static_cast<char>(0xEC), 30, 40, "\r") + "12\n", 1) == "512\n");
+  CHECK(without_clicks("5" + report(static_cast<char>(0xF2), 30, 40), 0) == "5");
+  CHECK(without_clicks("\xC3\xA9 1 2\n", 1) == "\xC3\xA9 1 2\n");  // UTF-8 is no click
 }
 
 }  // namespace igds::test

@@ -20,6 +20,7 @@
 
 #include "commands/menu.h"
 #include "devices/menu_layout.h"
+#include "tests/e2e/e2e_support.h"
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
@@ -555,6 +556,64 @@ TEST_CASE("igds 2250 in an xterm Tek window: menu items clicked with the mouse, 
     return o;
   }());
   CHECK(after.out.find("UNDONE: BUILD") != std::string::npos);
+}
+
+TEST_CASE("igds in an xterm Tek window: HELP and Ctrl-C at a cross-hair question, then a zoom") {
+  if (!x_tools_present()) return;
+#ifndef IGDS_XCURSOR
+  if (skip_now("no Xlib with XFIXES to see xterm's cross-hair (libxfixes-dev)")) return;
+#endif
+  TempDir disk, scratch;
+  REQUIRE(run_commands(disk, std::string(saddle_build) + "DISPLAY INPUT ORTHOGONAL XY\n").status ==
+          0);
+  Xserver x;
+  REQUIRE_MESSAGE(!x.display.empty(), "no free display for Xvfb");
+  std::map<std::string, std::string> env{{"DISPLAY", x.display}};
+  // xterm logs what igds writes: what the dialogue said.
+  const auto said = scratch.path() / "said.log";
+  Background xterm({"xterm", "-t", "-xrm", "XTerm*tekGeometry: 1030x800+0+0", "-xrm",
+                    "XTerm*ginTerminator: CRonly", "-l", "-lf", said.string(), "-e",
+                    igds_binary().string(), "--disk", disk.path().string()},
+                   env, scratch.path() / "xterm.log");
+  auto window = window_of(xterm, env, "tektronix");
+  REQUIRE_MESSAGE(!window.empty(), "no Tek window: " << read_file(scratch.path() / "xterm.log"));
+  REQUIRE(ready_shown(x.display, window, scratch.path() / "start.png"));
+  REQUIRE(run({"xdotool", "windowfocus", "--sync", window}, in_env(env)).status == 0);
+  const auto shot = screenshot(x.display, window, scratch.path() / "start.png");
+  REQUIRE(shot);
+  const TekWindowMap map(shot->width, shot->height);
+  auto key = [&](const char* name) {
+    REQUIRE(run({"xdotool", "key", name}, in_env(env)).status == 0);
+  };
+  auto click_at = [&](int x4013, int y4013) {
+    REQUIRE(run({"xdotool", "mousemove", "--window", window, std::to_string(map.px(x4013)),
+                 std::to_string(map.py(y4013))},
+                in_env(env))
+                .status == 0);
+    REQUIRE_MESSAGE(wait_for([&] { return cross_hair(env); }, 20s), "no cross-hair");
+    REQUIRE(run({"xdotool", "click", "1"}, in_env(env)).status == 0);
+    wait_for([&] { return !cross_hair(env); }, 1s);
+  };
+  // HELP typed at the cross-hair is a line: the help, and the question again.
+  type_lines(env, {"ZOOM PICK"});
+  REQUIRE(wait_for([&] { return cross_hair(env); }, 20s));
+  type_lines(env, {"HELP"});
+  REQUIRE(wait_for([&] { return cross_hair(env); }, 20s));
+  CHECK(xterm.running());
+  // Ctrl-C abandons the question: no cross-hair, READY.
+  key("ctrl+c");
+  CHECK(wait_for([&] { return !cross_hair(env); }, 20s));
+  // The next cross-hair question is read in step: two corners clicked zoom.
+  type_lines(env, {"ZOOM PICK"});
+  click_at(100, 450);
+  click_at(400, 150);
+  type_lines(env, {"LIST IMAGES", "", "END CMS"});
+  CHECK(wait_for([&] { return !xterm.running(); }, 20s));
+  const std::string log = read_file(said);
+  CHECK(log.find("ZOOM shows a part") != std::string::npos);  // HELP at FIRST CORNER?
+  CHECK(log.find("ZOOMED TO") != std::string::npos);
+  CHECK(log.find("END OF INPUT") == std::string::npos);
+  CHECK(log.find("INCORRECT") == std::string::npos);
 }
 
 }  // namespace igds::test

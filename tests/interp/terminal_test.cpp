@@ -140,6 +140,33 @@ TEST_CASE("tek mode: a line typed at a cross-hair question is a line, a number a
     for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
 }
 
+TEST_CASE("tek mode: keys sent with the cross-hair left up are a typed line, GIN mode left") {
+  Xterm t;
+  // The numeric keypad sends its keys as they are and leaves the cross-hair up: an address typed
+  // on it is a position, never read as a report.
+  t.keys.plain("512 400\r");
+  const Event typed = t.terminal.pick("FIRST CORNER? ");
+  REQUIRE(typed.kind == Event::Kind::pick);
+  CHECK(typed.x == 512);
+  CHECK(typed.y == 400);
+  CHECK_FALSE(t.keys.terminal().gin());
+  // An arrow sends no report: dropped; the click after it picks.
+  t.keys.plain("\x1B[A");
+  t.keys.click(30, 40);
+  const Event arrow = t.terminal.pick("SECOND CORNER? ");
+  CHECK((arrow.kind == Event::Kind::pick && arrow.x == 30 && arrow.y == 40));
+  // One key, then nothing for a while: the first of a line, edited once GIN mode is left.
+  t.keys.plain("7");
+  t.keys.type("00 100\r");
+  const Event seven = t.terminal.pick("SECOND CORNER? ");
+  CHECK((seven.kind == Event::Kind::pick && seven.x == 700 && seven.y == 100));
+  CHECK(t.keys.left() == 0);
+  CHECK(t.rows() == std::vector<std::string>{"FIRST CORNER? 512 400", "SECOND CORNER? 30 40",
+                                             "SECOND CORNER? 700 100"});
+  for (const auto& page : decode_tek(t.out.text).pages)
+    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
+}
+
 TEST_CASE("tek mode: Ctrl-C at the cross-hair: GIN mode left, its report dropped, the line ended") {
   Xterm t;
   // Ctrl-C pressed with the cross-hair up: xterm reports it as a key; the tty makes the Ctrl-C a

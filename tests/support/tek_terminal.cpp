@@ -129,7 +129,9 @@ Event TekKeys::next(bool person_waits) {
     if (a.kind == Action::point) tek_.point_at(a.x, a.y);
     if (a.kind == Action::click) sent = tek_.click('l', a.x, a.y);
     if (a.kind == Action::type) sent = tek_.type(a.keys);
-    // Through the tty: Ctrl-C a signal that drops what waits to be read, CR read as LF.
+    if (a.kind == Action::plain) sent = a.keys;
+    // Through the tty: Ctrl-C a signal, and what waits to be read dropped (by igds, which reads
+    // the interrupt, as by a tty), CR read as LF.
     for (const char c : sent) {
       if (c == '\x03') {
         interrupted_ = true;
@@ -205,7 +207,6 @@ std::string XtermPty::transcript(std::size_t last) const {
 }
 
 void XtermPty::send(const std::string& bytes) {
-  pump(0);
   log('<', bytes);
   pty_.send_raw(bytes);
 }

@@ -68,6 +68,11 @@ class TekKeys final : public EventSource {
     actions_.push_back({Action::type, std::move(keys), 0, 0, early});
   }
   void point_at(int x, int y) { actions_.push_back({Action::point, {}, x, y, false}); }
+  // Keys xterm sends as they are, GIN mode left on: the numeric keypad's, or keys pressed after
+  // the terminal answered ESC ENQ and before it read ESC SUB.
+  void plain(std::string keys) {
+    actions_.push_back({Action::plain, std::move(keys), 0, 0, false});
+  }
   std::size_t left() const { return actions_.size() + bytes_.size(); }
   const FakeTek& terminal() const { return tek_; }
 
@@ -80,7 +85,7 @@ class TekKeys final : public EventSource {
 
  private:
   struct Action {
-    enum Kind { click, type, point } kind;
+    enum Kind { click, type, point, plain } kind;
     std::string keys;
     int x, y;
     bool early;
@@ -109,10 +114,23 @@ class XtermPty {
   void pump(int timeout_ms);
   // Waits, answering, until `text` is in the output after the last match.
   bool expect(std::string_view text, double timeout_seconds = 10);
+  // What igds wrote so far is not looked at by the next expect().
+  void skip_output() {
+    pump(0);
+    mark_ = pty_.output().size();
+  }
   // Waits, answering, until the cross-hair is up.
   bool expect_gin(double timeout_seconds = 10);
-  void click(char button, int x, int y) { send(tek_.click(button, x, y)); }
-  void type(std::string_view keys) { send(tek_.type(keys)); }
+  // What a click or a key sends depends on what the terminal has read by then: igds's output
+  // is read first.
+  void click(char button, int x, int y) {
+    pump(0);
+    send(tek_.click(button, x, y));
+  }
+  void type(std::string_view keys) {
+    pump(0);
+    send(tek_.type(keys));
+  }
   void point_at(int x, int y) { tek_.point_at(x, y); }
   // Both directions in order, readable: what a failing test shows.
   std::string transcript(std::size_t last = 4000) const;
