@@ -165,7 +165,8 @@ TEST_CASE("F10.3 by integer arithmetic: the edges of ten columns, tiny values, s
   CHECK(std::string(field, 10) == "**********");
 }
 
-TEST_CASE("Fw.d of other widths and decimals agrees with fmt, by the library beyond 3 decimals") {
+TEST_CASE("Fw.d of other widths and decimals agrees with fmt, by the library beyond 3 decimals" *
+          doctest::test_suite("slow")) {
   std::mt19937_64 rng(10);
   for (const auto& [w, d] : {std::pair{4, 0},
                              {7, 1},
