@@ -354,6 +354,7 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
       ws_.intpn = a.empty() ? Array() : std::move(a);
       break;
     case Variable::status:
+      if (!modes_before_) modes_before_ = {ws_.marks_twists(), ws_.auto_tangents()};
       for (std::size_t k = 0; k < 10; ++k) ws_.status[k] = static_cast<int>(a.ravel[k]);
       break;
     default: {
@@ -429,12 +430,16 @@ std::optional<std::string> AplEnvironment::start() {
   const bool own_patches = was({"PATCHES"}) && !ws_.patches.empty();
   const bool own_intpn =
       was({"INTPN"}) && !ws_.intpn.empty() && !(was({"PATCHES"}) && ws_.patches.empty());
-  const bool patch_inputs = was({"NOCUR", "NOSTR", "INPPN", "INPTG"});
+  // STATUS[3] and STATUS[4] belong to the surface (docs/decisions.md): other twists make PATCHES
+  // again, and either makes it another surface (its images, drawn before, are not of this one).
+  const bool twists = modes_before_ && modes_before_->first != ws_.marks_twists();
+  const bool modes = twists || (modes_before_ && modes_before_->second != ws_.auto_tangents());
+  const bool patch_inputs = twists || was({"NOCUR", "NOSTR", "INPPN", "INPTG"});
   const bool remake_patches = !own_patches && (patch_inputs || was({"PATCHES"}));
   const bool remake_intpn =
       !own_intpn && (remake_patches || own_patches || was({"INTCU", "INTST", "INTPN"}));
   auto reason = [](const VariableProblem& p) { return p.reason; };
-  const bool surface = remake_patches || remake_intpn || own_patches || own_intpn ||
+  const bool surface = modes || remake_patches || remake_intpn || own_patches || own_intpn ||
                        was({"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG"});
   if (surface) {
     if (auto p = size_problem(ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst)) return reason(*p);
@@ -489,7 +494,8 @@ std::optional<std::string> AplEnvironment::start() {
       keep_original();
       return problem;
     }
-    ws_.changes.replaced(!own_patches && !own_intpn);
+    // igds's interpolation when PATCHES was made here, or was and is kept (a FIT's stays its own).
+    ws_.changes.replaced(!own_patches && !own_intpn && (remake_patches || ws_.changes.derived));
   }
   for (Variable v : {Variable::image, Variable::temp1, Variable::temp2}) {
     const ImageRef& slot = *image_slot(ws_, v);
@@ -498,11 +504,13 @@ std::optional<std::string> AplEnvironment::start() {
   }
   if (auto p = status_problem(ws_.status)) return reason(*p);
   assigned_.clear();
+  modes_before_.reset();
   return std::nullopt;
 }
 
 void AplEnvironment::surface_replaced() {
   values_.clear();
+  modes_before_.reset();  // the new surface's modes are its own
   for (const char* n : {"NOCUR", "NOSTR", "INTCU", "INTST", "INPPN", "INPTG", "PATCHES", "INTPN"})
     assigned_.erase(n);
 }

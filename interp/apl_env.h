@@ -123,6 +123,9 @@ class AplEnvironment final : public apl::Host {
   Hooks hooks_;
   apl::AplSession session_;
   std::set<std::string> assigned_;  // the IGDS globals assigned since the last START
+  // The surface's modes (STATUS[3] twists, STATUS[4] AUTO mark) before the first assignment of
+  // STATUS since the last START: a change of them is a change of the surface.
+  std::optional<std::pair<bool, bool>> modes_before_;
   // The globals as APL values, made once while APL runs: a statement on INTPN then costs the
   // statement, not a copy of INTPN.
   std::map<std::string, apl::Value, std::less<>> values_;

@@ -155,6 +155,61 @@ TEST_CASE("START makes PATCHES and INTPN again from changed inputs") {
   CHECK(apl("∧/,FIT=INTPN") == Lines{"1"});
 }
 
+TEST_CASE("STATUS[3] and STATUS[4] assigned change the surface: other twists make PATCHES again") {
+  Apl apl(surface(5, 6, 2, 3));
+  const Workspace zero = apl.ws;
+  // Marks's twists: PATCHES and INTPN made again with them, and a surface of its own (an image
+  // drawn before is not of it: the session keeps it by the surface it was drawn from).
+  CHECK(apl("STATUS[3]←1").empty());
+  REQUIRE(!apl.env.start());
+  const Surface marks = interpolate(surface_input(apl.ws));
+  CHECK(apl.ws.patches == marks.patches);
+  CHECK(apl.ws.intpn == marks.intpn);
+  CHECK(apl.ws.patches != zero.patches);
+  CHECK(apl.ws.changes.derived);
+  CHECK(apl.ws.changes.surface != zero.changes.surface);
+  // The AUTO mark: the same PATCHES, another surface.
+  std::uint64_t generation = apl.ws.changes.surface;
+  CHECK(apl("STATUS[4]←1").empty());
+  REQUIRE(!apl.env.start());
+  CHECK(apl.ws.patches == marks.patches);
+  CHECK(apl.ws.changes.surface != generation);
+  // Given back before START: nothing changed.
+  generation = apl.ws.changes.surface;
+  CHECK(apl("STATUS[3]←0").empty());
+  CHECK(apl("STATUS[3]←1").empty());
+  REQUIRE(!apl.env.start());
+  CHECK(apl.ws.changes.surface == generation);
+  // PATCHES of the user's own stay theirs when only the mark changes; other twists make them
+  // again with IGDS's splines, as CHANGE TWISTS does.
+  CHECK(apl("PATCHES[1;1;3;2;3]←PATCHES[1;1;3;2;3]×2").empty());
+  REQUIRE(!apl.env.start());
+  const Array own = apl.ws.patches;
+  CHECK(apl("STATUS[4]←0").empty());
+  REQUIRE(!apl.env.start());
+  CHECK(apl.ws.patches == own);
+  CHECK(!apl.ws.changes.derived);
+  CHECK(apl("STATUS[3]←0").empty());
+  REQUIRE(!apl.env.start());
+  CHECK(apl.ws.patches == interpolate(surface_input(apl.ws)).patches);
+  CHECK(apl.ws.changes.derived);
+}
+
+TEST_CASE("PATCHES of the user's own stay theirs when only the grid changes afterwards") {
+  Apl apl(surface(3, 3, 1, 1));
+  CHECK(apl("PATCHES[1;1;3;2;3]←PATCHES[1;1;3;2;3]×2").empty());
+  REQUIRE(!apl.env.start());
+  const Array own = apl.ws.patches;
+  REQUIRE(!apl.ws.changes.derived);
+  // INTPN is made from them again; they are still not the inputs' interpolation, which the
+  // session would make again in their place.
+  CHECK(apl("INTCU←2").empty());
+  REQUIRE(!apl.env.start());
+  CHECK(apl.ws.patches == own);
+  CHECK(!apl.ws.changes.derived);
+  CHECK(apl("∧/,INTPN=FIT") == Lines{"1"});
+}
+
 TEST_CASE("START refuses a workspace that does not agree with itself, with the reason") {
   Apl apl(surface(3, 2, 1, 1));
   CHECK(apl("NOCUR←4").empty());
@@ -361,7 +416,7 @@ TEST_CASE("the session functions: AUTOMSAVE, RESTORE, DEFVAR, INIT") {
   apl.saved_session->apl_variables = {{"OLD", {}, false, {1}, {}}};
   CHECK(apl("RESTORE").empty());
   CHECK(apl("NOCUR,⍴INTPN") == Lines{"2 2 2 3"});
-  CHECK(!apl.env.start());  // nothing pending: NOCUR←4 went with the restored surface
+  CHECK(!apl.env.start());              // nothing pending: NOCUR←4 went with the restored surface
   CHECK(apl.ws.apl_variables == mine);  // the APL workspace's own stay
   CHECK(apl("DEFVAR").empty());
   CHECK(apl("NOCUR,⍴INPPN") == Lines{"0 0"});

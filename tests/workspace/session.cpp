@@ -22,11 +22,13 @@
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
+#include "tests/workspace/forge.h"
 #include "tests/workspace/small_disk.h"
 #include "workspace/disk/files.h"
 #include "workspace/disk/frame.h"
 #include "workspace/disk/session_file.h"
 #include "workspace/error.h"
+#include "workspace/journal.h"
 #include "workspace/kernels/data_error.h"
 
 using namespace igds;
@@ -758,6 +760,61 @@ TEST_CASE("an image refused at start costs that image, not the surface") {
   test::check_same_surface(loaded, ws);
   CHECK(!loaded.image);
   CHECK(test::same_bits(loaded.temp2, ws.temp2));
+}
+
+TEST_CASE(
+    "a record of the current surface whose modes STATUS contradicts: STATUS's are the surface's") {
+  // A forged record of the current surface that says MARKS twists where STATUS says ZERO: its
+  // image (the same surface's generation) is drawn with the workspace's modes, so that UNDO, REDO
+  // and the saves between them keep the image the workspace shows.
+  Scratch s;
+  Workspace ws = test::make_interpolated(5, 6, 2, 3);
+  ws.changes.inppn.saved();
+  ws.changes.inptg.saved();
+  Journal journal(ws);
+  // CHANGE POINTS, then DISPLAY SURFACE of the new surface: the image is its recipe.
+  ws.inppn.ravel[3 * 7 + 2] = 4;
+  Edits point = Edits::none();
+  point.part(3 * 7, 3 * 8);
+  ws.changes.edited(point, Edits::none());
+  Surface zero = interpolate(surface_input(ws));
+  ws.patches = std::move(zero.patches);
+  ws.intpn = std::move(zero.intpn);
+  REQUIRE(journal.record(ws, "CHANGE POINTS"));
+  const Description desim{1, Projection::assonometric, {110, 130, 120}};
+  ws.image = std::make_shared<const Image>(image_of(ws, desim));
+  REQUIRE(journal.record(ws, "DISPLAY SURFACE"));
+  // The same points with Marks's twists draw another image.
+  Workspace marks = ws;
+  marks.status[Workspace::status_twists] = 1;
+  marks.intpn = interpolate(surface_input(marks)).intpn;
+  REQUIRE(image_of(marks, desim) != *ws.image);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws, &journal);
+  }
+  disk::SessionTable table = test::forge::session_table(s.disk);
+  REQUIRE(table.images[0].kind == disk::ImageEntry::recipe);
+  REQUIRE(table.images[0].record == table.current);
+  REQUIRE(table.status[Workspace::status_twists] == 0);
+  table.record(table.current)->twists = 1;
+  test::forge::write_session(s.disk, table);
+
+  Workspace back;
+  {
+    Session session(s.disk);
+    back = session.load();
+    CHECK(session.notices().empty());
+    test::check_same_workspace(back, ws);
+    CHECK(back.image->drawn_from == back.changes.surface);
+    Journal again = session.take_journal(back);
+    REQUIRE(again.undo_count() == 2);
+    while (again.undo(back)) session.save(back, &again);
+    while (again.redo(back)) session.save(back, &again);
+  }
+  test::check_same_workspace(back, ws);
+  test::check_same_workspace(load_fresh(s.disk), ws);
 }
 
 TEST_CASE("the session never saves a workspace that the next start would refuse") {

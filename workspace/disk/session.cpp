@@ -433,7 +433,16 @@ Workspace Session::State::read_session() {
   Workspace ws;
   ws.status = t.status;
   if (t.current != 0) {
-    ws = inputs_of(*t.record(t.current));
+    // The current surface's modes are STATUS[3] and STATUS[4] (docs/disk.md, "The surfaces'
+    // modes"); its record is made to say the same, so that an image drawn from it is made with
+    // the workspace's modes: one generation, one surface.
+    Record& r = *t.record(t.current);
+    const std::uint8_t twists = ws.status[Workspace::status_twists] == 1 ? 1 : 0;
+    const std::uint8_t automatic = ws.status[Workspace::status_auto] == 1 ? 1 : 0;
+    rewrite = rewrite || r.twists != twists || r.auto_tangents != automatic;
+    r.twists = twists;
+    r.auto_tangents = automatic;
+    ws = inputs_of(r);
     ws.status = t.status;
   }
   ws.functions = t.functions;
