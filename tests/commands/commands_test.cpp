@@ -33,16 +33,6 @@ const std::vector<std::string> saddle{"3 3",
                                       "",
                                       "2 2"};
 
-std::string report_of(FakeContext& ctx, const Command& c, std::string_view option,
-                      std::vector<std::string> words = {}) {
-  try {
-    ctx.run(c, option, std::move(words));
-  } catch (const Error& r) {
-    return r.what();
-  }
-  return "";
-}
-
 void build_saddle(FakeContext& ctx) {
   ctx.type(saddle);
   ctx.run(build_command, "");

@@ -29,16 +29,6 @@ namespace igds::test {
 
 namespace {
 
-std::string report_of(FakeContext& ctx, const Command& c, std::string_view option,
-                      std::vector<std::string> words = {}) {
-  try {
-    ctx.run(c, option, std::move(words));
-  } catch (const Error& r) {
-    return r.what();
-  }
-  return "";
-}
-
 const std::vector<std::string> saddle{"3 3",
                                       "1  0 0 0   0 10 2   0 20 0",
                                       "4  10 0 2  10 10 0  10 20 2",

@@ -36,16 +36,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string report_of(FakeContext& ctx, const Command& c, std::string_view option,
-                      std::vector<std::string> words = {}) {
-  try {
-    ctx.run(c, option, std::move(words));
-  } catch (const Error& r) {
-    return r.what();
-  }
-  return "";
-}
-
 std::string file_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream s;

@@ -37,22 +37,13 @@ void run(FakeContext& ctx, const Command& c, std::string_view option, std::strin
   ctx.ws.changes.inptg.saved();
 }
 
-std::string report_of(FakeContext& ctx, const Command& c, std::vector<std::string> words = {}) {
-  try {
-    ctx.run(c, "", std::move(words));
-  } catch (const Error& r) {
-    return r.what();
-  }
-  return "NO REPORT";
-}
-
 }  // namespace
 
 TEST_CASE("UNDO says what it undid, REDO what it made again; nothing left: a report") {
   TempDir dir;
   FakeContext ctx(dir.path());
-  CHECK(report_of(ctx, undo_command) == "NOTHING TO UNDO");
-  CHECK(report_of(ctx, redo_command) == "NOTHING TO REDO");
+  CHECK(report_of(ctx, undo_command, "") == "NOTHING TO UNDO");
+  CHECK(report_of(ctx, redo_command, "") == "NOTHING TO REDO");
 
   run(ctx, build_command, "", "BUILD", saddle);
   const Workspace built = ctx.ws;
@@ -66,22 +57,22 @@ TEST_CASE("UNDO says what it undid, REDO what it made again; nothing left: a rep
   ctx.run(undo_command, "");
   CHECK(ctx.said.back() == "UNDONE: BUILD");
   CHECK(!ctx.ws.has_input());
-  CHECK(report_of(ctx, undo_command) == "NOTHING TO UNDO");
+  CHECK(report_of(ctx, undo_command, "") == "NOTHING TO UNDO");
   ctx.run(redo_command, "");
   CHECK(ctx.said.back() == "REDONE: BUILD");
   ctx.run(redo_command, "");
   CHECK(ctx.said.back() == "REDONE: CHANGE POINTS");
   CHECK(ctx.ws == changed);
-  CHECK(report_of(ctx, redo_command) == "NOTHING TO REDO");
+  CHECK(report_of(ctx, redo_command, "") == "NOTHING TO REDO");
 
   // A change after UNDO: what REDO had is gone.
   ctx.run(undo_command, "");
   run(ctx, change_command, "POINTS", "CHANGE POINTS", {"1 0 0 -3", "", "N", "N"});
-  CHECK(report_of(ctx, redo_command) == "NOTHING TO REDO");
+  CHECK(report_of(ctx, redo_command, "") == "NOTHING TO REDO");
   ctx.run(undo_command, "");
   CHECK(ctx.ws == built);
   // Words after UNDO are not taken.
-  CHECK(report_of(ctx, undo_command, {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
+  CHECK(report_of(ctx, undo_command, "", {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
   CHECK(ctx.ws == built);
 }
 

@@ -106,4 +106,15 @@ class FakeContext final : public Context {
   bool on_line_ = false;
 };
 
+// What a command run in `ctx` reported ("" when it reported nothing).
+inline std::string report_of(FakeContext& ctx, const Command& c, std::string_view option,
+                             std::vector<std::string> words = {}) {
+  try {
+    ctx.run(c, option, std::move(words));
+  } catch (const Error& r) {
+    return r.what();
+  }
+  return "";
+}
+
 }  // namespace igds::test
