@@ -6,8 +6,10 @@
 #include <doctest/doctest.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -135,6 +137,21 @@ TEST_CASE("EXPORT DUCT, IGES and STEP of a small surface: the golden files, the 
                         fmt::format("HULL.DUCTPIC: THE SURFACE IN SPACE, {} BYTES", duct.size()),
                         fmt::format("HULL.IGS: {} BYTES", iges.size()),
                         fmt::format("HULL.STP: {} BYTES", step.size())});
+  // FACES and a unit after the name, in any order, abbreviated (F is FACES, M metres).
+  ctx.run(export_command, "IGES", {"PATCHES", "F", "in"});
+  CHECK(read_file(dir.path() / "PATCHES.IGS") ==
+        write_iges(t.input, t.surface.patches,
+                   {"PATCHES", "PATCHES.IGS", golden_date, "", "", LengthUnit::inch},
+                   SurfaceForm::patches));
+  ctx.run(export_command, "STEP", {"METRES", "M"});
+  CHECK(read_file(dir.path() / "METRES.STP") ==
+        write_step(t.input, t.surface.patches,
+                   {"METRES", "METRES.STP", golden_date, "", "", LengthUnit::m}));
+  ctx.run(export_command, "STEP", {"NONE", "NONE", "FACES"});
+  CHECK(read_file(dir.path() / "NONE.STP") ==
+        write_step(t.input, t.surface.patches,
+                   {"NONE", "NONE.STP", golden_date, "", "", LengthUnit::none},
+                   SurfaceForm::patches));
 
   // An image of the current surface changes nothing: the surface is written in space.
   ctx.ws.image = std::make_shared<const Image>(
@@ -182,6 +199,18 @@ TEST_CASE("EXPORT DUCT, IGES, STEP: SURFACE NOT FOUND, INCORRECT PARAMETER, noth
   FakeContext surface(dir.path(), workspace_of(golden_surface()));
   CHECK(report_of([&] { surface.run(export_command, "IGES", {"A.B"}); }) ==
         "INCORRECT PARAMETER: A NAME HAS 1 TO 8 LETTERS, DIGITS OR $ # @ + - _");
+  CHECK(report_of([&] {
+          surface.run(export_command, "IGES", {"A", "YARDS"});
+        }) ==
+        "INCORRECT PARAMETER: YARDS: FACES OR A UNIT (M, MM, CM, INCH, FOOT, NONE) MAY FOLLOW THE "
+        "NAME");
+  CHECK(report_of([&] {
+          surface.run(export_command, "STEP", {"A", "M", "FOOT"});
+        }) == "INCORRECT PARAMETER: TWO UNITS");
+  CHECK(report_of([&] {
+          surface.run(export_command, "STEP", {"A", "FA", "FACES"});
+        }) == "INCORRECT PARAMETER: FACES TWICE");
+
   CHECK(ctx.prompts.empty());
   CHECK(fs::is_empty(dir.path()));
 }
@@ -403,29 +432,130 @@ TEST_CASE("igds: EXPORT IGES and STEP read by OpenCASCADE, every INTPN point fou
                    "OpenCASCADE's DRAW (occt-draw or DRAWEXE) is not installed: scripts/setup "
                    "--test installs it");
   const TestSurface t = golden_surface();
-  const RunResult run = run_commands(
-      disk, build_commands(t) + "EXPORT IGES HULL\nEXPORT STEP HULL\nEXPORT DUCT HULL\n");
+  const RunResult run =
+      run_commands(disk, build_commands(t) +
+                             "EXPORT IGES HULL\nEXPORT STEP HULL\nEXPORT DUCT HULL\n"
+                             "EXPORT IGES FACES FACES\nEXPORT STEP FACES FACES\n");
   INFO(run.out);
   CHECK(run.status == 0);
   CHECK(run.out.find("INCORRECT") == std::string::npos);
   REQUIRE(fs::exists(disk.path() / "HULL.IGS"));
   REQUIRE(fs::exists(disk.path() / "HULL.STP"));
   CHECK(run.out.find("HULL.DUCTPIC: THE SURFACE IN SPACE, ") != std::string::npos);
-  for (bool step : {false, true}) {
-    CAPTURE(step);
-    const std::vector<Probe> probes = probes_of(t, SurfaceForm::patches, 1);
-    const Result r =
-        run_draw(*draw, disk.path(), disk.path() / (step ? "HULL.STP" : "HULL.IGS"), step, probes);
-    INFO(r.all.substr(0, 4000));
-    CHECK(no_messages(r.transfer_checks));
-    CHECK(no_messages(r.model_checks));
-    CHECK(r.shape_check.find("This shape seems to be valid") != std::string::npos);
-    CHECK(r.counts.find("FACE      : 12\n") != std::string::npos);
-    const double worst = worst_error(t, probes, r);
-    MESSAGE(fmt::format("igds EXPORT {}: {} probes, largest relative error {:.2e}",
-                        step ? "STEP" : "IGES", probes.size(), worst));
-    CHECK(worst <= 1e-9);
+  for (SurfaceForm form : {SurfaceForm::one, SurfaceForm::patches}) {
+    for (bool step : {false, true}) {
+      CAPTURE(step);
+      CAPTURE(form == SurfaceForm::one);
+      const std::string name = form == SurfaceForm::one ? "HULL" : "FACES";
+      const std::vector<Probe> probes = probes_of(t, form, 1);
+      const Result r = run_draw(*draw, disk.path(), disk.path() / (name + (step ? ".STP" : ".IGS")),
+                                step, probes);
+      INFO(r.all.substr(0, 4000));
+      // IGES's one surface is C0 across its patch borders, which the reader says (iges.h).
+      if (!step && form == SurfaceForm::one)
+        CHECK(r.transfer_checks.find("Nb Total:1  for 1 items") != std::string::npos);
+      else
+        CHECK(no_messages(r.transfer_checks));
+      CHECK(no_messages(r.model_checks));
+      CHECK(r.shape_check.find("This shape seems to be valid") != std::string::npos);
+      CHECK(r.counts.find(form == SurfaceForm::one ? "FACE      : 1\n" : "FACE      : 12\n") !=
+            std::string::npos);
+      const double worst = worst_error(t, probes, r);
+      MESSAGE(fmt::format("igds EXPORT {} {}: {} probes, largest relative error {:.2e}",
+                          step ? "STEP" : "IGES", name, probes.size(), worst));
+      CHECK(worst <= 1e-9);
+    }
   }
+}
+
+TEST_CASE("igds: the crease angles of the manual's figure 6, measured by OpenCASCADE") {
+  TempDir disk;
+  const auto draw = find_draw(disk.path());
+  IGDS_SKIP_UNLESS(draw.has_value(),
+                   "OpenCASCADE's DRAW (occt-draw or DRAWEXE) is not installed: scripts/setup "
+                   "--test installs it");
+  // The example's BUILD, then the patches as faces (docs/exchange.md, "Crease angles").
+  const std::string example =
+      read_file(source_dir() / "scripts" / "examples" / "fig6-multipatch.igds");
+  const std::size_t display = example.find("\nDISPLAY INPUT");
+  REQUIRE(display != std::string::npos);
+  const RunResult run =
+      run_commands(disk, example.substr(0, display + 1) + "EXPORT STEP WAVE FACES\n");
+  INFO(run.out);
+  REQUIRE(fs::exists(disk.path() / "WAVE.STP"));
+  // Across every inner border of the 3 x 4 patches, 33 places: the angle between the normals of
+  // the two faces there (Su x Sv of each; the faces share their parameters, docs/exchange.md).
+  constexpr int rows = 3, columns = 4, places = 32;
+  // DRAW's commands are not used inside Tcl procedures (svalue fails there): the normals' cross
+  // product and the angle are written out at each place.
+  std::string tcl = fmt::format(
+      "pload MODELING DATAEXCHANGEKERNEL\n"
+      "stepread {{{}}} r *\nrenamevar r_1 shape\nexplode shape F\n"
+      "for {{set k 1}} {{$k <= {}}} {{incr k}} {{ mksurface g$k shape_$k }}\n",
+      (disk.path() / "WAVE.STP").string(), rows * columns);
+  // Borders u = j + 1 between patches (i, j) and (i, j + 1), v = i + 1 between (i, j) and
+  // (i + 1, j); patch (i, j) is face i * columns + j + 1.
+  tcl += fmt::format(
+      "for {{set i 0}} {{$i < {0}}} {{incr i}} {{\n"
+      "  for {{set j 0}} {{$j < {1}}} {{incr j}} {{\n"
+      "    set here [expr {{$i * {1} + $j + 1}}]\n"
+      "    foreach across {{0 1}} {{\n"
+      "      if {{$across == 0 && $j + 1 == {1}}} continue\n"
+      "      if {{$across == 1 && $i + 1 == {0}}} continue\n"
+      "      set there [expr {{$across == 0 ? $here + 1 : $here + {1}}}]\n"
+      "      for {{set s 0}} {{$s <= {2}}} {{incr s}} {{\n"
+      "        set t [expr {{double($s) / {2}}}]\n"
+      "        if {{$across == 0}} {{ set u [expr {{$j + 1}}]; set v [expr {{$i + $t}}] }} else "
+      "{{\n"
+      "          set u [expr {{$j + $t}}]; set v [expr {{$i + 1}}] }}\n"
+      "        set n {{}}\n"
+      "        foreach g [list g$here g$there] {{\n"
+      "          svalue $g $u $v x y z ux uy uz vx vy vz\n"
+      "          set a [dval ux]; set b [dval uy]; set c [dval uz]\n"
+      "          set d [dval vx]; set e [dval vy]; set f [dval vz]\n"
+      "          lappend n [expr {{$b*$f - $c*$e}}] [expr {{$c*$d - $a*$f}}] [expr {{$a*$e - "
+      "$b*$d}}]\n"
+      "        }}\n"
+      "        lassign $n a b c d e f\n"
+      "        set x [expr {{$b*$f - $c*$e}}]; set y [expr {{$c*$d - $a*$f}}]\n"
+      "        set z [expr {{$a*$e - $b*$d}}]\n"
+      "        set degrees [expr {{atan2(sqrt($x*$x + $y*$y + $z*$z), $a*$d + $b*$e + $c*$f) * "
+      "180 / acos(-1)}}]\n"
+      "        puts \"CREASE [expr {{$s == 0 || $s == {2}}}] $degrees\"\n"
+      "      }}\n"
+      "    }}\n"
+      "  }}\n"
+      "}}\n"
+      "exit\n",
+      rows, columns, places);
+  write_file(disk.path() / "crease.tcl", tcl);
+  INFO(tcl);
+  RunOptions options;
+  options.env = draw->env;
+  options.cwd = disk.path();
+  options.timeout_seconds = 600;
+  const RunResult r =
+      igds::test::run({draw->program, "-b", "-f", (disk.path() / "crease.tcl").string()}, options);
+  INFO(r.out);
+  INFO(r.err);
+  std::istringstream lines(r.out);
+  double worst = 0, worst_at_node = 0;
+  std::size_t measured = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind("CREASE ", 0) != 0) continue;
+    int node = 0;
+    double degrees = NAN;
+    std::istringstream(line.substr(7)) >> node >> degrees;
+    REQUIRE(std::isfinite(degrees));
+    (node ? worst_at_node : worst) = std::max(node ? worst_at_node : worst, degrees);
+    ++measured;
+  }
+  // 3 inner borders across 3 rows and 2 across 4 columns, 33 places each.
+  CHECK(measured == (rows * (columns - 1) + (rows - 1) * columns) * (places + 1));
+  MESSAGE(fmt::format("figure 6: largest crease {:.3f} degrees between the nodes, {:.1e} at them",
+                      worst, worst_at_node));
+  // The tangent planes of neighbouring patches agree at the grid's nodes (docs/kernels.md).
+  CHECK(worst_at_node < 1e-9);
 }
 
 TEST_CASE("igds: DISPLAY PICTURE on the 4013, kept by the session for the next igds") {

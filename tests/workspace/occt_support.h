@@ -64,7 +64,8 @@ inline std::optional<Draw> find_draw(const fs::path& scratch) {
   return d;
 }
 
-// One evaluation: a surface (face number f, 1-based) at (u, v), or a curve (edge e) at t.
+// One evaluation: a surface (face number f, 1-based) at (u, v), or a curve (edge e of the curves'
+// group) at t.
 struct Probe {
   bool surface = true;
   std::size_t item = 0;
@@ -78,8 +79,8 @@ struct Result {
   std::string all;
 };
 
-// Reads `file` with igesread or stepread, then evaluates the probes on the sub-shapes of the
-// result in order (faces, then edges, as the file lists its entities).
+// Reads `file` with igesread or stepread, then evaluates the probes on the faces of the result in
+// order, and on the edges of its last part, the group of the input curves, in order.
 inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& file, bool step,
                        const std::vector<Probe>& probes) {
   std::string tcl = "pload MODELING DATAEXCHANGEKERNEL\n";
@@ -93,7 +94,11 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
       "puts \"MODEL-BEGIN\\n[data c]\\nMODEL-END\"\n"
       "puts \"SHAPE-BEGIN\\n[checkshape shape]\\nSHAPE-END\"\n"
       "puts \"COUNT-BEGIN\\n[nbshapes shape]\\nCOUNT-END\"\n"
-      "explode shape\n"
+      // The faces in order; the curves' group is the result's last part, its edges in order.
+      "explode shape F\n"
+      "copy shape top\n"
+      "set parts [explode top]\n"
+      "set curves [explode [lindex $parts end] E]\n"
       "set probes {\n";
   for (const Probe& p : probes)
     tcl += fmt::format("{{{} {} {:.17g} {:.17g}}}\n", p.surface ? "s" : "c", p.item, p.u, p.v);
@@ -102,7 +107,8 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
       "foreach p $probes {\n"
       "  lassign $p kind k u v\n"
       "  if {![info exists made($kind$k)]} {\n"
-      "    if {$kind == \"s\"} { mksurface g$kind$k shape_$k } else { mkcurve g$kind$k shape_$k }\n"
+      "    if {$kind == \"s\"} { mksurface g$kind$k shape_$k } else {\n"
+      "      mkcurve g$kind$k [lindex $curves [expr {$k - 1}]] }\n"
       "    set made($kind$k) 1\n"
       "  }\n"
       "  if {$kind == \"s\"} { svalue g$kind$k $u $v x y z } else { cvalue g$kind$k $u x y z }\n"
@@ -140,7 +146,7 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
 }
 
 // Probes at INTPN points (every `step`th) on the faces of the patches (or the one surface), and
-// at the input points on the curves and stringers, edges numbered after the faces.
+// at the input points on the curves and stringers, edges of the curves' group.
 inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std::size_t step) {
   const auto& in = t.input;
   const std::size_t nc = in.nocur, ns = in.nostr, ic = in.intcu, is = in.intst;
@@ -156,13 +162,12 @@ inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std:
     p.expected = Vec3::load(t.surface.intpn.data() + 3 * k);
     probes.push_back(p);
   }
-  const std::size_t faces = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
   for (std::size_t i = 0; i < nc; ++i) {
     double t_k = 0;
     for (std::size_t j = 0; j < ns; ++j) {
       const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
       if (j > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * (i * ns + j - 1)));
-      probes.push_back({false, faces + i + 1, t_k, 0, p});
+      probes.push_back({false, i + 1, t_k, 0, p});
     }
   }
   for (std::size_t j = 0; j < ns; ++j) {
@@ -170,7 +175,7 @@ inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std:
     for (std::size_t i = 0; i < nc; ++i) {
       const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
       if (i > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * ((i - 1) * ns + j)));
-      probes.push_back({false, faces + nc + j + 1, t_k, 0, p});
+      probes.push_back({false, nc + j + 1, t_k, 0, p});
     }
   }
   return probes;

@@ -39,8 +39,10 @@ void end_record(std::string& out, char section, std::size_t sequence) {
   out.push_back('\n');
 }
 
-// A Hollerith string (nHtext) of printable characters.
+// A Hollerith string (nHtext) of printable characters; an empty one is the parameter left out
+// (IGES 5.3, 2.2.3: its default), never `0H`.
 std::string hollerith(std::string_view text) {
+  if (text.empty()) return {};
   std::string s;
   for (char c : text.substr(0, 60)) s.push_back(c >= 0x20 && c < 0x7F ? c : '?');
   return fmt::format("{}H{}", s.size(), s);
@@ -138,6 +140,7 @@ struct Entity {
   std::size_t lines = 0;       // P lines
   std::string_view label;
   int subscript = 0;
+  int form = 0;
 };
 
 // Puts into `p` the parameters of entities [0, count), the next ones of the file after `list`,
@@ -182,8 +185,8 @@ char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
   w = fortran::put_i_whole(w, 0, 8);  // line weight
   w = fortran::put_i_whole(w, 0, 8);  // colour
   w = fortran::put_i_whole(w, std::int64_t(e.lines), 8);
-  w = fortran::put_i_whole(w, 0, 8);  // form
-  w = std::fill_n(w, 16, ' ');        // reserved
+  w = fortran::put_i_whole(w, e.form, 8);
+  w = std::fill_n(w, 16, ' ');  // reserved
   w = std::fill_n(w, 8 - std::min<std::size_t>(8, e.label.size()), ' ');
   w = std::copy_n(e.label.data(), std::min<std::size_t>(8, e.label.size()), w);
   w = fortran::put_i_whole(w, e.subscript, 8);
@@ -300,7 +303,56 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
   p.slot_token(reals[v1], ';');
 }
 
+// Unit flag and name (IGES 5.3, G14 and G15); none has no flag of its own: 3, "see the name".
+struct IgesUnit {
+  int flag;
+  std::string_view name;
+};
+IgesUnit iges_unit(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::mm:
+      return {2, "2HMM"};
+    case LengthUnit::cm:
+      return {10, "2HCM"};
+    case LengthUnit::m:
+      return {6, "1HM"};
+    case LengthUnit::inch:
+      return {1, "2HIN"};
+    case LengthUnit::foot:
+      return {4, "2HFT"};
+    case LengthUnit::none:
+      break;
+  }
+  return {3, "4HNONE"};
+}
+
+std::string_view unit_words(LengthUnit unit) {
+  constexpr std::string_view words[] = {"millimetres", "centimetres", "metres",
+                                        "inches",      "feet",        "none declared"};
+  return words[static_cast<int>(unit)];
+}
+
+// `text` in records of 72 columns broken between words (a word longer than a record is cut).
+void start_records(std::string& records, std::string_view text, std::size_t& lines) {
+  while (!text.empty()) {
+    std::size_t take = std::min<std::size_t>(text.size(), 72);
+    if (take < text.size()) {
+      const std::size_t blank = text.substr(0, 73).rfind(' ');
+      if (blank != std::string_view::npos && blank > 0) take = blank;
+    }
+    records.append(text.substr(0, take));
+    records.append(72 - take, ' ');
+    end_record(records, 'S', ++lines);
+    text.remove_prefix(take);
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  }
+}
+
 }  // namespace
+
+double cad_resolution(double largest) {
+  return std::max(largest, 1.0) * 1e-12;
+}
 
 void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
                 TextOut& out, SurfaceForm form) {
@@ -316,16 +368,12 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   std::size_t s_lines = 0;
   const std::string start = fmt::format(
       "IGDS surface {}: {} (entity 128), exact, and its input curves and stringers (entity "
-      "126). Units mm.",
+      "126) in the group CURVES (entity 402). Units: {}.",
       header.name,
-      form == SurfaceForm::one ? "one bicubic B-spline surface" : "its bicubic patches");
+      form == SurfaceForm::one ? "one bicubic B-spline surface" : "its bicubic patches",
+      unit_words(header.unit));
   std::string records;
-  for (std::size_t at = 0; at < start.size(); at += 72) {
-    const std::string_view piece = std::string_view(start).substr(at, 72);
-    records.append(piece);
-    records.append(72 - piece.size(), ' ');
-    end_record(records, 'S', ++s_lines);
-  }
+  start_records(records, start, s_lines);
   out.put(records);
 
   // Global section (IGES 5.3, 2.2.4.3).
@@ -333,23 +381,24 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::string date = hollerith(iges_date(header.date));
   g.token("1H,");
   g.token("1H;");
-  g.token(hollerith(header.name));          // 3 product identification (sender)
-  g.token(hollerith(header.file_name));     // 4 file name
-  g.token(hollerith("IGDS"));               // 5 native system
-  g.token(hollerith("IGDS EXPORT IGES"));   // 6 preprocessor version
-  g.integer(32);                            // 7 bits of an integer
-  g.integer(38);                            // 8 single precision: largest power of ten
-  g.integer(6);                             // 9 ... and significant digits
-  g.integer(308);                           // 10 double precision: largest power of ten
-  g.integer(15);                            // 11 ... and significant digits
-  g.token(hollerith(header.name));          // 12 product identification (receiver)
-  g.token("1.");                            // 13 model space scale
-  g.integer(2);                             // 14 units: millimetres
-  g.token("2HMM");                          // 15 units name
+  g.token(hollerith(header.name));         // 3 product identification (sender)
+  g.token(hollerith(header.file_name));    // 4 file name
+  g.token(hollerith("IGDS"));              // 5 native system
+  g.token(hollerith("IGDS EXPORT IGES"));  // 6 preprocessor version
+  g.integer(32);                           // 7 bits of an integer
+  g.integer(38);                           // 8 single precision: largest power of ten
+  g.integer(6);                            // 9 ... and significant digits
+  g.integer(308);                          // 10 double precision: largest power of ten
+  g.integer(15);                           // 11 ... and significant digits
+  g.token(hollerith(header.name));         // 12 product identification (receiver)
+  g.token("1.");                           // 13 model space scale
+  const IgesUnit unit = iges_unit(header.unit);
+  g.integer(unit.flag);                     // 14 units flag
+  g.token(unit.name);                       // 15 units name
   g.integer(1);                             // 16 line weight gradations
   g.token("1.");                            // 17 width of the heaviest line
   g.token(date);                            // 18 date of this file
-  g.real(std::max(largest, 1.0) * 1e-9);    // 19 resolution
+  g.real(cad_resolution(largest));          // 19 resolution
   g.real(largest > 0 ? largest : 1.0);      // 20 largest coordinate
   g.token(hollerith(header.author));        // 21 author
   g.token(hollerith(header.organization));  // 22 organization
@@ -366,7 +415,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   for (std::size_t k = 0; k < nc + ns; ++k)
     if (splines[k]) curves.push_back(k);
   const std::size_t patch_count = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
-  const std::size_t entities = patch_count + curves.size();
+  const std::size_t entities = patch_count + curves.size() + 1;
 
   // Directory section: 2 records of 81 characters per entity, written once the parameters are.
   const std::uint64_t d_at = out.offset();
@@ -416,6 +465,15 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
                       .label = curve ? "CURVE" : "STRINGER",
                       .subscript = int(curve ? index + 1 : index - nc + 1)};
       });
+  // The group of the curves: 402 form 7, unordered, without back pointers.
+  const std::size_t first_curve = patch_count;
+  p.begin(2 * list.size() + 1);
+  p.integer(402);
+  p.integer(std::int64_t(curves.size()), curves.empty() ? ';' : ',');
+  for (std::size_t k = 0; k < curves.size(); ++k)
+    p.integer(std::int64_t(2 * (first_curve + k) + 1), k + 1 < curves.size() ? ',' : ';');
+  const std::size_t group_lines = p.finish();
+  list.push_back({402, p.first(), group_lines, "CURVES", 0, 7});
   const std::size_t p_lines = p.next_sequence() - 1;
 
   const std::uint64_t end = out.offset();

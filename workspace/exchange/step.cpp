@@ -257,25 +257,77 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   s.ref(definition);
   out += ");\n";
 
-  // Units (mm), uncertainty, the geometric context.
-  const std::size_t mm = s.begin();
-  out += "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n";
+  // The length unit (none: the context has none, nor a length uncertainty, which needs one),
+  // the angles' units, the uncertainty, the geometric context.
+  std::size_t length_unit = 0;
+  auto si_length = [&](std::string_view prefix) {
+    const std::size_t id = s.begin();
+    out += "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(";
+    out += prefix;
+    out += ",.METRE.));\n";
+    return id;
+  };
+  // A unit defined by its length in millimetres (ISO 10303-41 conversion_based_unit).
+  auto converted = [&](std::string_view name, std::string_view millimetres) {
+    const std::size_t mm = si_length(".MILLI.");
+    const std::size_t measure = s.begin();
+    out += "LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
+    out += millimetres;
+    out += "),";
+    s.ref(mm);
+    out += ");\n";
+    const std::size_t dimensions = s.begin();
+    out += "DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n";
+    const std::size_t id = s.begin();
+    out += "(CONVERSION_BASED_UNIT(";
+    s.string(name);
+    out += ',';
+    s.ref(measure);
+    out += ")LENGTH_UNIT()NAMED_UNIT(";
+    s.ref(dimensions);
+    out += "));\n";
+    return id;
+  };
+  switch (header.unit) {
+    case LengthUnit::mm:
+      length_unit = si_length(".MILLI.");
+      break;
+    case LengthUnit::cm:
+      length_unit = si_length(".CENTI.");
+      break;
+    case LengthUnit::m:
+      length_unit = si_length("$");
+      break;
+    case LengthUnit::inch:
+      length_unit = converted("INCH", "25.4");
+      break;
+    case LengthUnit::foot:
+      length_unit = converted("FOOT", "304.8");
+      break;
+    case LengthUnit::none:
+      break;
+  }
   const std::size_t radian = s.begin();
   out += "(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n";
   const std::size_t steradian = s.begin();
   out += "(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());\n";
-  const std::size_t uncertainty = s.begin();
-  out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
-  s.real(std::max(largest, 1.0) * 1e-9);
-  out += "),";
-  s.ref(mm);
-  out += ",'distance_accuracy_value','');\n";
+  std::size_t uncertainty = 0;
+  if (length_unit != 0) {
+    uncertainty = s.begin();
+    out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
+    s.real(cad_resolution(largest));
+    out += "),";
+    s.ref(length_unit);
+    out += ",'distance_accuracy_value','');\n";
+  }
   const std::size_t context = s.begin();
   out += "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((";
-  s.ref(uncertainty);
+  if (uncertainty != 0) s.ref(uncertainty);
   out += "))GLOBAL_UNIT_ASSIGNED_CONTEXT((";
-  s.ref(mm);
-  out += ',';
+  if (length_unit != 0) {
+    s.ref(length_unit);
+    out += ',';
+  }
   s.ref(radian);
   out += ',';
   s.ref(steradian);
@@ -323,12 +375,13 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   for (std::size_t k = 0; k < nc + ns; ++k)
     splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
   std::vector<std::size_t> curves, first_ids;  // the splines kept, their first instances
+  std::vector<std::size_t> curve_items;
   for (std::size_t k = 0; k < nc + ns; ++k) {
     if (!splines[k]) continue;
     curves.push_back(k);
     first_ids.push_back(s.next());
     s.skip(splines[k]->controls.size());
-    items.push_back(s.next());
+    curve_items.push_back(s.next());
     s.skip(1);
   }
   s.flush();
@@ -346,9 +399,17 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   }
 
   const std::size_t set = s.begin();
-  out += "GEOMETRIC_SET('',";
+  out += "GEOMETRIC_SET('surface',";
   references(s, items);
   out += ");\n";
+  // The input curves apart, named, so that a CAD system keeps them as a group of their own.
+  std::size_t curve_set = 0;
+  if (!curve_items.empty()) {
+    curve_set = s.begin();
+    out += "GEOMETRIC_CURVE_SET('input curves',";
+    references(s, curve_items);
+    out += ");\n";
+  }
   const std::size_t origin = s.begin();
   out += "CARTESIAN_POINT('',(0.,0.,0.));\n";
   const std::size_t z = s.begin();
@@ -369,6 +430,10 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   out += ",(";
   s.ref(set);
   out += ',';
+  if (curve_set != 0) {
+    s.ref(curve_set);
+    out += ',';
+  }
   s.ref(placement);
   out += "),";
   s.ref(context);
