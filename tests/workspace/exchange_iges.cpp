@@ -69,7 +69,7 @@ double real(const std::string& s) {
 
 struct Entity {
   int type = 0, form = 0, subscript = 0;
-  std::string label;
+  std::string label, status;
   std::vector<std::string> parameters;
 };
 
@@ -110,7 +110,8 @@ std::vector<Entity> read_iges(const std::string& text, std::vector<std::string>*
     e.type = std::stoi(field(k, 1));
     CHECK(std::stoi(field(k + 1, 1)) == e.type);
     const std::size_t first = std::stoul(field(k, 2)), count = std::stoul(field(k + 1, 4));
-    CHECK(field(k, 9) == "00000000");
+    e.status = field(k, 9);
+    CHECK((e.status == "00000000" || e.status == "00010000"));  // independent or dependent
     e.form = std::stoi(field(k + 1, 5));
     e.label = field(k + 1, 8);
     e.label.erase(0, e.label.find_first_not_of(' '));
@@ -166,24 +167,28 @@ TEST_CASE("IGES: records, sections, pointers and the global section") {
   CHECK(g[20] == "A. DESIGNER");
   CHECK(g[21] == "CNUCE PISA");
   CHECK(g[22] == "11");  // IGES 5.3
-  // 12 patches, 5 curves, 4 stringers, the group of the curves.
-  REQUIRE(entities.size() == 12 + 5 + 4 + 1);
+  // 12 patches; the shell: 31 edges, the vertex and edge lists, 12 loops, 12 faces, the shell;
+  // 5 curves, 4 stringers, the group of the curves.
+  constexpr std::size_t shell = 31 + 2 + 12 + 12 + 1, curves = 12 + shell;
+  REQUIRE(entities.size() == 12 + shell + 5 + 4 + 1);
   for (std::size_t k = 0; k < 12; ++k) {
     CHECK(entities[k].type == 128);
     CHECK(entities[k].label == "PATCH");
     CHECK(entities[k].subscript == int(k + 1));
+    CHECK(entities[k].status == "00010000");
   }
-  CHECK(entities[12].label == "CURVE");
-  CHECK(entities[16].subscript == 5);
-  CHECK(entities[17].label == "STRINGER");
-  const Entity& group = entities[21];
+  CHECK(entities[curves].label == "CURVE");
+  CHECK(entities[curves].status == "00000000");
+  CHECK(entities[curves + 4].subscript == 5);
+  CHECK(entities[curves + 5].label == "STRINGER");
+  const Entity& group = entities[curves + 9];
   CHECK(group.type == 402);
   CHECK(group.form == 7);
   CHECK(group.label == "CURVES");
   REQUIRE(group.parameters.size() == 2 + 9);
   CHECK(group.parameters[1] == "9");
   for (std::size_t k = 0; k < 9; ++k)
-    CHECK(std::stoul(group.parameters[2 + k]) == 2 * (12 + k) + 1);  // DE of entity 13 + k
+    CHECK(std::stoul(group.parameters[2 + k]) == 2 * (curves + k) + 1);
 }
 
 TEST_CASE(
@@ -262,7 +267,7 @@ TEST_CASE("IGES: each patch is its Bézier net, every number read back to the sa
   // Curve 2: the B-spline of surface_curves.h, knots and controls exactly.
   const auto c = input_curve_bspline(net, 1);
   REQUIRE(c);
-  const auto& p = entities[13].parameters;
+  const auto& p = entities[12 + 31 + 2 + 12 + 12 + 1 + 1].parameters;  // after the shell
   const std::size_t n = c->controls.size();
   REQUIRE(p.size() == 7 + (n + 4) + n + 3 * n + 2 + 3);
   CHECK(std::stoul(p[1]) == n - 1);
@@ -331,10 +336,15 @@ TEST_CASE("IGES: a curve that is a point is left out and the directory says so")
   t.surface = interpolate(t.input);
   const std::vector<Entity> entities =
       read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches));
-  REQUIRE(entities.size() == 12 + 3 + 5 + 1);
-  CHECK(entities[12].label == "CURVE");
-  CHECK(entities[12].subscript == 2);
-  CHECK(entities[20].parameters[1] == "8");
+  // The shell: 4 x 4 + 3 x 5 edges, the lists, 12 loops and faces, the shell; the pole's four
+  // edges left out of their loops.
+  constexpr std::size_t shell = 31 + 2 + 12 + 12 + 1;
+  REQUIRE(entities.size() == 12 + shell + 3 + 5 + 1);
+  CHECK(entities[12 + 31 + 2].parameters[1] == "3");      // patch 1's loop: three edges
+  CHECK(entities[12 + 31 + 2 + 4].parameters[1] == "4");  // patch 5's, the next row's: four
+  CHECK(entities[12 + shell].label == "CURVE");
+  CHECK(entities[12 + shell].subscript == 2);
+  CHECK(entities[12 + shell + 8].parameters[1] == "8");
 }
 
 TEST_CASE("IGES and STEP refuse a surface that is not finite or of the wrong shape") {
@@ -379,7 +389,18 @@ TEST_CASE("STEP: every reference defined once, numbers exact, one part") {
       points += type == "CARTESIAN_POINT(";
     }
     CHECK(surfaces == (form == SurfaceForm::one ? 1 : 12));
-    CHECK(curves == 9);
+    // FACES: a curve for each of the 31 edges besides the 9 input curves, and the shell.
+    std::size_t faces = 0, edge_curves = 0, shells = 0;
+    for (const auto& [id, type] : instances) {
+      faces += type == "ADVANCED_FACE(";
+      edge_curves += type == "EDGE_CURVE(";
+      shells += type == "OPEN_SHELL(";
+    }
+    const bool one = form == SurfaceForm::one;
+    CHECK(curves == (one ? 9 : 9 + 31));
+    CHECK(faces == (one ? 0 : 12));
+    CHECK(edge_curves == (one ? 0 : 31));
+    CHECK(shells == (one ? 0 : 1));
     CHECK(std::count_if(instances.begin(), instances.end(),
                         [](const auto& i) { return i.second == "GEOMETRIC_CURVE_SET("; }) == 1);
     CHECK(text.find("GEOMETRIC_CURVE_SET('input curves',(") != std::string::npos);

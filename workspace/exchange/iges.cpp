@@ -141,6 +141,7 @@ struct Entity {
   std::string_view label;
   int subscript = 0;
   int form = 0;
+  bool dependent = false;  // physically dependent on another entity (a part of the shell)
 };
 
 // Puts into `p` the parameters of entities [0, count), the next ones of the file after `list`,
@@ -179,7 +180,8 @@ char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
   w = fortran::put_i_whole(w, std::int64_t(e.parameters), 8);
   // Structure, font, level, view, matrix, label.
   for (int k = 0; k < 6; ++k) w = fortran::put_i_whole(w, 0, 8);
-  w = std::copy_n("00000000", 8, w);  // status: visible, independent, geometry, hierarchy global
+  // Status: visible, independent (or physically dependent), geometry, hierarchy global.
+  w = std::copy_n(e.dependent ? "00010000" : "00000000", 8, w);
   end_record(sequence);
   w = fortran::put_i_whole(w, e.type, 8);
   w = fortran::put_i_whole(w, 0, 8);  // line weight
@@ -348,6 +350,130 @@ void start_records(std::string& records, std::string_view text, std::size_t& lin
   }
 }
 
+// The shell of the patches (EXPORT's FACES), after the patches (entities 0 .. F-1 of `list`):
+// each edge's curve (entity 126, the border's Bézier controls), the vertex list (502), the edge
+// list (504), a loop (508) and a face (510) per patch, the open shell (514 form 2). Entities of
+// the shell are physically dependent; the shell is the one a reader starts from.
+void put_shell(Records& p, std::vector<Entity>& list, const BezierNet& net, const PatchShell& shell,
+               const IntegerReals& reals, std::size_t block_bytes) {
+  const std::size_t faces = list.size(), ns = (net.cols - 1) / 3 + 1, nc = (net.rows - 1) / 3 + 1;
+  const std::size_t edges = shell.along_count() + shell.across_count();
+  auto de = [](std::size_t entity) { return std::int64_t(2 * entity + 1); };
+  const std::size_t first_edge = faces, vertices = first_edge + edges, edge_list = vertices + 1,
+                    first_loop = edge_list + 1, first_face = first_loop + faces;
+  // Edge k: along curve i from node j, or along stringer j from node i.
+  struct Side {
+    bool along;
+    std::size_t i, j;
+  };
+  auto side_of = [&](std::size_t k) {
+    return k < shell.along_count()
+               ? Side{true, k / (ns - 1), k % (ns - 1)}
+               : Side{false, (k - shell.along_count()) / ns, (k - shell.along_count()) % ns};
+  };
+  put_entities(
+      p, list, edges, block_bytes / (20 * record), [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        const Side e = side_of(k);
+        const std::size_t from = e.along ? e.j : e.i;
+        q.integer(126);
+        q.integer(3);  // K: four controls
+        q.integer(3);  // M: cubic
+        q.integer(0);  // PROP1..4: not declared planar, open, polynomial, not periodic
+        q.integer(0);
+        q.integer(1);
+        q.integer(0);
+        for (int m = 0; m < 8; ++m) q.slot_token(reals[m < 4 ? from : from + 1]);
+        for (int m = 0; m < 4; ++m) q.token("1.", 2, ',');
+        for (int c = 0; c < 4; ++c)
+          for (int x = 0; x < 3; ++x)
+            q.real(net.xyz[3 * shell.control_index(e.along, e.i, e.j, c) + std::size_t(x)]);
+        q.slot_token(reals[from]);
+        q.slot_token(reals[from + 1]);
+        q.token("0.", 2, ',');
+        q.token("0.", 2, ',');
+        q.token("0.", 2, ';');
+        return Entity{.type = 126, .label = "EDGE", .subscript = int(k + 1), .dependent = true};
+      });
+  // The vertices: every node of the grid (a pole's nodes stand for one vertex, the others stay
+  // unused in the list).
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(502);
+        q.integer(std::int64_t(nc * ns));
+        for (std::size_t n = 0; n < nc * ns; ++n)
+          for (int x = 0; x < 3; ++x)
+            q.real(net.xyz[3 * ((3 * (n / ns)) * net.cols + 3 * (n % ns)) + std::size_t(x)],
+                   n + 1 == nc * ns && x == 2 ? ';' : ',');
+        return Entity{.type = 502, .label = "VERTICES", .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(504);
+        q.integer(std::int64_t(edges));
+        for (std::size_t k = 0; k < edges; ++k) {
+          const Side e = side_of(k);
+          q.integer(de(first_edge + k));
+          q.integer(de(vertices));
+          q.integer(std::int64_t(shell.vertex(e.i, e.j)) + 1);
+          q.integer(de(vertices));
+          q.integer(
+              std::int64_t(e.along ? shell.vertex(e.i, e.j + 1) : shell.vertex(e.i + 1, e.j)) + 1,
+              k + 1 == edges ? ';' : ',');
+        }
+        return Entity{.type = 504, .label = "EDGES", .form = 1, .dependent = true};
+      });
+  // Patch (i, j)'s loop: along its first curve and up its last stringer as the edges run, back
+  // along its last curve and down its first stringer against them: counterclockwise in (u, v),
+  // and each inner edge used once each way.
+  put_entities(
+      p, list, faces, block_bytes / (4 * record), [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        const std::size_t i = k / (ns - 1), j = k % (ns - 1);
+        const Side sides[4] = {{true, i, j}, {false, i, j + 1}, {true, i + 1, j}, {false, i, j}};
+        std::size_t kept = 0;
+        for (const Side& e : sides) kept += !shell.degenerate(e.along, e.i, e.j);
+        q.integer(508);
+        q.integer(std::int64_t(kept));
+        std::size_t written = 0;
+        for (int n = 0; n < 4; ++n) {
+          const Side& e = sides[n];
+          if (shell.degenerate(e.along, e.i, e.j)) continue;
+          q.integer(0);  // an edge
+          q.integer(de(edge_list));
+          q.integer(std::int64_t(shell.edge(e.along, e.i, e.j)) + 1);
+          q.integer(n < 2 ? 1 : 0);                     // as the edge runs, or against it
+          q.integer(0, ++written == kept ? ';' : ',');  // no curve in parameter space
+        }
+        return Entity{
+            .type = 508, .label = "LOOP", .subscript = int(k + 1), .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, faces, block_bytes / record, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        q.integer(510);
+        q.integer(de(k));  // the patch
+        q.integer(1);      // one loop, the outer one
+        q.integer(1);
+        q.integer(de(first_loop + k), ';');
+        return Entity{
+            .type = 510, .label = "FACE", .subscript = int(k + 1), .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(514);
+        q.integer(std::int64_t(faces));
+        for (std::size_t k = 0; k < faces; ++k) {
+          q.integer(de(first_face + k));
+          q.integer(1, k + 1 == faces ? ';' : ',');  // the face's normal is the surface's
+        }
+        return Entity{.type = 514, .label = "SHELL", .form = 2};
+      });
+}
+
 }  // namespace
 
 double cad_resolution(double largest) {
@@ -370,7 +496,8 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
       "IGDS surface {}: {} (entity 128), exact, and its input curves and stringers (entity "
       "126) in the group CURVES (entity 402). Units: {}.",
       header.name,
-      form == SurfaceForm::one ? "one bicubic B-spline surface" : "its bicubic patches",
+      form == SurfaceForm::one ? "one bicubic B-spline surface"
+                               : "its bicubic patches as the faces of one shell (entity 514)",
       unit_words(header.unit));
   std::string records;
   start_records(records, start, s_lines);
@@ -415,7 +542,14 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   for (std::size_t k = 0; k < nc + ns; ++k)
     if (splines[k]) curves.push_back(k);
   const std::size_t patch_count = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
-  const std::size_t entities = patch_count + curves.size() + 1;
+  // FACES: the patches, the edges' curves, the vertex list, the edge list, a loop and a face per
+  // patch, and the shell.
+  const std::optional<PatchShell> shell =
+      form == SurfaceForm::one ? std::nullopt
+                               : std::optional<PatchShell>(std::in_place, net, nc, ns);
+  const std::size_t edge_count = shell ? shell->along_count() + shell->across_count() : 0;
+  const std::size_t shell_entities = shell ? edge_count + 2 + 2 * patch_count + 1 : 0;
+  const std::size_t entities = patch_count + shell_entities + curves.size() + 1;
 
   // Directory section: 2 records of 81 characters per entity, written once the parameters are.
   const std::uint64_t d_at = out.offset();
@@ -445,8 +579,9 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
         [&](Records& q, std::size_t k) {
           const std::size_t i = k / (ns - 1), j = k % (ns - 1);
           write_surface(q, texts, reals, 3 * i, 4, 3 * j, 4);
-          return Entity{.type = 128, .label = "PATCH", .subscript = int(k + 1)};
+          return Entity{.type = 128, .label = "PATCH", .subscript = int(k + 1), .dependent = true};
         });
+    put_shell(p, list, net, *shell, reals, block_bytes);
   }
   auto curve_most = [&](std::size_t k) {
     const CubicBspline& c = *splines[curves[k]];
@@ -466,7 +601,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
                       .subscript = int(curve ? index + 1 : index - nc + 1)};
       });
   // The group of the curves: 402 form 7, unordered, without back pointers.
-  const std::size_t first_curve = patch_count;
+  const std::size_t first_curve = patch_count + shell_entities;
   p.begin(2 * list.size() + 1);
   p.integer(402);
   p.integer(std::int64_t(curves.size()), curves.empty() ? ';' : ',');
