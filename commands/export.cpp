@@ -88,9 +88,8 @@ CadChoice cad_choice(std::span<const std::string> words) {
 }
 
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file "
-                         "of that name and type is replaced); after an IGES or STEP file's name, "
-                         "FACES and a unit (M, MM, CM, INCH, FOOT, NONE) may follow."};
+                         "1 to 8 letters, digits or $ # @ + - _; a file of that name is "
+                         "replaced. After an IGES or STEP name: FACES, M MM CM INCH FOOT NONE."};
 
 // The date the exchange files carry: now, local time; SOURCE_DATE_EPOCH (seconds since 1970,
 // UTC), when set, as reproducible builds date their files (the golden tests use it).

@@ -36,6 +36,7 @@
 
 namespace igds {
 extern const Command export_command;
+extern const Command import_command;
 extern const Command display_command;
 extern const Command store_command;
 }  // namespace igds
@@ -213,6 +214,70 @@ TEST_CASE("EXPORT DUCT, IGES, STEP: SURFACE NOT FOUND, INCORRECT PARAMETER, noth
 
   CHECK(ctx.prompts.empty());
   CHECK(fs::is_empty(dir.path()));
+}
+
+namespace {
+
+// The largest difference of two arrays of numbers relative to the largest number of `a`.
+double relative_gap(const Array& a, const Array& b) {
+  REQUIRE(a.ravel.size() == b.ravel.size());
+  double gap = 0, largest = 0;
+  for (std::size_t k = 0; k < a.ravel.size(); ++k) {
+    gap = std::max(gap, std::abs(a.ravel[k] - b.ravel[k]));
+    largest = std::max(largest, std::abs(a.ravel[k]));
+  }
+  return gap / largest;
+}
+
+}  // namespace
+
+TEST_CASE("IMPORT IGES and STEP: a surface EXPORT wrote comes back, its points and tangents") {
+  const TestSurface t = golden_surface();
+  TempDir dir;
+  FakeContext ctx(dir.path(), workspace_of(t));
+  ctx.run(export_command, "IGES", {"HULL"});
+  ctx.run(export_command, "STEP", {"HULL"});
+  for (const std::string kind : {"IGES", "STEP"}) {
+    CAPTURE(kind);
+    ctx.ws = Workspace{};
+    ctx.said.clear();
+    ctx.prompts.clear();
+    // The grid asked with the surface's own as the default (an empty line), then the density.
+    ctx.type({"", "2 2"});
+    ctx.run(import_command, kind, {"HULL"});
+    CHECK(ctx.prompts == std::vector<std::string>{"NUMBER OF CURVES AND STRINGERS?",
+                                                  "INTERPOLATED CURVES AND STRINGERS?"});
+    CHECK(ctx.said == std::vector<std::string>{"NOCUR 5 NOSTR 4 INTCU 2 INTST 2"});
+    REQUIRE(ctx.ws.nocur == 5);
+    REQUIRE(ctx.ws.nostr == 4);
+    CHECK(relative_gap(t.inppn, ctx.ws.inppn) < 1e-14);
+    // The tangents (column 4, the point number, is not read: docs/kernels.md).
+    Array given = t.inptg, imported = ctx.ws.inptg;
+    for (std::size_t row = 0; row < given.ravel.size() / 4; ++row)
+      given.ravel[4 * row + 3] = imported.ravel[4 * row + 3] = 0;
+    CHECK(relative_gap(given, imported) < 1e-13);
+    CHECK(relative_gap(t.surface.intpn, ctx.ws.intpn) < 1e-13);
+  }
+  // A finer sampling of the same surface, on the line: the input points among them.
+  ctx.type({"0 0"});
+  ctx.run(import_command, "S", {"HULL", "9", "7"});
+  REQUIRE(ctx.ws.nocur == 9);
+  for (int i = 0; i < 9; i += 2)
+    for (int j = 0; j < 7; j += 2)
+      for (int c = 0; c < 3; ++c)
+        CHECK(std::abs(ctx.ws.inppn.ravel[3 * std::size_t(i * 7 + j) + c] -
+                       t.inppn.ravel[3 * std::size_t((i / 2) * 4 + j / 2) + c]) < 1e-12);
+  // Refusals: the reason, the surface kept.
+  const Workspace before = ctx.ws;
+  CHECK(report_of([&] { ctx.run(import_command, "IGES", {"NONE"}); }) == reports::file_not_found);
+  write_file(dir.path() / "BAD.STP", "ISO-10303-21;\nDATA;\n#1=CARTESIAN_POINT('',(1.,2.,3.));\n");
+  CHECK(report_of([&] { ctx.run(import_command, "STEP", {"BAD"}); }) ==
+        "FILE REFUSED: BAD.STP (NO B-SPLINE SURFACE (B_SPLINE_SURFACE_WITH_KNOTS) IN THE FILE); "
+        "CURRENT SURFACE KEPT");
+  CHECK(report_of([&] {
+          ctx.run(import_command, "IGES", {"HULL", "1", "4"});
+        }) == "INCORRECT ENTRY: A SURFACE NEEDS AT LEAST 2 CURVES AND 2 STRINGERS");
+  CHECK(ctx.ws == before);
 }
 
 TEST_CASE("DISPLAY PICTURE: a hand-written picture with every curve, pen code, mark and dash") {
@@ -463,6 +528,103 @@ TEST_CASE("igds: EXPORT IGES and STEP read by OpenCASCADE, every INTPN point fou
       MESSAGE(fmt::format("igds EXPORT {} {}: {} probes, largest relative error {:.2e}",
                           step ? "STEP" : "IGES", name, probes.size(), worst));
       CHECK(worst <= 1e-9);
+    }
+  }
+}
+
+TEST_CASE("igds: IMPORT makes a new surface, and UNDO gives the old one back") {
+  TempDir disk;
+  const TestSurface t = golden_surface();
+  const RunResult run = run_commands(disk, build_commands(t) +
+                                               "SAVE HULL\nEXPORT STEP HULL\n"
+                                               "IMPORT STEP HULL 3 3\n0 0\nSAVE COARSE\n"
+                                               "UNDO\nSAVE AGAIN\n");
+  INFO(run.out);
+  CHECK(run.out.find("NOCUR 3 NOSTR 3 INTCU 0 INTST 0\n") != std::string::npos);
+  CHECK(run.out.find("UNDONE: IMPORT STEP\n") != std::string::npos);
+  Disk d(disk.path());
+  Workspace hull, coarse, again;
+  restore_surface(d, "HULL", hull);
+  restore_surface(d, "COARSE", coarse);
+  restore_surface(d, "AGAIN", again);
+  CHECK(coarse.nocur == 3);
+  CHECK(again.inppn == hull.inppn);
+  CHECK(again.intpn == hull.intpn);
+}
+
+TEST_CASE("igds: IMPORT of surfaces OpenCASCADE wrote, and igds's own sent through it") {
+  TempDir disk;
+  const auto draw = find_draw(disk.path());
+  IGDS_SKIP_UNLESS(draw.has_value(),
+                   "OpenCASCADE's DRAW (occt-draw or DRAWEXE) is not installed: scripts/setup "
+                   "--test installs it");
+  const TestSurface t = golden_surface();
+  const RunResult out =
+      run_commands(disk, build_commands(t) + "SAVE HULL\nEXPORT IGES HULL\nEXPORT STEP HULL\n");
+  REQUIRE(out.status == 0);
+  // DRAW reads igds's files and writes them again, and writes a quarter of a cylinder of radius
+  // 10 and height 20 converted to a rational B-spline surface.
+  const std::string tcl = fmt::format(
+      "pload MODELING DATAEXCHANGEKERNEL\n"
+      "igesread {{{0}/HULL.IGS}} a *\nexplode a F\nbrepiges a_1 {{{0}/BACK.IGS}}\n"
+      "stepread {{{0}/HULL.STP}} b *\nrenamevar b_1 bb\nexplode bb F\n"
+      "stepwrite a bb_1 {{{0}/BACK.STP}}\n"
+      "cylinder c 0 0 0 10\ntrim tc c 0 1.5 0 20\nconvert bc tc\nmkface f bc\n"
+      "brepiges f {{{0}/CYL.IGS}}\nstepwrite a f {{{0}/CYL.STP}}\nexit\n",
+      disk.path().string());
+  write_file(disk.path() / "back.tcl", tcl);
+  RunOptions options;
+  options.env = draw->env;
+  options.cwd = disk.path();
+  options.timeout_seconds = 600;
+  const RunResult r =
+      igds::test::run({draw->program, "-b", "-f", (disk.path() / "back.tcl").string()}, options);
+  INFO(r.out);
+  for (const char* file : {"BACK.IGS", "BACK.STP", "CYL.IGS", "CYL.STP"})
+    REQUIRE(fs::exists(disk.path() / file));
+  const RunResult in = run_commands(disk,
+                                    "IMPORT IGES BACK\n\n2 2\nSAVE BACKI\n"
+                                    "IMPORT STEP BACK\n\n2 2\nSAVE BACKS\n"
+                                    "IMPORT IGES CYL 5 6\n1 1\nSAVE CYLI\n"
+                                    "IMPORT STEP CYL 5 6\n1 1\nSAVE CYLS\n");
+  INFO(in.out);
+  CHECK(in.out.find("INCORRECT") == std::string::npos);
+  CHECK(in.out.find("REFUSED") == std::string::npos);
+  Disk d(disk.path());
+  Workspace hull;
+  restore_surface(d, "HULL", hull);
+  // igds -> IGES or STEP -> OpenCASCADE -> IGES or STEP -> igds: every point, tangent and grid
+  // point kept.
+  for (const char* name : {"BACKI", "BACKS"}) {
+    CAPTURE(name);
+    Workspace back;
+    restore_surface(d, name, back);
+    REQUIRE(back.nocur == hull.nocur);
+    REQUIRE(back.nostr == hull.nostr);
+    CHECK(relative_gap(hull.inppn, back.inppn) < 1e-9);
+    CHECK(relative_gap(hull.inptg, back.inptg) < 1e-9);
+    CHECK(relative_gap(hull.intpn, back.intpn) < 1e-9);
+  }
+  // The cylinder: every input point on it, the tangents along the curves (around) tangent to
+  // the circle, those along the stringers vertical.
+  for (const char* name : {"CYLI", "CYLS"}) {
+    CAPTURE(name);
+    Workspace cyl;
+    restore_surface(d, name, cyl);
+    REQUIRE(cyl.nocur * cyl.nostr == 30);
+    for (std::size_t k = 0; k < 30; ++k) {
+      const Vec3 p = Vec3::load(cyl.inppn.data() + 3 * k);
+      CHECK(std::abs(std::hypot(p.x, p.y) - 10) < 1e-9 * 20);
+    }
+    for (std::size_t row = 0; row < cyl.inptg.size() / 4; ++row) {
+      const Vec3 tg = Vec3::load(cyl.inptg.data() + 4 * row);
+      const auto k = static_cast<std::size_t>(cyl.inptg.ravel[4 * row + 3]) - 1;
+      const Vec3 p = Vec3::load(cyl.inppn.data() + 3 * k);
+      CHECK(norm(tg) > 0.5);
+      if (row < std::size_t(2 * cyl.nocur))
+        CHECK(std::abs(dot(tg, {p.x, p.y, 0})) < 1e-9 * 10);
+      else
+        CHECK(std::hypot(tg.x, tg.y) < 1e-9);
     }
   }
 }
