@@ -201,7 +201,7 @@ CadSurface read_iges_surface(std::string_view text) {
   if (params.size() < needed)
     fail(fmt::format("ENTITY 128 HAS {} PARAMETERS, NOT {}", params.size(), needed));
   for (int k = 0; k < 5; ++k) whole("PROP");
-  const bool polynomial = params[7] == "1" || parse_whole(params[7]) == 1;
+  const bool polynomial = parse_whole(params[7]) == 1;  // PROP3
   for (std::size_t k = 0; k < s.count_u + std::size_t(m1) + 1; ++k)
     s.knots_u.push_back(real("A KNOT"));
   for (std::size_t k = 0; k < s.count_v + std::size_t(m2) + 1; ++k)
@@ -351,7 +351,6 @@ struct StepRecord {
 
 std::vector<StepRecord> parse_instance(std::string_view body) {
   std::vector<StepRecord> records;
-  StepParser parser(body);
   auto record = [&](std::string_view rest, std::size_t& used) {
     std::size_t at = 0;
     while (at < rest.size() && std::isspace(static_cast<unsigned char>(rest[at]))) ++at;
@@ -385,7 +384,6 @@ std::vector<StepRecord> parse_instance(std::string_view body) {
     std::size_t used = 0;
     record(body.substr(at), used);
   }
-  (void)parser;
   return records;
 }
 
