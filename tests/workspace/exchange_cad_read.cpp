@@ -48,7 +48,9 @@ double worst_error(const TestSurface& t, const CadSurface& s) {
 }  // namespace
 
 TEST_CASE("IMPORT's readers: igds's IGES and STEP surfaces read back exactly") {
-  std::vector<TestSurface> surfaces{golden_surface(), test_surface(30, 20, 1, 2)};
+  // Nets of 10, 88 and 178 rows.
+  std::vector<TestSurface> surfaces{golden_surface(), test_surface(30, 20, 1, 2),
+                                    test_surface(60, 4, 0, 1)};
   TestSurface pole = test_surface(4, 5, 1, 1);
   for (int j = 0; j < 5; ++j) std::fill_n(pole.inppn.data() + 3 * j, 3, 1.0);
   pole.surface = interpolate(pole.input);
