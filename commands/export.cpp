@@ -1,9 +1,10 @@
 // EXPORT SVG | TEK | HPGL | DUCT | IGES | STEP [name]: the current image, or the current surface
-// exactly, in a file for other programs.
+// exactly, in a file for other programs; IGES and STEP take FACES and a unit after the name.
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -16,6 +17,7 @@
 #include "devices/hpgl_plot.h"
 #include "devices/svg.h"
 #include "devices/tek_stream.h"
+#include "workspace/disk/disk.h"
 #include "workspace/error.h"
 #include "workspace/exchange/duct.h"
 #include "workspace/exchange/iges.h"
@@ -39,13 +41,55 @@ constexpr Choice options[] = {
     {"TEK", tek, "[name]", "NAME.TEK, the bytes a Tektronix 4013 would receive"},
     {"HPGL", hpgl, "[name]", "NAME.HPGL, the plot PLOT would send"},
     {"DUCT", duct, "[name]", "NAME.DUCTPIC, a DUCT 4.4 picture of the surface or the image"},
-    {"IGES", iges, "[name]", "NAME.IGS, the surface as exact B-spline patches (IGES 5.3)"},
-    {"STEP", step, "[name]", "NAME.STP, the same in STEP (ISO 10303-21, AP214)"},
+    {"IGES", iges, "[name [FACES] [M|MM|CM|INCH|FOOT|NONE]]",
+     "NAME.IGS, the surface as one exact B-spline surface (IGES 5.3)"},
+    {"STEP", step, "[name [FACES] [M|MM|CM|INCH|FOOT|NONE]]",
+     "NAME.STP, the same in STEP (ISO 10303-21, AP214)"},
 };
 
+// The words after the name of an IGES or STEP file. M before MM, so that M is metres; FACES
+// before FOOT, so that F is FACES.
+enum CadWord { faces = 100 };
+constexpr Choice cad_words[] = {
+    {"FACES", faces},
+    {"M", int(LengthUnit::m)},
+    {"MM", int(LengthUnit::mm)},
+    {"CM", int(LengthUnit::cm)},
+    {"INCH", int(LengthUnit::inch)},
+    {"FOOT", int(LengthUnit::foot)},
+    {"NONE", int(LengthUnit::none)},
+};
+
+struct CadChoice {
+  SurfaceForm form = SurfaceForm::one;
+  LengthUnit unit = LengthUnit::mm;
+};
+
+// FACES and a unit, each at most once, from the words after the file's name.
+CadChoice cad_choice(std::span<const std::string> words) {
+  CadChoice choice;
+  bool form_said = false, unit_said = false;
+  for (const std::string& word : words) {
+    const Choice* c = choose(cad_words, word);
+    if (!c)
+      throw ParameterError(fmt::format(
+          "{}: FACES OR A UNIT (M, MM, CM, INCH, FOOT, NONE) MAY FOLLOW THE NAME", word));
+    if (c->code == faces) {
+      if (form_said) throw ParameterError("FACES TWICE");
+      form_said = true;
+      choice.form = SurfaceForm::patches;
+    } else {
+      if (unit_said) throw ParameterError("TWO UNITS");
+      unit_said = true;
+      choice.unit = static_cast<LengthUnit>(c->code);
+    }
+  }
+  return choice;
+}
+
 const Prompt file_prompt{"FILE NAME?",
-                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _ (a file "
-                         "of that name and type is replaced)."};
+                         "1 to 8 letters, digits or $ # @ + - _; a file of that name is "
+                         "replaced. After an IGES or STEP name: FACES, M MM CM INCH FOOT NONE."};
 
 // The date the exchange files carry: now, local time; SOURCE_DATE_EPOCH (seconds since 1970,
 // UTC), when set, as reproducible builds date their files (the golden tests use it).
@@ -154,14 +198,16 @@ std::size_t overflowing_patch(const Workspace& ws) {
 }
 
 // EXPORT IGES or STEP into `out`.
-void cad_file(const Workspace& ws, const std::string& name, Option option, TextOut& out) {
+void cad_file(const Workspace& ws, const std::string& name, Option option, CadChoice choice,
+              TextOut& out) {
   if (!ws.has_surface()) throw Report(reports::surface_not_found);
-  const CadHeader header{name, fmt::format("{}.{}", name, types[option]), export_date(), "", ""};
+  const CadHeader header{
+      name, fmt::format("{}.{}", name, types[option]), export_date(), "", "", choice.unit};
   try {
     if (option == iges)
-      write_iges(input_of(ws), ws.patches, header, out);
+      write_iges(input_of(ws), ws.patches, header, out, choice.form);
     else
-      write_step(input_of(ws), ws.patches, header, out);
+      write_step(input_of(ws), ws.patches, header, out, choice.form);
   } catch (const DataError& e) {
     // The writers say a patch's Bézier controls are not finite without saying which.
     if (e.problem != DataError::Problem::patch_not_finite) throw;
@@ -185,7 +231,20 @@ void run_export(Context& ctx, const Choice* option) {
   } else if (!ws.image) {
     throw Report(reports::image_not_found);
   }
-  const std::string name = ask_file_name(ctx, file_prompt);
+  std::string name;
+  CadChoice choice;
+  if (code == iges || code == step) {
+    // The name, then FACES and a unit, on the line or typed at the question.
+    ask_for(ctx, file_prompt, [&](const std::vector<std::string>& words) {
+      const auto cms = cms_name(words[0]);
+      if (!cms) throw ParameterError(name_rule);
+      choice = cad_choice(std::span(words).subspan(1));
+      name = *cms;
+      return true;
+    });
+  } else {
+    name = ask_file_name(ctx, file_prompt);
+  }
   const bool existed = ctx.disk().exists(name, type);
   std::uint64_t size = 0;
   std::string_view holds;
@@ -220,7 +279,7 @@ void run_export(Context& ctx, const Choice* option) {
       case iges:
       case step:
         size = write_user_file(ctx.disk(), name, type,
-                               [&](TextOut& out) { cad_file(ws, name, code, out); });
+                               [&](TextOut& out) { cad_file(ws, name, code, choice, out); });
         break;
     }
   } catch (const DataError& e) {
@@ -260,9 +319,15 @@ extern const Command export_command{
         "2, when the current image is of the current surface (or there is none); else the current "
         "image as projected (a picture read by DISPLAY PICTURE, an image of another surface or "
         "from a file)\n"
-        "  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: each patch an exact bicubic "
-        "B-spline surface, the input curves and stringers B-spline curves (IGES 5.3)\n"
+        "  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: one exact bicubic B-spline "
+        "surface, one face, and the input curves and stringers as B-spline curves in a group "
+        "CURVES (IGES 5.3)\n"
         "  EXPORT STEP [name]  NAME.STP, the same geometry in STEP (AP214)\n"
+        "\n"
+        "After the name of an IGES or STEP file, FACES writes each patch as a surface of its own "
+        "(a face each, borders equal bit for bit), and M, MM, CM, INCH, FOOT or NONE is the unit "
+        "the file declares (MM when none is given; NONE declares no unit, and readers assume "
+        "one). IGDS's numbers are written as they are, whatever the unit.\n"
         "\n"
         "A file of the same name and type is replaced, and EXPORT says so (HULL.SVG REPLACED). "
         "With no current image EXPORT SVG, TEK or HPGL says IMAGE NOT FOUND; with no surface "
@@ -275,7 +340,8 @@ extern const Command export_command{
         "  EXPORT SVG HULL\n"
         "  EX T HULL\n"
         "  EXPORT DUCT HULL\n"
-        "  EX I HULL",
+        "  EX I HULL\n"
+        "  EXPORT STEP HULL FACES M",
     .questions = questions,
     .run = run_export,
 };

@@ -87,17 +87,17 @@ TEST_CASE("the command table is the manual's, then the project's additions") {
   std::vector<std::string_view> got;
   for (const Command* c : command_table()) got.push_back(c->name);
   const std::vector<std::string_view> expected{
-      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT",  "STORE", "SAVE", "WRITE", "END",
-      "HELP",  "ERASE",  "EXPORT",  "FIT",     "PUNCH", "LIST",  "UNDO", "REDO",  "ZOOM"};
+      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE", "END",   "HELP",
+      "ERASE", "EXPORT", "FIT",     "PUNCH",   "LIST", "UNDO",  "REDO", "ZOOM",  "IMPORT"};
   CHECK(got == expected);
 }
 
 TEST_CASE("every one- and two-letter abbreviation of a command") {
   CHECK(resolved(names()) ==
-        table("B=BUILD C=CHANGE D=DISPLAY E=END F=FIT H=HELP L=LIST P=PLOT R=RESTORE S=STORE "
-              "U=UNDO W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE EX=EXPORT "
-              "FI=FIT HE=HELP LI=LIST PL=PLOT PU=PUNCH RE=RESTORE SA=SAVE ST=STORE UN=UNDO "
-              "WR=WRITE ZO=ZOOM"));
+        table("B=BUILD C=CHANGE D=DISPLAY E=END F=FIT H=HELP I=IMPORT L=LIST P=PLOT R=RESTORE "
+              "S=STORE U=UNDO W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE "
+              "EX=EXPORT FI=FIT HE=HELP IM=IMPORT LI=LIST PL=PLOT PU=PUNCH RE=RESTORE SA=SAVE "
+              "ST=STORE UN=UNDO WR=WRITE ZO=ZOOM"));
   // REDO comes after RESTORE: R and RE stay RESTORE, RED is REDO.
   CHECK(find_command("RED")->name == "REDO");
   CHECK(find_command("RES")->name == "RESTORE");

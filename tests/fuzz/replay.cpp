@@ -21,6 +21,7 @@
 
 namespace igds::fuzz {
 int apl(const std::uint8_t*, std::size_t);
+int cad(const std::uint8_t*, std::size_t);
 int duct(const std::uint8_t*, std::size_t);
 int files(const std::uint8_t*, std::size_t);
 int gin(const std::uint8_t*, std::size_t);
@@ -56,6 +57,9 @@ std::size_t replay(const std::string& target, int (*run)(const std::uint8_t*, st
 
 TEST_CASE("fuzz corpus: apl") {
   CHECK(replay("apl", apl) > 0);
+}
+TEST_CASE("fuzz corpus: cad") {
+  CHECK(replay("cad", cad) > 0);
 }
 TEST_CASE("fuzz corpus: duct") {
   CHECK(replay("duct", duct) > 0);

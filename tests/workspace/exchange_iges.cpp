@@ -69,7 +69,7 @@ double real(const std::string& s) {
 
 struct Entity {
   int type = 0, form = 0, subscript = 0;
-  std::string label;
+  std::string label, status;
   std::vector<std::string> parameters;
 };
 
@@ -110,7 +110,8 @@ std::vector<Entity> read_iges(const std::string& text, std::vector<std::string>*
     e.type = std::stoi(field(k, 1));
     CHECK(std::stoi(field(k + 1, 1)) == e.type);
     const std::size_t first = std::stoul(field(k, 2)), count = std::stoul(field(k + 1, 4));
-    CHECK(field(k, 9) == "00000000");
+    e.status = field(k, 9);
+    CHECK((e.status == "00000000" || e.status == "00010000"));  // independent or dependent
     e.form = std::stoi(field(k + 1, 5));
     e.label = field(k + 1, 8);
     e.label.erase(0, e.label.find_first_not_of(' '));
@@ -149,7 +150,7 @@ TEST_CASE("IGES: records, sections, pointers and the global section") {
   const TestSurface t = golden_surface();
   std::vector<std::string> g;
   const std::vector<Entity> entities =
-      read_iges(write_iges(t.input, t.surface.patches, header), &g);
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches), &g);
   REQUIRE(g.size() == 25);
   CHECK(g[0] == ",");
   CHECK(g[1] == ";");
@@ -158,30 +159,90 @@ TEST_CASE("IGES: records, sections, pointers and the global section") {
   CHECK(g[13] == "2");  // millimetres
   CHECK(g[14] == "MM");
   CHECK(g[17] == "19870922.095550");
-  CHECK(real(g[18]) > 0);
   double largest = 0;
   for (double v : surface_net(t.input, t.surface.patches).xyz)
     largest = std::max(largest, std::abs(v));
+  CHECK(real(g[18]) == largest * 1e-12);
   CHECK(real(g[19]) == largest);
   CHECK(g[20] == "A. DESIGNER");
   CHECK(g[21] == "CNUCE PISA");
   CHECK(g[22] == "11");  // IGES 5.3
-  // 12 patches, 5 curves, 4 stringers.
-  REQUIRE(entities.size() == 12 + 5 + 4);
+  // 12 patches; the shell: 31 edges, the vertex and edge lists, 12 loops, 12 faces, the shell;
+  // 5 curves, 4 stringers, the group of the curves.
+  constexpr std::size_t shell = 31 + 2 + 12 + 12 + 1, curves = 12 + shell;
+  REQUIRE(entities.size() == 12 + shell + 5 + 4 + 1);
   for (std::size_t k = 0; k < 12; ++k) {
     CHECK(entities[k].type == 128);
     CHECK(entities[k].label == "PATCH");
     CHECK(entities[k].subscript == int(k + 1));
+    CHECK(entities[k].status == "00010000");
   }
-  CHECK(entities[12].label == "CURVE");
-  CHECK(entities[16].subscript == 5);
-  CHECK(entities[17].label == "STRINGER");
+  CHECK(entities[curves].label == "CURVE");
+  CHECK(entities[curves].status == "00000000");
+  CHECK(entities[curves + 4].subscript == 5);
+  CHECK(entities[curves + 5].label == "STRINGER");
+  const Entity& group = entities[curves + 9];
+  CHECK(group.type == 402);
+  CHECK(group.form == 7);
+  CHECK(group.label == "CURVES");
+  REQUIRE(group.parameters.size() == 2 + 9);
+  CHECK(group.parameters[1] == "9");
+  for (std::size_t k = 0; k < 9; ++k)
+    CHECK(std::stoul(group.parameters[2 + k]) == 2 * (curves + k) + 1);
+}
+
+TEST_CASE(
+    "IGES: no author nor organization is a parameter left out, the start section whole "
+    "words, the unit as asked") {
+  const TestSurface t = golden_surface();
+  CadHeader anonymous = header;
+  anonymous.author.clear();
+  anonymous.organization.clear();
+  anonymous.name = "HULL0001";
+  const struct {
+    LengthUnit unit;
+    const char *flag, *name, *words;
+  } units[] = {{LengthUnit::mm, "2", "MM", "Units: millimetres."},
+               {LengthUnit::cm, "10", "CM", "Units: centimetres."},
+               {LengthUnit::m, "6", "M", "Units: metres."},
+               {LengthUnit::inch, "1", "IN", "Units: inches."},
+               {LengthUnit::foot, "4", "FT", "Units: feet."},
+               {LengthUnit::none, "3", "NONE", "Units: none declared."}};
+  for (const auto& u : units) {
+    anonymous.unit = u.unit;
+    const std::string text = write_iges(t.input, t.surface.patches, anonymous);
+    std::vector<std::string> g;
+    const std::vector<Entity> entities = read_iges(text, &g);
+    REQUIRE(g.size() == 25);
+    CHECK(g[13] == u.flag);
+    CHECK(g[14] == u.name);
+    CHECK(g[20].empty());
+    CHECK(g[21].empty());
+    CHECK(text.find(",,11,0,") != std::string::npos);  // G21, G22 null, as IGES 5.3 allows
+    CHECK(text.find("0H") == std::string::npos);
+    // The start section: its records joined by blanks are the sentence, no word cut.
+    std::string start;
+    for (const std::string& line : lines_of(text)) {
+      if (line[72] != 'S') break;
+      std::string data = line.substr(0, 72);
+      data.erase(data.find_last_not_of(' ') + 1);
+      CHECK(data.front() != ' ');
+      start += (start.empty() ? "" : " ") + data;
+    }
+    CHECK(start ==
+          std::string("IGDS surface HULL0001: one bicubic B-spline surface (entity 128), exact, "
+                      "and its input curves and stringers (entity 126) in the group CURVES "
+                      "(entity 402). ") +
+              u.words);
+    CHECK(entities.size() == 1 + 9 + 1);
+  }
 }
 
 TEST_CASE("IGES: each patch is its Bézier net, every number read back to the same double") {
   const TestSurface t = golden_surface();
   const BezierNet net = surface_net(t.input, t.surface.patches);
-  const std::vector<Entity> entities = read_iges(write_iges(t.input, t.surface.patches, header));
+  const std::vector<Entity> entities =
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches));
   for (std::size_t i = 0; i < 4; ++i) {
     for (std::size_t j = 0; j < 3; ++j) {
       const auto& p = entities[i * 3 + j].parameters;
@@ -206,7 +267,7 @@ TEST_CASE("IGES: each patch is its Bézier net, every number read back to the sa
   // Curve 2: the B-spline of surface_curves.h, knots and controls exactly.
   const auto c = input_curve_bspline(net, 1);
   REQUIRE(c);
-  const auto& p = entities[13].parameters;
+  const auto& p = entities[12 + 31 + 2 + 12 + 12 + 1 + 1].parameters;  // after the shell
   const std::size_t n = c->controls.size();
   REQUIRE(p.size() == 7 + (n + 4) + n + 3 * n + 2 + 3);
   CHECK(std::stoul(p[1]) == n - 1);
@@ -220,12 +281,11 @@ TEST_CASE("IGES: each patch is its Bézier net, every number read back to the sa
   }
 }
 
-TEST_CASE("IGES: one surface with inner knots of multiplicity 3") {
+TEST_CASE("IGES: one surface with inner knots of multiplicity 3, the default") {
   const TestSurface t = golden_surface();
   const BezierNet net = surface_net(t.input, t.surface.patches);
-  const std::vector<Entity> entities =
-      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::one));
-  REQUIRE(entities.size() == 1 + 5 + 4);
+  const std::vector<Entity> entities = read_iges(write_iges(t.input, t.surface.patches, header));
+  REQUIRE(entities.size() == 1 + 5 + 4 + 1);
   CHECK(entities[0].label == "SURFACE");
   const auto& p = entities[0].parameters;
   REQUIRE(p.size() == 10 + 14 + 17 + 130 + 3 * 130 + 4);
@@ -247,7 +307,8 @@ TEST_CASE("IGES: a net of many rows, its numbers made some rows at a time, in bo
     char buffer[32];
     return std::string(buffer, format_real(buffer, v));
   };
-  const std::vector<Entity> patches = read_iges(write_iges(t.input, t.surface.patches, header));
+  const std::vector<Entity> patches =
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches));
   std::size_t checked = 0;
   for (std::size_t i = 0; i < 29; ++i)
     for (std::size_t j = 0; j < 19; ++j) {
@@ -273,10 +334,17 @@ TEST_CASE("IGES: a curve that is a point is left out and the directory says so")
   TestSurface t = test_surface(4, 5, 0, 0);
   for (int j = 0; j < 5; ++j) std::fill_n(t.inppn.data() + 3 * j, 3, 1.0);
   t.surface = interpolate(t.input);
-  const std::vector<Entity> entities = read_iges(write_iges(t.input, t.surface.patches, header));
-  REQUIRE(entities.size() == 12 + 3 + 5);
-  CHECK(entities[12].label == "CURVE");
-  CHECK(entities[12].subscript == 2);
+  const std::vector<Entity> entities =
+      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches));
+  // The shell: 4 x 4 + 3 x 5 edges, the lists, 12 loops and faces, the shell; the pole's four
+  // edges left out of their loops.
+  constexpr std::size_t shell = 31 + 2 + 12 + 12 + 1;
+  REQUIRE(entities.size() == 12 + shell + 3 + 5 + 1);
+  CHECK(entities[12 + 31 + 2].parameters[1] == "3");      // patch 1's loop: three edges
+  CHECK(entities[12 + 31 + 2 + 4].parameters[1] == "4");  // patch 5's, the next row's: four
+  CHECK(entities[12 + shell].label == "CURVE");
+  CHECK(entities[12 + shell].subscript == 2);
+  CHECK(entities[12 + shell + 8].parameters[1] == "8");
 }
 
 TEST_CASE("IGES and STEP refuse a surface that is not finite or of the wrong shape") {
@@ -321,7 +389,21 @@ TEST_CASE("STEP: every reference defined once, numbers exact, one part") {
       points += type == "CARTESIAN_POINT(";
     }
     CHECK(surfaces == (form == SurfaceForm::one ? 1 : 12));
-    CHECK(curves == 9);
+    // FACES: a curve for each of the 31 edges besides the 9 input curves, and the shell.
+    std::size_t faces = 0, edge_curves = 0, shells = 0;
+    for (const auto& [id, type] : instances) {
+      faces += type == "ADVANCED_FACE(";
+      edge_curves += type == "EDGE_CURVE(";
+      shells += type == "OPEN_SHELL(";
+    }
+    const bool one = form == SurfaceForm::one;
+    CHECK(curves == (one ? 9 : 9 + 31));
+    CHECK(faces == (one ? 0 : 12));
+    CHECK(edge_curves == (one ? 0 : 31));
+    CHECK(shells == (one ? 0 : 1));
+    CHECK(std::count_if(instances.begin(), instances.end(),
+                        [](const auto& i) { return i.second == "GEOMETRIC_CURVE_SET("; }) == 1);
+    CHECK(text.find("GEOMETRIC_CURVE_SET('input curves',(") != std::string::npos);
     CHECK(instances.count(1));
     // The net's points come first, in order, each number the same double.
     const std::regex point(R"(CARTESIAN_POINT\('',\(([^,]+),([^,]+),([^)]+)\)\);)");
@@ -336,6 +418,25 @@ TEST_CASE("STEP: every reference defined once, numbers exact, one part") {
           std::string::npos);
     CHECK(text.find("SI_UNIT(.MILLI.,.METRE.)") != std::string::npos);
   }
+  // The length unit as asked; none: no length unit, nor an uncertainty, which would need one.
+  const struct {
+    LengthUnit unit;
+    const char* text;
+  } units[] = {{LengthUnit::mm, "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));"},
+               {LengthUnit::cm, "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.CENTI.,.METRE.));"},
+               {LengthUnit::m, "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT($,.METRE.));"},
+               {LengthUnit::inch, "(CONVERSION_BASED_UNIT('INCH',#"},
+               {LengthUnit::foot, "(CONVERSION_BASED_UNIT('FOOT',#"},
+               {LengthUnit::none, "GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT(())"}};
+  for (const auto& u : units) {
+    CadHeader h = header;
+    h.unit = u.unit;
+    const std::string text = write_step(t.input, t.surface.patches, h);
+    CHECK(text.find(u.text) != std::string::npos);
+    CHECK((text.find("LENGTH_UNIT()") != std::string::npos) == (u.unit != LengthUnit::none));
+  }
+  CHECK(write_step(t.input, t.surface.patches, header).find("LENGTH_MEASURE(6.03E-11)") !=
+        std::string::npos);
   // Apostrophes and backslashes are doubled in STEP strings.
   CadHeader odd = header;
   odd.name = "O'NEIL\\1";

@@ -31,6 +31,11 @@ TEST_CASE("OpenCASCADE reads the IGES and STEP files without a message and finds
   std::vector<Case> cases;
   cases.push_back({"small", golden_surface(), 1});
   cases.push_back({"bigger", test_surface(25, 20, 2, 2), 7});
+  // A pole: the first curve's points all one point, its edges left out of the shell.
+  TestSurface pole = test_surface(4, 5, 1, 1);
+  for (int j = 0; j < 5; ++j) std::fill_n(pole.inppn.data() + 3 * j, 3, 1.0);
+  pole.surface = interpolate(pole.input);
+  cases.push_back({"pole", std::move(pole), 1});
   for (auto& c : cases) {
     const CadHeader header{"CHECK", "CHECK.IGS", {1987, 9, 22, 9, 55, 50}, "", ""};
     for (SurfaceForm form : {SurfaceForm::patches, SurfaceForm::one}) {
@@ -59,12 +64,49 @@ TEST_CASE("OpenCASCADE reads the IGES and STEP files without a message and finds
         }
         CHECK(no_messages(r.model_checks));
         CHECK(r.shape_check.find("This shape seems to be valid") != std::string::npos);
-        const std::size_t faces =
-            form == SurfaceForm::one
-                ? 1
-                : std::size_t(c.surface.input.nocur - 1) * std::size_t(c.surface.input.nostr - 1);
-        CHECK(r.counts.find(fmt::format("FACE      : {}\n", faces)) != std::string::npos);
+        check_topology(c.surface, form, r);
         CHECK(worst <= 1e-9);
+      }
+    }
+  }
+}
+
+TEST_CASE("OpenCASCADE reads each unit as declared, and says when there is none") {
+  TempDir dir;
+  const auto draw = find_draw(dir.path());
+  IGDS_SKIP_UNLESS(draw.has_value(),
+                   "OpenCASCADE's DRAW (occt-draw or DRAWEXE) is not installed: scripts/setup "
+                   "--test installs it");
+  const TestSurface t = golden_surface();
+  // OpenCASCADE gives its shapes in millimetres; NONE is read as millimetres, with a remark.
+  const struct {
+    LengthUnit unit;
+    double millimetres;
+  } units[] = {{LengthUnit::mm, 1},      {LengthUnit::cm, 10},      {LengthUnit::m, 1000},
+               {LengthUnit::inch, 25.4}, {LengthUnit::foot, 304.8}, {LengthUnit::none, 1}};
+  for (const auto& u : units) {
+    CadHeader header{"CHECK", "CHECK.IGS", {1987, 9, 22, 9, 55, 50}, "", "", u.unit};
+    for (bool step : {false, true}) {
+      CAPTURE(u.millimetres);
+      CAPTURE(step);
+      const fs::path file = dir.path() / (step ? "check.stp" : "check.igs");
+      write_file(file, step ? write_step(t.input, t.surface.patches, header)
+                            : write_iges(t.input, t.surface.patches, header));
+      std::vector<Probe> probes = probes_of(t, SurfaceForm::one, 1);
+      const Result r = run_draw(*draw, dir.path(), file, step, probes);
+      INFO(r.all.substr(0, 4000));
+      REQUIRE(r.values.size() == probes.size());
+      double worst = 0;
+      for (std::size_t k = 0; k < probes.size(); ++k)
+        worst = std::max(worst, norm(r.values[k] - u.millimetres * probes[k].expected));
+      CHECK(worst <= 1e-9 * u.millimetres * largest_coordinate(t.surface.intpn));
+      const bool none = u.unit == LengthUnit::none;
+      if (step) {
+        CHECK((r.transfer_checks.find("No Length Uncertainty") != std::string::npos) == none);
+        CHECK(no_messages(r.model_checks));
+      } else {
+        CHECK((r.model_checks.find("Unit Name parameter is not recognized") != std::string::npos) ==
+              none);
       }
     }
   }

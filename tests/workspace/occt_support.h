@@ -18,6 +18,7 @@
 #include "tests/support/process.h"
 #include "tests/workspace/exchange_support.h"
 #include "workspace/exchange/iges.h"
+#include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/fit.h"
 
 namespace igds::test::exchange {
@@ -64,7 +65,8 @@ inline std::optional<Draw> find_draw(const fs::path& scratch) {
   return d;
 }
 
-// One evaluation: a surface (face number f, 1-based) at (u, v), or a curve (edge e) at t.
+// One evaluation: a surface (face number f, 1-based) at (u, v), or a curve (edge e of the curves'
+// group) at t.
 struct Probe {
   bool surface = true;
   std::size_t item = 0;
@@ -74,12 +76,13 @@ struct Probe {
 
 struct Result {
   std::string transfer_checks, model_checks, shape_check, counts;
+  std::string free_counts;  // nbshapes of the free boundary
   std::vector<Vec3> values;
   std::string all;
 };
 
-// Reads `file` with igesread or stepread, then evaluates the probes on the sub-shapes of the
-// result in order (faces, then edges, as the file lists its entities).
+// Reads `file` with igesread or stepread, then evaluates the probes on the faces of the result in
+// order, and on the edges of its last part, the group of the input curves, in order.
 inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& file, bool step,
                        const std::vector<Probe>& probes) {
   std::string tcl = "pload MODELING DATAEXCHANGEKERNEL\n";
@@ -93,7 +96,14 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
       "puts \"MODEL-BEGIN\\n[data c]\\nMODEL-END\"\n"
       "puts \"SHAPE-BEGIN\\n[checkshape shape]\\nSHAPE-END\"\n"
       "puts \"COUNT-BEGIN\\n[nbshapes shape]\\nCOUNT-END\"\n"
-      "explode shape\n"
+      // The free boundary: edges that only one face uses (shape_c, its compound of wires).
+      "freebounds shape 1e-7\n"
+      "puts \"FREE-BEGIN\\n[nbshapes shape_c]\\nFREE-END\"\n"
+      // The faces in order; the curves' group is the result's last part, its edges in order.
+      "explode shape F\n"
+      "copy shape top\n"
+      "set parts [explode top]\n"
+      "set curves [explode [lindex $parts end] E]\n"
       "set probes {\n";
   for (const Probe& p : probes)
     tcl += fmt::format("{{{} {} {:.17g} {:.17g}}}\n", p.surface ? "s" : "c", p.item, p.u, p.v);
@@ -102,7 +112,8 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
       "foreach p $probes {\n"
       "  lassign $p kind k u v\n"
       "  if {![info exists made($kind$k)]} {\n"
-      "    if {$kind == \"s\"} { mksurface g$kind$k shape_$k } else { mkcurve g$kind$k shape_$k }\n"
+      "    if {$kind == \"s\"} { mksurface g$kind$k shape_$k } else {\n"
+      "      mkcurve g$kind$k [lindex $curves [expr {$k - 1}]] }\n"
       "    set made($kind$k) 1\n"
       "  }\n"
       "  if {$kind == \"s\"} { svalue g$kind$k $u $v x y z } else { cvalue g$kind$k $u x y z }\n"
@@ -128,6 +139,7 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
   r.model_checks = between("MODEL-BEGIN", "MODEL-END");
   r.shape_check = between("SHAPE-BEGIN", "SHAPE-END");
   r.counts = between("COUNT-BEGIN", "COUNT-END");
+  r.free_counts = between("FREE-BEGIN", "FREE-END");
   std::istringstream lines(run.out);
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("VALUE ", 0) != 0) continue;
@@ -140,7 +152,7 @@ inline Result run_draw(const Draw& draw, const fs::path& dir, const fs::path& fi
 }
 
 // Probes at INTPN points (every `step`th) on the faces of the patches (or the one surface), and
-// at the input points on the curves and stringers, edges numbered after the faces.
+// at the input points on the curves and stringers, edges of the curves' group (a pole is not one).
 inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std::size_t step) {
   const auto& in = t.input;
   const std::size_t nc = in.nocur, ns = in.nostr, ic = in.intcu, is = in.intst;
@@ -156,23 +168,23 @@ inline std::vector<Probe> probes_of(const TestSurface& t, SurfaceForm form, std:
     p.expected = Vec3::load(t.surface.intpn.data() + 3 * k);
     probes.push_back(p);
   }
-  const std::size_t faces = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
-  for (std::size_t i = 0; i < nc; ++i) {
+  // The curves and stringers in the file's order, a pole (all its points one point) left out.
+  std::size_t edge = 0;
+  auto line = [&](std::size_t count, auto point) {
+    bool pole = true;
+    for (std::size_t m = 1; m < count; ++m) pole = pole && point(m) == point(0);
+    if (pole) return;
+    ++edge;
     double t_k = 0;
-    for (std::size_t j = 0; j < ns; ++j) {
-      const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
-      if (j > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * (i * ns + j - 1)));
-      probes.push_back({false, faces + i + 1, t_k, 0, p});
+    for (std::size_t m = 0; m < count; ++m) {
+      if (m > 0) t_k += norm(point(m) - point(m - 1));
+      probes.push_back({false, edge, t_k, 0, point(m)});
     }
-  }
-  for (std::size_t j = 0; j < ns; ++j) {
-    double t_k = 0;
-    for (std::size_t i = 0; i < nc; ++i) {
-      const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * ns + j));
-      if (i > 0) t_k += norm(p - Vec3::load(t.inppn.data() + 3 * ((i - 1) * ns + j)));
-      probes.push_back({false, faces + nc + j + 1, t_k, 0, p});
-    }
-  }
+  };
+  for (std::size_t i = 0; i < nc; ++i)
+    line(ns, [&](std::size_t j) { return Vec3::load(t.inppn.data() + 3 * (i * ns + j)); });
+  for (std::size_t j = 0; j < ns; ++j)
+    line(nc, [&](std::size_t i) { return Vec3::load(t.inppn.data() + 3 * (i * ns + j)); });
   return probes;
 }
 
@@ -185,6 +197,46 @@ inline double worst_error(const TestSurface& t, const std::vector<Probe>& probes
     worst = std::max(worst, std::isfinite(e) ? e : INFINITY);
   }
   return worst / largest_coordinate(t.surface.intpn);
+}
+
+// The number nbshapes gives for `kind` ("FACE", "SHELL", "EDGE") in `counts`; -1 when absent.
+inline long shape_count(const std::string& counts, const std::string& kind) {
+  const std::size_t at = counts.find(" " + kind + " ");
+  if (at == std::string::npos) return -1;
+  const std::size_t colon = counts.find(':', at);
+  return colon == std::string::npos ? -1 : std::strtol(counts.c_str() + colon + 1, nullptr, 10);
+}
+
+// What OpenCASCADE must have made of a file of `t`: one face, or (FACES) one shell of a face per
+// patch whose free boundary is the grid's border alone (no edge inside used by one face only).
+inline void check_topology(const TestSurface& t, SurfaceForm form, const Result& r) {
+  const long nc = t.input.nocur, ns = t.input.nostr;
+  if (form == SurfaceForm::one) {
+    CHECK(shape_count(r.counts, "FACE") == 1);
+    CHECK(shape_count(r.counts, "SHELL") == 0);
+  } else {
+    CHECK(shape_count(r.counts, "FACE") == (nc - 1) * (ns - 1));
+    CHECK(shape_count(r.counts, "SHELL") == 1);
+  }
+  // The border: NOSTR-1 edges along each of the first and last curves, NOCUR-1 up each of the
+  // first and last stringers, but those along a pole; for the one surface, its face's sides but
+  // a pole.
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  const PatchShell shell(net, std::size_t(nc), std::size_t(ns));
+  long border = 0, sides = 0;
+  for (std::size_t i : {std::size_t(0), std::size_t(nc - 1)}) {
+    long kept = 0;
+    for (std::size_t j = 0; j + 1 < std::size_t(ns); ++j) kept += !shell.degenerate(true, i, j);
+    border += kept;
+    sides += kept > 0;
+  }
+  for (std::size_t j : {std::size_t(0), std::size_t(ns - 1)}) {
+    long kept = 0;
+    for (std::size_t i = 0; i + 1 < std::size_t(nc); ++i) kept += !shell.degenerate(false, i, j);
+    border += kept;
+    sides += kept > 0;
+  }
+  CHECK(shape_count(r.free_counts, "EDGE") == (form == SurfaceForm::one ? sides : border));
 }
 
 inline bool no_messages(const std::string& checks) {

@@ -39,8 +39,10 @@ void end_record(std::string& out, char section, std::size_t sequence) {
   out.push_back('\n');
 }
 
-// A Hollerith string (nHtext) of printable characters.
+// A Hollerith string (nHtext) of printable characters; an empty one is the parameter left out
+// (IGES 5.3, 2.2.3: its default), never `0H`.
 std::string hollerith(std::string_view text) {
+  if (text.empty()) return {};
   std::string s;
   for (char c : text.substr(0, 60)) s.push_back(c >= 0x20 && c < 0x7F ? c : '?');
   return fmt::format("{}H{}", s.size(), s);
@@ -138,6 +140,8 @@ struct Entity {
   std::size_t lines = 0;       // P lines
   std::string_view label;
   int subscript = 0;
+  int form = 0;
+  bool dependent = false;  // physically dependent on another entity (a part of the shell)
 };
 
 // Puts into `p` the parameters of entities [0, count), the next ones of the file after `list`,
@@ -176,14 +180,15 @@ char* directory_entry(char* w, const Entity& e, std::size_t sequence) {
   w = fortran::put_i_whole(w, std::int64_t(e.parameters), 8);
   // Structure, font, level, view, matrix, label.
   for (int k = 0; k < 6; ++k) w = fortran::put_i_whole(w, 0, 8);
-  w = std::copy_n("00000000", 8, w);  // status: visible, independent, geometry, hierarchy global
+  // Status: visible, independent (or physically dependent), geometry, hierarchy global.
+  w = std::copy_n(e.dependent ? "00010000" : "00000000", 8, w);
   end_record(sequence);
   w = fortran::put_i_whole(w, e.type, 8);
   w = fortran::put_i_whole(w, 0, 8);  // line weight
   w = fortran::put_i_whole(w, 0, 8);  // colour
   w = fortran::put_i_whole(w, std::int64_t(e.lines), 8);
-  w = fortran::put_i_whole(w, 0, 8);  // form
-  w = std::fill_n(w, 16, ' ');        // reserved
+  w = fortran::put_i_whole(w, e.form, 8);
+  w = std::fill_n(w, 16, ' ');  // reserved
   w = std::fill_n(w, 8 - std::min<std::size_t>(8, e.label.size()), ' ');
   w = std::copy_n(e.label.data(), std::min<std::size_t>(8, e.label.size()), w);
   w = fortran::put_i_whole(w, e.subscript, 8);
@@ -300,7 +305,180 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
   p.slot_token(reals[v1], ';');
 }
 
+// Unit flag and name (IGES 5.3, G14 and G15); none has no flag of its own: 3, "see the name".
+struct IgesUnit {
+  int flag;
+  std::string_view name;
+};
+IgesUnit iges_unit(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::mm:
+      return {2, "2HMM"};
+    case LengthUnit::cm:
+      return {10, "2HCM"};
+    case LengthUnit::m:
+      return {6, "1HM"};
+    case LengthUnit::inch:
+      return {1, "2HIN"};
+    case LengthUnit::foot:
+      return {4, "2HFT"};
+    case LengthUnit::none:
+      break;
+  }
+  return {3, "4HNONE"};
+}
+
+std::string_view unit_words(LengthUnit unit) {
+  constexpr std::string_view words[] = {"millimetres", "centimetres", "metres",
+                                        "inches",      "feet",        "none declared"};
+  return words[static_cast<int>(unit)];
+}
+
+// `text` in records of 72 columns broken between words (a word longer than a record is cut).
+void start_records(std::string& records, std::string_view text, std::size_t& lines) {
+  while (!text.empty()) {
+    std::size_t take = std::min<std::size_t>(text.size(), 72);
+    if (take < text.size()) {
+      const std::size_t blank = text.substr(0, 73).rfind(' ');
+      if (blank != std::string_view::npos && blank > 0) take = blank;
+    }
+    records.append(text.substr(0, take));
+    records.append(72 - take, ' ');
+    end_record(records, 'S', ++lines);
+    text.remove_prefix(take);
+    while (!text.empty() && text.front() == ' ') text.remove_prefix(1);
+  }
+}
+
+// The shell of the patches (EXPORT's FACES), after the patches (entities 0 .. F-1 of `list`):
+// each edge's curve (entity 126, the border's Bézier controls), the vertex list (502), the edge
+// list (504), a loop (508) and a face (510) per patch, the open shell (514 form 2). Entities of
+// the shell are physically dependent; the shell is the one a reader starts from.
+void put_shell(Records& p, std::vector<Entity>& list, const BezierNet& net, const PatchShell& shell,
+               const IntegerReals& reals, std::size_t block_bytes) {
+  const std::size_t faces = list.size(), ns = (net.cols - 1) / 3 + 1, nc = (net.rows - 1) / 3 + 1;
+  const std::size_t edges = shell.along_count() + shell.across_count();
+  auto de = [](std::size_t entity) { return std::int64_t(2 * entity + 1); };
+  const std::size_t first_edge = faces, vertices = first_edge + edges, edge_list = vertices + 1,
+                    first_loop = edge_list + 1, first_face = first_loop + faces;
+  // Edge k: along curve i from node j, or along stringer j from node i.
+  struct Side {
+    bool along;
+    std::size_t i, j;
+  };
+  auto side_of = [&](std::size_t k) {
+    return k < shell.along_count()
+               ? Side{true, k / (ns - 1), k % (ns - 1)}
+               : Side{false, (k - shell.along_count()) / ns, (k - shell.along_count()) % ns};
+  };
+  put_entities(
+      p, list, edges, block_bytes / (20 * record), [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        const Side e = side_of(k);
+        const std::size_t from = e.along ? e.j : e.i;
+        q.integer(126);
+        q.integer(3);  // K: four controls
+        q.integer(3);  // M: cubic
+        q.integer(0);  // PROP1..4: not declared planar, open, polynomial, not periodic
+        q.integer(0);
+        q.integer(1);
+        q.integer(0);
+        for (int m = 0; m < 8; ++m) q.slot_token(reals[m < 4 ? from : from + 1]);
+        for (int m = 0; m < 4; ++m) q.token("1.", 2, ',');
+        for (int c = 0; c < 4; ++c)
+          for (int x = 0; x < 3; ++x)
+            q.real(net.xyz[3 * shell.control_index(e.along, e.i, e.j, c) + std::size_t(x)]);
+        q.slot_token(reals[from]);
+        q.slot_token(reals[from + 1]);
+        q.token("0.", 2, ',');
+        q.token("0.", 2, ',');
+        q.token("0.", 2, ';');
+        return Entity{.type = 126, .label = "EDGE", .subscript = int(k + 1), .dependent = true};
+      });
+  // The vertices: every node of the grid (a pole's nodes stand for one vertex, the others stay
+  // unused in the list).
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(502);
+        q.integer(std::int64_t(nc * ns));
+        for (std::size_t n = 0; n < nc * ns; ++n)
+          for (int x = 0; x < 3; ++x)
+            q.real(net.xyz[3 * ((3 * (n / ns)) * net.cols + 3 * (n % ns)) + std::size_t(x)],
+                   n + 1 == nc * ns && x == 2 ? ';' : ',');
+        return Entity{.type = 502, .label = "VERTICES", .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(504);
+        q.integer(std::int64_t(edges));
+        for (std::size_t k = 0; k < edges; ++k) {
+          const Side e = side_of(k);
+          q.integer(de(first_edge + k));
+          q.integer(de(vertices));
+          q.integer(std::int64_t(shell.vertex(e.i, e.j)) + 1);
+          q.integer(de(vertices));
+          q.integer(
+              std::int64_t(e.along ? shell.vertex(e.i, e.j + 1) : shell.vertex(e.i + 1, e.j)) + 1,
+              k + 1 == edges ? ';' : ',');
+        }
+        return Entity{.type = 504, .label = "EDGES", .form = 1, .dependent = true};
+      });
+  // Patch (i, j)'s loop: along its first curve and up its last stringer as the edges run, back
+  // along its last curve and down its first stringer against them: counterclockwise in (u, v),
+  // and each inner edge used once each way.
+  put_entities(
+      p, list, faces, block_bytes / (4 * record), [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        const std::size_t i = k / (ns - 1), j = k % (ns - 1);
+        const Side sides[4] = {{true, i, j}, {false, i, j + 1}, {true, i + 1, j}, {false, i, j}};
+        std::size_t kept = 0;
+        for (const Side& e : sides) kept += !shell.degenerate(e.along, e.i, e.j);
+        q.integer(508);
+        q.integer(std::int64_t(kept));
+        std::size_t written = 0;
+        for (int n = 0; n < 4; ++n) {
+          const Side& e = sides[n];
+          if (shell.degenerate(e.along, e.i, e.j)) continue;
+          q.integer(0);  // an edge
+          q.integer(de(edge_list));
+          q.integer(std::int64_t(shell.edge(e.along, e.i, e.j)) + 1);
+          q.integer(n < 2 ? 1 : 0);                     // as the edge runs, or against it
+          q.integer(0, ++written == kept ? ';' : ',');  // no curve in parameter space
+        }
+        return Entity{
+            .type = 508, .label = "LOOP", .subscript = int(k + 1), .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, faces, block_bytes / record, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t k) {
+        q.integer(510);
+        q.integer(de(k));  // the patch
+        q.integer(1);      // one loop, the outer one
+        q.integer(1);
+        q.integer(de(first_loop + k), ';');
+        return Entity{
+            .type = 510, .label = "FACE", .subscript = int(k + 1), .form = 1, .dependent = true};
+      });
+  put_entities(
+      p, list, 1, 1, [](std::size_t, std::size_t) {},
+      [&](Records& q, std::size_t) {
+        q.integer(514);
+        q.integer(std::int64_t(faces));
+        for (std::size_t k = 0; k < faces; ++k) {
+          q.integer(de(first_face + k));
+          q.integer(1, k + 1 == faces ? ';' : ',');  // the face's normal is the surface's
+        }
+        return Entity{.type = 514, .label = "SHELL", .form = 2};
+      });
+}
+
 }  // namespace
+
+double cad_resolution(double largest) {
+  return std::max(largest, 1.0) * 1e-12;
+}
 
 void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader& header,
                 TextOut& out, SurfaceForm form) {
@@ -316,16 +494,13 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   std::size_t s_lines = 0;
   const std::string start = fmt::format(
       "IGDS surface {}: {} (entity 128), exact, and its input curves and stringers (entity "
-      "126). Units mm.",
+      "126) in the group CURVES (entity 402). Units: {}.",
       header.name,
-      form == SurfaceForm::one ? "one bicubic B-spline surface" : "its bicubic patches");
+      form == SurfaceForm::one ? "one bicubic B-spline surface"
+                               : "its bicubic patches as the faces of one shell (entity 514)",
+      unit_words(header.unit));
   std::string records;
-  for (std::size_t at = 0; at < start.size(); at += 72) {
-    const std::string_view piece = std::string_view(start).substr(at, 72);
-    records.append(piece);
-    records.append(72 - piece.size(), ' ');
-    end_record(records, 'S', ++s_lines);
-  }
+  start_records(records, start, s_lines);
   out.put(records);
 
   // Global section (IGES 5.3, 2.2.4.3).
@@ -333,23 +508,24 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::string date = hollerith(iges_date(header.date));
   g.token("1H,");
   g.token("1H;");
-  g.token(hollerith(header.name));          // 3 product identification (sender)
-  g.token(hollerith(header.file_name));     // 4 file name
-  g.token(hollerith("IGDS"));               // 5 native system
-  g.token(hollerith("IGDS EXPORT IGES"));   // 6 preprocessor version
-  g.integer(32);                            // 7 bits of an integer
-  g.integer(38);                            // 8 single precision: largest power of ten
-  g.integer(6);                             // 9 ... and significant digits
-  g.integer(308);                           // 10 double precision: largest power of ten
-  g.integer(15);                            // 11 ... and significant digits
-  g.token(hollerith(header.name));          // 12 product identification (receiver)
-  g.token("1.");                            // 13 model space scale
-  g.integer(2);                             // 14 units: millimetres
-  g.token("2HMM");                          // 15 units name
+  g.token(hollerith(header.name));         // 3 product identification (sender)
+  g.token(hollerith(header.file_name));    // 4 file name
+  g.token(hollerith("IGDS"));              // 5 native system
+  g.token(hollerith("IGDS EXPORT IGES"));  // 6 preprocessor version
+  g.integer(32);                           // 7 bits of an integer
+  g.integer(38);                           // 8 single precision: largest power of ten
+  g.integer(6);                            // 9 ... and significant digits
+  g.integer(308);                          // 10 double precision: largest power of ten
+  g.integer(15);                           // 11 ... and significant digits
+  g.token(hollerith(header.name));         // 12 product identification (receiver)
+  g.token("1.");                           // 13 model space scale
+  const IgesUnit unit = iges_unit(header.unit);
+  g.integer(unit.flag);                     // 14 units flag
+  g.token(unit.name);                       // 15 units name
   g.integer(1);                             // 16 line weight gradations
   g.token("1.");                            // 17 width of the heaviest line
   g.token(date);                            // 18 date of this file
-  g.real(std::max(largest, 1.0) * 1e-9);    // 19 resolution
+  g.real(cad_resolution(largest));          // 19 resolution
   g.real(largest > 0 ? largest : 1.0);      // 20 largest coordinate
   g.token(hollerith(header.author));        // 21 author
   g.token(hollerith(header.organization));  // 22 organization
@@ -366,7 +542,14 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   for (std::size_t k = 0; k < nc + ns; ++k)
     if (splines[k]) curves.push_back(k);
   const std::size_t patch_count = form == SurfaceForm::one ? 1 : (nc - 1) * (ns - 1);
-  const std::size_t entities = patch_count + curves.size();
+  // FACES: the patches, the edges' curves, the vertex list, the edge list, a loop and a face per
+  // patch, and the shell.
+  const std::optional<PatchShell> shell =
+      form == SurfaceForm::one ? std::nullopt
+                               : std::optional<PatchShell>(std::in_place, net, nc, ns);
+  const std::size_t edge_count = shell ? shell->along_count() + shell->across_count() : 0;
+  const std::size_t shell_entities = shell ? edge_count + 2 + 2 * patch_count + 1 : 0;
+  const std::size_t entities = patch_count + shell_entities + curves.size() + 1;
 
   // Directory section: 2 records of 81 characters per entity, written once the parameters are.
   const std::uint64_t d_at = out.offset();
@@ -396,8 +579,9 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
         [&](Records& q, std::size_t k) {
           const std::size_t i = k / (ns - 1), j = k % (ns - 1);
           write_surface(q, texts, reals, 3 * i, 4, 3 * j, 4);
-          return Entity{.type = 128, .label = "PATCH", .subscript = int(k + 1)};
+          return Entity{.type = 128, .label = "PATCH", .subscript = int(k + 1), .dependent = true};
         });
+    put_shell(p, list, net, *shell, reals, block_bytes);
   }
   auto curve_most = [&](std::size_t k) {
     const CubicBspline& c = *splines[curves[k]];
@@ -416,6 +600,15 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
                       .label = curve ? "CURVE" : "STRINGER",
                       .subscript = int(curve ? index + 1 : index - nc + 1)};
       });
+  // The group of the curves: 402 form 7, unordered, without back pointers.
+  const std::size_t first_curve = patch_count + shell_entities;
+  p.begin(2 * list.size() + 1);
+  p.integer(402);
+  p.integer(std::int64_t(curves.size()), curves.empty() ? ';' : ',');
+  for (std::size_t k = 0; k < curves.size(); ++k)
+    p.integer(std::int64_t(2 * (first_curve + k) + 1), k + 1 < curves.size() ? ',' : ';');
+  const std::size_t group_lines = p.finish();
+  list.push_back({402, p.first(), group_lines, "CURVES", 0, 7});
   const std::size_t p_lines = p.next_sequence() - 1;
 
   const std::uint64_t end = out.offset();

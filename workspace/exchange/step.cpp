@@ -187,6 +187,14 @@ void curve_instances(Instances& s, const std::string& name, const CubicBspline& 
   out += "),.UNSPECIFIED.);\n";
 }
 
+char* put_ref(char* w, std::size_t id) {
+  *w++ = '#';
+  return std::to_chars(w, w + 24, id).ptr;
+}
+char* put_text(char* w, std::string_view text) {
+  return std::copy(text.begin(), text.end(), w);
+}
+
 }  // namespace
 
 void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
@@ -257,25 +265,77 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   s.ref(definition);
   out += ");\n";
 
-  // Units (mm), uncertainty, the geometric context.
-  const std::size_t mm = s.begin();
-  out += "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.));\n";
+  // The length unit (none: the context has none, nor a length uncertainty, which needs one),
+  // the angles' units, the uncertainty, the geometric context.
+  std::size_t length_unit = 0;
+  auto si_length = [&](std::string_view prefix) {
+    const std::size_t id = s.begin();
+    out += "(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(";
+    out += prefix;
+    out += ",.METRE.));\n";
+    return id;
+  };
+  // A unit defined by its length in millimetres (ISO 10303-41 conversion_based_unit).
+  auto converted = [&](std::string_view name, std::string_view millimetres) {
+    const std::size_t mm = si_length(".MILLI.");
+    const std::size_t measure = s.begin();
+    out += "LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
+    out += millimetres;
+    out += "),";
+    s.ref(mm);
+    out += ");\n";
+    const std::size_t dimensions = s.begin();
+    out += "DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.);\n";
+    const std::size_t id = s.begin();
+    out += "(CONVERSION_BASED_UNIT(";
+    s.string(name);
+    out += ',';
+    s.ref(measure);
+    out += ")LENGTH_UNIT()NAMED_UNIT(";
+    s.ref(dimensions);
+    out += "));\n";
+    return id;
+  };
+  switch (header.unit) {
+    case LengthUnit::mm:
+      length_unit = si_length(".MILLI.");
+      break;
+    case LengthUnit::cm:
+      length_unit = si_length(".CENTI.");
+      break;
+    case LengthUnit::m:
+      length_unit = si_length("$");
+      break;
+    case LengthUnit::inch:
+      length_unit = converted("INCH", "25.4");
+      break;
+    case LengthUnit::foot:
+      length_unit = converted("FOOT", "304.8");
+      break;
+    case LengthUnit::none:
+      break;
+  }
   const std::size_t radian = s.begin();
   out += "(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.));\n";
   const std::size_t steradian = s.begin();
   out += "(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT());\n";
-  const std::size_t uncertainty = s.begin();
-  out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
-  s.real(std::max(largest, 1.0) * 1e-9);
-  out += "),";
-  s.ref(mm);
-  out += ",'distance_accuracy_value','');\n";
+  std::size_t uncertainty = 0;
+  if (length_unit != 0) {
+    uncertainty = s.begin();
+    out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
+    s.real(cad_resolution(largest));
+    out += "),";
+    s.ref(length_unit);
+    out += ",'distance_accuracy_value','');\n";
+  }
   const std::size_t context = s.begin();
   out += "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((";
-  s.ref(uncertainty);
+  if (uncertainty != 0) s.ref(uncertainty);
   out += "))GLOBAL_UNIT_ASSIGNED_CONTEXT((";
-  s.ref(mm);
-  out += ',';
+  if (length_unit != 0) {
+    s.ref(length_unit);
+    out += ',';
+  }
   s.ref(radian);
   out += ',';
   s.ref(steradian);
@@ -288,7 +348,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
            [&](char* w, std::size_t k) { return point_line(w, first_point + k, &net.xyz[3 * k]); });
   s.skip(points);
 
-  std::vector<std::size_t> items;
+  std::vector<std::size_t> items, faces;  // the surface, or the patches and their faces
   const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
     const SurfaceOf whole{0, net.rows, 0, net.cols};
@@ -315,6 +375,97 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     s.skip(count);
     items.resize(count);
     for (std::size_t k = 0; k < count; ++k) items[k] = first_patch + k;
+
+    // The shell: vertices, edges (a curve and an EDGE_CURVE each, along the curves then along
+    // the stringers), faces (four ORIENTED_EDGEs, a loop, a bound, the face each), made like
+    // the points.
+    const PatchShell shell(net, nc, ns);
+    const std::size_t first_vertex = s.next();
+    s.flush();
+    put_each(text, nc * ns, 64, [&](char* w, std::size_t k) {
+      w = put_ref(w, first_vertex + k);
+      w = put_text(w, "=VERTEX_POINT('',");
+      w = put_ref(w, first_point + (3 * (k / ns)) * net.cols + 3 * (k % ns));
+      return put_text(w, ");\n");
+    });
+    s.skip(nc * ns);
+    const std::size_t first_edge = s.next(), edges = shell.along_count() + shell.across_count();
+    auto edge_id = [&](bool along, std::size_t i, std::size_t j) {
+      return first_edge + 2 * shell.edge(along, i, j) + 1;
+    };
+    put_each(text, edges, 256 + 4 * 34, [&](char* w, std::size_t k) {
+      const bool along = k < shell.along_count();
+      const std::size_t e = along ? k : k - shell.along_count();
+      const std::size_t i = along ? e / (ns - 1) : e / ns, j = along ? e % (ns - 1) : e % ns;
+      const std::size_t curve = first_edge + 2 * k;
+      w = put_ref(w, curve);
+      w = put_text(w, "=B_SPLINE_CURVE_WITH_KNOTS('',3,(");
+      for (int c = 0; c < 4; ++c) {
+        if (c > 0) *w++ = ',';
+        w = put_ref(w, first_point + shell.control_index(along, i, j, c));
+      }
+      w = put_text(w, "),.UNSPECIFIED.,.F.,.F.,(4,4),(");
+      const std::size_t from = along ? j : i;
+      w = put_text(w, reals[from]);
+      *w++ = ',';
+      w = put_text(w, reals[from + 1]);
+      w = put_text(w, "),.UNSPECIFIED.);\n");
+      w = put_ref(w, curve + 1);
+      w = put_text(w, "=EDGE_CURVE('',");
+      w = put_ref(w, first_vertex + shell.vertex(i, j));
+      *w++ = ',';
+      w = put_ref(w, first_vertex + (along ? shell.vertex(i, j + 1) : shell.vertex(i + 1, j)));
+      *w++ = ',';
+      w = put_ref(w, curve);
+      return put_text(w, ",.T.);\n");
+    });
+    s.skip(2 * edges);
+    // Patch (i, j): along its first curve (forward), up its last stringer (forward), back along
+    // its last curve and down its first stringer (reversed): counterclockwise in (u, v), so the
+    // face's normal is the surface's, and each inner edge is used once each way.
+    const std::size_t first_face = s.next();
+    put_each(text, count, 7 * 96 + 64, [&](char* w, std::size_t k) {
+      const std::size_t i = k / (ns - 1), j = k % (ns - 1), id = first_face + 7 * k;
+      const struct {
+        bool along;
+        std::size_t i, j;
+        bool forward;
+      } sides[4] = {{true, i, j, true},
+                    {false, i, j + 1, true},
+                    {true, i + 1, j, false},
+                    {false, i, j, false}};
+      std::size_t used[4], n = 0;
+      for (int side = 0; side < 4; ++side) {
+        const auto& e = sides[side];
+        w = put_ref(w, id + std::size_t(side));
+        w = put_text(w, "=ORIENTED_EDGE('',*,*,");
+        w = put_ref(w, edge_id(e.along, e.i, e.j));
+        w = put_text(w, e.forward ? ",.T.);\n" : ",.F.);\n");
+        if (!shell.degenerate(e.along, e.i, e.j)) used[n++] = id + std::size_t(side);
+      }
+      w = put_ref(w, id + 4);
+      w = put_text(w, "=EDGE_LOOP('',(");
+      for (std::size_t m = 0; m < n; ++m) {
+        if (m > 0) *w++ = ',';
+        w = put_ref(w, used[m]);
+      }
+      w = put_text(w, "));\n");
+      w = put_ref(w, id + 5);
+      w = put_text(w, "=FACE_OUTER_BOUND('',");
+      w = put_ref(w, id + 4);
+      w = put_text(w, ",.T.);\n");
+      w = put_ref(w, id + 6);
+      w = put_text(w, "=ADVANCED_FACE('PATCH ");
+      w = std::to_chars(w, w + 24, k + 1).ptr;
+      w = put_text(w, "',(");
+      w = put_ref(w, id + 5);
+      w = put_text(w, "),");
+      w = put_ref(w, first_patch + k);
+      return put_text(w, ",.T.);\n");
+    });
+    s.skip(7 * count);
+    faces.resize(count);
+    for (std::size_t k = 0; k < count; ++k) faces[k] = first_face + 7 * k + 6;
   }
 
   // The curves and stringers: their instances numbered ahead (the list of items needs their
@@ -323,12 +474,13 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   for (std::size_t k = 0; k < nc + ns; ++k)
     splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
   std::vector<std::size_t> curves, first_ids;  // the splines kept, their first instances
+  std::vector<std::size_t> curve_items;
   for (std::size_t k = 0; k < nc + ns; ++k) {
     if (!splines[k]) continue;
     curves.push_back(k);
     first_ids.push_back(s.next());
     s.skip(splines[k]->controls.size());
-    items.push_back(s.next());
+    curve_items.push_back(s.next());
     s.skip(1);
   }
   s.flush();
@@ -345,10 +497,6 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     c.flush();
   }
 
-  const std::size_t set = s.begin();
-  out += "GEOMETRIC_SET('',";
-  references(s, items);
-  out += ");\n";
   const std::size_t origin = s.begin();
   out += "CARTESIAN_POINT('',(0.,0.,0.));\n";
   const std::size_t z = s.begin();
@@ -363,22 +511,54 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   out += ',';
   s.ref(x);
   out += ");\n";
-  const std::size_t representation = s.begin();
-  out += "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION(";
-  s.string(header.name);
-  out += ",(";
-  s.ref(set);
-  out += ',';
-  s.ref(placement);
-  out += "),";
-  s.ref(context);
-  out += ");\n";
-  s.begin();
-  out += "SHAPE_DEFINITION_REPRESENTATION(";
-  s.ref(shape);
-  out += ',';
-  s.ref(representation);
-  out += ");\nENDSEC;\nEND-ISO-10303-21;\n";
+  // A representation of `items` (and the placement) for the product's shape.
+  auto representation = [&](std::string_view type, const std::vector<std::size_t>& parts) {
+    const std::size_t id = s.begin();
+    out += type;
+    out += '(';
+    s.string(header.name);
+    out += ",(";
+    for (std::size_t part : parts) {
+      s.ref(part);
+      out += ',';
+    }
+    s.ref(placement);
+    out += "),";
+    s.ref(context);
+    out += ");\n";
+    s.begin();
+    out += "SHAPE_DEFINITION_REPRESENTATION(";
+    s.ref(shape);
+    out += ',';
+    s.ref(id);
+    out += ");\n";
+  };
+  if (faces.empty()) {
+    const std::size_t set = s.begin();
+    out += "GEOMETRIC_SET('surface',";
+    references(s, items);
+    out += ");\n";
+    representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {set});
+  } else {
+    const std::size_t shell = s.begin();
+    out += "OPEN_SHELL('surface',";
+    references(s, faces);
+    out += ");\n";
+    const std::size_t model = s.begin();
+    out += "SHELL_BASED_SURFACE_MODEL('surface',(";
+    s.ref(shell);
+    out += "));\n";
+    representation("MANIFOLD_SURFACE_SHAPE_REPRESENTATION", {model});
+  }
+  // The input curves apart, named, so that a CAD system keeps them as a group of their own.
+  if (!curve_items.empty()) {
+    const std::size_t curve_set = s.begin();
+    out += "GEOMETRIC_CURVE_SET('input curves',";
+    references(s, curve_items);
+    out += ");\n";
+    representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {curve_set});
+  }
+  out += "ENDSEC;\nEND-ISO-10303-21;\n";
   s.flush();
 }
 

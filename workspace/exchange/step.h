@@ -12,14 +12,15 @@
 
 namespace igds {
 
-// Surfaces (named PATCH k, or SURFACE) and curves (CURVE i, STRINGER j) with the parameters,
-// knots and controls of write_iges; every control point of the net is one CARTESIAN_POINT that
-// neighbouring patches share. Units millimetres, uncertainty 1e-9 of the largest coordinate.
+// The surface (named SURFACE, or PATCH k) in a GEOMETRIC_SET and the curves (CURVE i, STRINGER j)
+// in a GEOMETRIC_CURVE_SET named 'input curves', with the parameters, knots and controls of
+// write_iges; every control point of the net is one CARTESIAN_POINT that neighbouring patches
+// share. Units the header's, uncertainty cad_resolution (none with no unit: it needs one).
 // Throws DataError as write_iges does (but for the line limit: STEP has none).
 std::string write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                       SurfaceForm form = SurfaceForm::patches);
+                       SurfaceForm form = SurfaceForm::one);
 // The same into `text`, made while it is written (the file may be hundreds of megabytes).
 void write_step(const SurfaceInput& input, const Array& patches, const CadHeader& header,
-                TextOut& text, SurfaceForm form = SurfaceForm::patches);
+                TextOut& text, SurfaceForm form = SurfaceForm::one);
 
 }  // namespace igds

@@ -70,4 +70,57 @@ struct CubicBspline {
 std::optional<CubicBspline> input_curve_bspline(const BezierNet& net, std::size_t i);
 std::optional<CubicBspline> input_stringer_bspline(const BezierNet& net, std::size_t j);
 
+// The patches as faces of one shell (EXPORT's FACES, docs/exchange.md): a vertex at every node of
+// the input grid, an edge along every patch border (the border's four controls, a Bézier curve),
+// each patch a face bounded by its four edges, neighbours sharing theirs, so that the shell is
+// sewn as written. An edge whose four controls are one point (along a pole) is left out of its
+// faces' loops, and the nodes it joins are one vertex. Edges are numbered along the curves first
+// (curve i, from node j: i * (NOSTR-1) + j), then along the stringers (stringer j from node i:
+// NOCUR * (NOSTR-1) + i * NOSTR + j).
+class PatchShell {
+ public:
+  PatchShell(const BezierNet& net, std::size_t nc, std::size_t ns) : net_(net), nc_(nc), ns_(ns) {
+    vertex_.resize(nc * ns);
+    for (std::size_t i = 0; i < nc; ++i)
+      for (std::size_t j = 0; j < ns; ++j) {
+        std::size_t v = i * ns + j;
+        if (j > 0 && degenerate(true, i, j - 1))
+          v = vertex_[i * ns + j - 1];
+        else if (i > 0 && degenerate(false, i - 1, j))
+          v = vertex_[(i - 1) * ns + j];
+        vertex_[i * ns + j] = v;
+      }
+  }
+  std::size_t along_count() const { return nc_ * (ns_ - 1); }   // edges along the curves
+  std::size_t across_count() const { return (nc_ - 1) * ns_; }  // edges along the stringers
+  // Edge (i, j) along curve i from node j (along), or along stringer j from node i: its controls
+  // are all one point.
+  bool degenerate(bool along, std::size_t i, std::size_t j) const {
+    const double* first = control(along, i, j, 0);
+    for (int k = 1; k < 4; ++k) {
+      const double* p = control(along, i, j, k);
+      if (p[0] != first[0] || p[1] != first[1] || p[2] != first[2]) return false;
+    }
+    return true;
+  }
+  // The net index of control k (0..3) of an edge.
+  std::size_t control_index(bool along, std::size_t i, std::size_t j, int k) const {
+    return along ? 3 * i * net_.cols + 3 * j + std::size_t(k)
+                 : (3 * i + std::size_t(k)) * net_.cols + 3 * j;
+  }
+  std::size_t edge(bool along, std::size_t i, std::size_t j) const {
+    return along ? i * (ns_ - 1) + j : along_count() + i * ns_ + j;
+  }
+  // The vertex (a node number, row by row) that stands for node (i, j).
+  std::size_t vertex(std::size_t i, std::size_t j) const { return vertex_[i * ns_ + j]; }
+
+ private:
+  const double* control(bool along, std::size_t i, std::size_t j, int k) const {
+    return &net_.xyz[3 * control_index(along, i, j, k)];
+  }
+  const BezierNet& net_;
+  std::size_t nc_, ns_;
+  std::vector<std::size_t> vertex_;
+};
+
 }  // namespace igds
