@@ -123,11 +123,11 @@ extern const Command display_command{
     .name = "DISPLAY",
     .options = options,
     .follows = {},
-    .option_prompt = {"FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE OR HIDDEN?",
-                      "INPUT or SURFACE: project the current surface; FIRST, SECOND or FILE: "
-                      "show an image kept by STORE; PICTURE: project a DUCT picture file; "
-                      "HIDDEN: the surface without the lines it hides.",
-                      options},
+    .option_prompt =
+        {"FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE OR HIDDEN?",
+         "INPUT or SURFACE: project the current surface, HIDDEN without what it hides; "
+         "FIRST, SECOND or FILE: a kept image; PICTURE: a DUCT picture file.",
+         options},
     .bad_option = reports::incorrect_parameter,  // the manual's 4.4
     .summary = "projects and draws the input, the surface or a DUCT picture, or a kept image",
     .long_help =
