@@ -318,6 +318,10 @@ void add_visible(Drawing2& drawing, const Image& image, const Grid& g, const Box
                std::max(shown.y1, p.y)};
     }
     if (!(shown.x0 <= shown.x1)) return;
+    // The grid's corners, as points that draw nothing: the picture keeps the whole surface's
+    // scale and place, whatever is hidden.
+    add_polyline(drawing, {{shown.x0, shown.y0}}, {});
+    add_polyline(drawing, {{shown.x1, shown.y1}}, {});
   }
   const double side = std::max(shown.x1 - shown.x0, shown.y1 - shown.y0);
   const SeenGrid seen{g.planes, g.rows, g.data, image.nearness.data()};
