@@ -272,11 +272,11 @@ TEST_CASE("hidden lines: the kernel's pieces agree with a z-buffer four times fi
   const std::pair<std::string, Vec3 (*)(double, double)> surfaces[] = {
       {"saddle", saddle}, {"folded", folded}, {"wave", wave}};
   std::size_t hidden = 0;
-  for (const auto& [name, f] : surfaces)
+  for (const auto& surface : surfaces)
     for (const View& view : views) {
-      CAPTURE(name);
+      CAPTURE(surface.first);
       CAPTURE(static_cast<int>(view.projection));
-      const Seen s = seen(41, 37, f, view);
+      const Seen s = seen(41, 37, surface.second, view);
       hidden += compare(s, 256);
     }
   CHECK(hidden > 100000);
