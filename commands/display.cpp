@@ -15,7 +15,7 @@ namespace igds {
 
 namespace {
 
-enum Option { first, second, file, input, surface, picture };
+enum Option { first, second, file, input, surface, picture, hidden };
 
 constexpr Choice options[] = {
     {"FIRST", first, {}, "the copy kept by STORE FIRST"},
@@ -25,6 +25,8 @@ constexpr Choice options[] = {
     {"SURFACE", surface, "[projection [parameters]]", "the whole interpolated grid"},
     {"PICTURE", picture, "[name [projection [parameters]]]",
      "the DUCT picture NAME.DUCTPIC, projected like a surface"},
+    {"HIDDEN", hidden, "[projection [parameters]]",
+     "the interpolated grid without the lines the surface hides"},
 };
 
 const Prompt file_prompt{"FILE NAME?",
@@ -90,6 +92,10 @@ void run_display(Context& ctx, const Choice* option) {
     case picture:
       show(ctx, std::make_shared<const Image>(ask_picture(ctx)));
       return;
+    case hidden:
+      if (!ws.has_surface()) throw Report(reports::surface_not_found);
+      show(ctx, std::make_shared<const Image>(ask_image(ctx, hidden_surface_image)));
+      return;
   }
 }
 
@@ -109,14 +115,19 @@ std::string_view image_kind_word(int what) {
                      : "IMAGE";
 }
 
+std::string_view hidden_word() {
+  return options[hidden].word;
+}
+
 extern const Command display_command{
     .name = "DISPLAY",
     .options = options,
     .follows = {},
-    .option_prompt = {"FIRST, SECOND, FILE, INPUT, SURFACE OR PICTURE?",
-                      "INPUT or SURFACE: project the current surface; FIRST, SECOND or FILE: "
-                      "show an image kept by STORE; PICTURE: project a DUCT picture file.",
-                      options},
+    .option_prompt =
+        {"FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE OR HIDDEN?",
+         "INPUT or SURFACE: project the current surface, HIDDEN without what it hides; "
+         "FIRST, SECOND or FILE: a kept image; PICTURE: a DUCT picture file.",
+         options},
     .bad_option = reports::incorrect_parameter,  // the manual's 4.4
     .summary = "projects and draws the input, the surface or a DUCT picture, or a kept image",
     .long_help =
@@ -138,6 +149,9 @@ extern const Command display_command{
         "conic arcs, Bezier spans, marks and texts, dashes and colours as the device draws them. "
         "A damaged picture gets FILE DAMAGED with the line and what is wrong; the current image "
         "is kept.\n"
+        "  DISPLAY HIDDEN [projection [parameters]]  the surface as DISPLAY SURFACE draws it, "
+        "without the parts of its curves and stringers that the surface itself hides, found to "
+        "the device's resolution; PLOT, EXPORT, STORE, ZOOM, UNDO and REDO keep them hidden.\n"
         "\n"
         "Projections and their parameters (what is not on the line is asked):\n"
         "  CONIC x y z         perspective from the view point x y z towards the centre of the "
@@ -155,6 +169,7 @@ extern const Command display_command{
         "  DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"
         "  D I C 100 -50 80        (DISPLAY INPUT CONIC, view point 100 -50 80)\n"
         "  D SU O XY\n"
+        "  D H ASSONOMETRIC 110 130 120   (the same surface, hidden lines removed)\n"
         "  DISPLAY PICTURE HULL ORTHOGONAL XY",
     .questions = questions,
     .run = run_display,

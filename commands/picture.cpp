@@ -15,6 +15,7 @@
 #include "commands/view.h"
 #include "devices/layout.h"
 #include "devices/render.h"
+#include "workspace/kernels/hidden.h"
 #include "workspace/numbers/typed.h"
 
 namespace igds {
@@ -302,6 +303,54 @@ void add_point_numbers(Drawing2& drawing, const Grid& g, const Box* window) {
     }
 }
 
+// The visible parts of the curves and stringers of a hidden-line image (docs/decisions.md,
+// "Hidden lines"), decided on a raster of hidden_line_cells across what is shown.
+void add_visible(Drawing2& drawing, const Image& image, const Grid& g, const Box* window) {
+  Box shown{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  if (window) {
+    shown = *window;
+  } else {
+    for (std::size_t k = 0; k < g.planes * g.rows; ++k) {
+      const Point2 p{g.data[2 * k], g.data[2 * k + 1]};
+      if (!finite(p)) continue;
+      shown = {std::min(shown.x0, p.x), std::min(shown.y0, p.y), std::max(shown.x1, p.x),
+               std::max(shown.y1, p.y)};
+    }
+    if (!(shown.x0 <= shown.x1)) return;
+    // The grid's corners, as points that draw nothing: the picture keeps the whole surface's
+    // scale and place, whatever is hidden.
+    add_polyline(drawing, {{shown.x0, shown.y0}}, {});
+    add_polyline(drawing, {{shown.x1, shown.y1}}, {});
+  }
+  const double side = std::max(shown.x1 - shown.x0, shown.y1 - shown.y0);
+  const SeenGrid seen{g.planes, g.rows, g.data, image.nearness.data()};
+  const auto pieces =
+      visible_pieces(seen, {shown.x0, shown.y0, shown.x1, shown.y1, side / hidden_line_cells});
+  std::vector<Point2> line;
+  for (const VisiblePiece& piece : pieces) {
+    const bool curve = piece.line < g.planes;
+    const std::size_t fixed = curve ? piece.line : piece.line - g.planes;
+    auto at = [&](std::size_t k) { return curve ? g.at(fixed, k) : g.at(k, fixed); };
+    // The point at parameter t: point k of the line, or between two in proportion.
+    auto point = [&](double t) {
+      const auto k = static_cast<std::size_t>(t);
+      const double f = t - double(k);
+      if (f == 0) return at(k);
+      const Point2 a = at(k), b = at(k + 1);
+      return Point2{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)};
+    };
+    line.clear();
+    line.push_back(point(piece.from));
+    for (auto k = static_cast<std::size_t>(std::floor(piece.from)) + 1; double(k) < piece.to; ++k)
+      line.push_back(at(k));
+    line.push_back(point(piece.to));
+    const Identity id = curve ? Identity{Role::curve, static_cast<int>(fixed + 1)}
+                              : Identity{Role::stringer, static_cast<int>(fixed + 1)};
+    add_line(drawing, line, id, window);
+  }
+}
+
 std::string fitted(std::string_view text, std::size_t width) {
   std::string line(text);
   if (line.size() > width) line.resize(width);
@@ -352,6 +401,7 @@ std::string image_line(const Image& image) {
 std::vector<std::string> describe(const Description& desim, std::size_t width) {
   std::vector<std::string> lines;
   lines.push_back(fitted(image_kind_word(desim.what), width));
+  if (desim.hidden) lines.push_back(fitted(hidden_word(), width));
   lines.push_back(fitted(projection_word(desim.projection), width));
   const auto& p = desim.parameters;
   std::vector<std::string> items;
@@ -401,7 +451,8 @@ std::string describe_line(const Description& d) {
       projection += fmt::format(" {}", plane_word(p[0]));
       break;
   }
-  return fmt::format("IMAGE: {}, {}", image_kind_word(d.what), projection);
+  return fmt::format("IMAGE: {}{}{}, {}", image_kind_word(d.what), d.hidden ? " " : "",
+                     d.hidden ? hidden_word() : "", projection);
 }
 
 namespace {
@@ -455,6 +506,10 @@ Picture picture_of(std::shared_ptr<const Image> image) {
           d.add_mark(g.at(c, r), MarkShape::square, point_mark, {},
                      {Role::point, static_cast<int>(c * g.rows + r + 1)});
     add_point_numbers(d, g, window);
+    return pic;
+  }
+  if (image->desim.hidden && image->nearness.size() == g.planes * g.rows) {
+    add_visible(d, *image, g, window);
     return pic;
   }
   if (window) {

@@ -23,12 +23,13 @@ namespace igds {
 // square marks, then their numbers as texts (Role::label, index k) beside them. DISPLAY SURFACE:
 // one polyline per curve, then one per stringer, reading the image's own points (not copied).
 // An IMAGE of a shape other than planes x rows x 2 gives no lines (never a crash); non-finite
-// points break a line. DISPLAY PICTURE (desim.what == 2): the picture's projected drawing with
-// its colours and dashes; the description adds the picture's name after PICTURE, and COLOURS and
-// the colours used when there are several (the 4013 draws them alike). A zoomed image
-// (Image::window): only what lies inside the window, lines cut at its edges, and the window's
-// corners as two one-point polylines (they draw nothing) so that the window is what gets scaled
-// to the screen.
+// points break a line. DISPLAY HIDDEN (desim.hidden): the visible pieces of the curves, then of
+// the stringers (workspace/kernels/hidden.h), each a polyline. DISPLAY PICTURE (desim.what == 2):
+// the picture's projected drawing with its colours and dashes; the description adds the picture's
+// name after PICTURE, and COLOURS and the colours used when there are several (the 4013 draws them
+// alike). A zoomed image (Image::window): only what lies inside the window, lines cut at its edges,
+// and the window's corners as two one-point polylines (they draw nothing) so that the window is
+// what gets scaled to the screen.
 Picture picture_of(std::shared_ptr<const Image> image);
 Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);
@@ -63,6 +64,10 @@ inline constexpr double arrow_fraction = 0.25;
 // More input points than this in a picture leave no room for their numbers (the square holds
 // about 800 character cells): DISPLAY INPUT writes none, ZOOM shows them.
 inline constexpr std::size_t max_numbered_points = 4096;
+
+// A hidden-line image's raster: cells across what is shown (docs/decisions.md, "Hidden lines"):
+// the picture's square on a 4014 (12-bit addresses), a 4013 point's quarter.
+inline constexpr double hidden_line_cells = 4 * 768;
 
 // An input point's mark: a square of this half side, in 4013 points.
 inline constexpr double point_mark = 3;

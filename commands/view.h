@@ -25,6 +25,8 @@ std::span<const Choice> plane_choices();
 std::string_view projection_word(Projection projection);
 std::string_view plane_word(double code);
 std::string_view image_kind_word(int what);
+// HIDDEN, the word of DISPLAY HIDDEN, which a hidden-line image's description adds.
+std::string_view hidden_word();
 
 // The parameters of `projection` from the words typed. Throws ParameterError saying what is
 // wrong (wrong count, not numbers, out of range).

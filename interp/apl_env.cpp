@@ -363,6 +363,9 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
       Image image = slot ? *slot : Image{};
       image.drawn_from = 0;
       image.file.clear();
+      // Nor can igds tell what of it is hidden: it is drawn whole.
+      image.desim.hidden = false;
+      image.nearness = Array();
       if (info.kept == Kept::image_view) {
         image.desim = apl_args::description_of(a.ravel);
       } else {

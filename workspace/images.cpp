@@ -8,6 +8,7 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/hidden.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds {
@@ -101,7 +102,9 @@ Image input_image(const Workspace& ws, const View& view) {
   return image;
 }
 
-Image surface_image(const Workspace& ws, const View& view) {
+namespace {
+
+Image grid_image(const Workspace& ws, const View& view, bool hidden) {
   if (ws.intpn.rank() != 3) {
     DataError e(DataError::Problem::missing);
     e.variable = "INTPN";
@@ -110,12 +113,27 @@ Image surface_image(const Workspace& ws, const View& view) {
   auto points = as_vec3(ws.intpn);
   check_view_point(view, points);
   Image image;
-  image.desim = {1, view.projection, view.parameters};
-  image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view,
-                           bounding_box_centre(as_vec3(ws.inppn)));
+  image.desim = {1, view.projection, view.parameters, hidden};
+  const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
+  image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view, centre);
   check_projected(image.points, "INTPN", ws.intpn.shape[1]);
+  if (hidden) {
+    // Finite wherever the projection is (a CONIC point is in front of the eye).
+    image.nearness = Array({ws.intpn.shape[0], ws.intpn.shape[1]});
+    nearness(view, centre, points, std::span<double>(image.nearness.data(), image.nearness.size()));
+  }
   image.drawn_from = recipe_of(ws, true);
   return image;
+}
+
+}  // namespace
+
+Image surface_image(const Workspace& ws, const View& view) {
+  return grid_image(ws, view, false);
+}
+
+Image hidden_surface_image(const Workspace& ws, const View& view) {
+  return grid_image(ws, view, true);
 }
 
 Image picture_image(std::string name, std::string text, const View& view) {
@@ -153,7 +171,8 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 
 Image image_of(const Workspace& ws, const Description& desim) {
   const View view{desim.projection, desim.parameters};
-  return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
+  if (desim.what == 0) return input_image(ws, view);
+  return desim.hidden ? hidden_surface_image(ws, view) : surface_image(ws, view);
 }
 
 namespace {

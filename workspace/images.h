@@ -15,10 +15,12 @@
 namespace igds {
 
 // DISPLAY INPUT: INPPN projected (NOCUR x NOSTR x 2) and an arrow for every non-zero border
-// tangent (Image::arrows). DISPLAY SURFACE: INTPN projected. Both throw DataError
+// tangent (Image::arrows). DISPLAY SURFACE: INTPN projected; DISPLAY HIDDEN's
+// adds how near each point is to the eye (Image::nearness). Both throw DataError
 // (view_inside_box for a view point inside the points' bounding box, behind_eye, ...).
 Image input_image(const Workspace& ws, const View& view);
 Image surface_image(const Workspace& ws, const View& view);
+Image hidden_surface_image(const Workspace& ws, const View& view);
 
 // DISPLAY PICTURE: the DUCT picture `text` of NAME.DUCTPIC drawn in space (duct_drawing of
 // workspace/exchange/duct.h) and seen as `view` says, CONIC towards the centre of the picture's

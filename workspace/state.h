@@ -24,6 +24,9 @@ struct Description {
   int what = 0;  // DESIM[1]: 0 input points, 1 surface, 2 a DUCT picture (DISPLAY PICTURE)
   Projection projection = Projection::orthogonal;  // DESIM[2]
   std::array<double, 3> parameters{};  // DESIM[3 4 5]: view point, angles, axis+angle, plane
+  // DISPLAY HIDDEN: a surface image drawn without what the surface hides. Not one of
+  // DESIM's five numbers (the manual has no such image); kept beside them (docs/disk.md).
+  bool hidden = false;
   friend bool operator==(const Description&, const Description&) = default;
 };
 
@@ -64,15 +67,20 @@ struct Image {
   std::optional<std::array<double, 4>> window;
   // An input image of a surface whose border tangents were set by AUTO: its description says so.
   bool auto_tangents = false;
-  // The memory its points and arrows hold.
-  std::size_t bytes() const { return (points.size() + arrows.size()) * sizeof(double); }
+  // A hidden-line image (desim.hidden): how near each point of `points` is to the eye, planes x
+  // rows (workspace/kernels/hidden.h), from which the picture finds what the surface hides.
+  Array nearness;
+  // The memory its points, arrows and nearness hold.
+  std::size_t bytes() const {
+    return (points.size() + arrows.size() + nearness.size()) * sizeof(double);
+  }
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
     const bool same_picture =
         a.picture == b.picture || (a.picture && b.picture && a.picture->name == b.picture->name &&
                                    a.picture->text == b.picture->text);
     return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows && same_picture &&
-           a.window == b.window;
+           a.window == b.window && a.nearness == b.nearness;
   }
 };
 

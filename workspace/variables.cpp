@@ -220,6 +220,10 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
         view, fmt::format("{}[1] IS 2 BUT THE IMAGE IS NOT A DUCT PICTURE", info(view).name)};
   if (d.what != 0 && d.what != 1 && d.what != 2)
     return VariableProblem{view, fmt::format("{}[1] IS NOT 0, 1 OR 2", info(view).name)};
+  if (d.hidden && d.what != 1)
+    return VariableProblem{view, fmt::format("{} IS NOT A SURFACE: ITS HIDDEN LINES CANNOT BE "
+                                             "REMOVED",
+                                             info(points).name)};
   // A picture image is its drawing, made from its text as its DESIM says: neither is assigned.
   if (image.picture && (d != image.picture->desim || !image.points.empty()))
     return VariableProblem{points,
@@ -246,6 +250,18 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
     return VariableProblem{points, fmt::format("THE ARROWS OF {} ARE {}, NOT K BY 6",
                                                info(points).name, shape_words(a))};
   if (auto q = finite_problem(points, image.points)) return q;
+  // A hidden-line image made now has no points yet (a recipe); one read has one nearness each.
+  const auto& n = image.nearness.shape;
+  const bool nearness_fits = image.desim.hidden
+                                 ? (s.empty() && n.empty()) ||
+                                       (n.size() == 2 && !s.empty() && n[0] == s[0] && n[1] == s[1])
+                                 : n.empty();
+  if (!nearness_fits)
+    return VariableProblem{points, fmt::format("THE DEPTHS OF {} ARE {}, NOT ONE FOR EACH POINT",
+                                               info(points).name, shape_words(n))};
+  if (first_not_finite(image.nearness.data(), image.nearness.size()) < image.nearness.size())
+    return VariableProblem{points,
+                           fmt::format("A DEPTH OF {} IS NOT A FINITE NUMBER", info(points).name)};
   if (const std::size_t k = first_not_finite(image.arrows.data(), image.arrows.size());
       k < image.arrows.size())
     return VariableProblem{points, fmt::format("ARROW {} OF {} IS NOT A FINITE NUMBER",

@@ -1,5 +1,5 @@
 // Speed of the surface kernels: interpolation of a large grid against the machine's memcpy rate,
-// one long spline, and the CHANGE GRID recompute.
+// one long spline, the CHANGE GRID recompute, and the hidden lines of a large grid.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -11,6 +11,8 @@
 
 #include "tests/bench/bench.h"
 #include "tests/bench/inputs.h"
+#include "workspace/kernels/hidden.h"
+#include "workspace/kernels/project.h"
 #include "workspace/kernels/spline.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
@@ -76,4 +78,41 @@ IGDS_BENCH("recompute") {
   const igds::SurfaceInput si{in.nocur, in.nostr, 10, 10, &in.inppn, &in.inptg};
   double seconds = igds::bench::best_seconds(10, [&] { igds::refit(si, s.patches); });
   fmt::print("recompute_100x100_int10_ms {:.2f}\n", seconds * 1e3);
+}
+
+IGDS_BENCH("hidden") {
+  // DISPLAY HIDDEN's own work on a surface of 1 M and of 4 M interpolated points: how near each
+  // point is, then the visible pieces on the raster the picture uses (3072 cells across), in an
+  // assonometric view where the wave's crests hide part of its troughs. The growth from 1 M to
+  // 4 M points says the cost is linear in the segments (4 when it is).
+  double at_1m = 0;
+  for (const auto& [nocur, points_key] : {std::pair{251, "1m"}, std::pair{500, "4m"}}) {
+    const Input in = wavy(nocur, nocur);
+    const igds::Surface s = igds::interpolate({in.nocur, in.nostr, 3, 3, &in.inppn, &in.inptg});
+    const std::size_t planes = s.intpn.shape[0], rows = s.intpn.shape[1];
+    const auto points = igds::as_vec3(s.intpn);
+    const igds::View view{igds::Projection::assonometric, {110, 130, 120}};
+    const igds::Vec3 centre = igds::bounding_box_centre(igds::as_vec3(in.inppn));
+    std::vector<double> xy(2 * points.size()), near(points.size());
+    igds::project(view, centre, points, igds::MutablePoint2View(xy.data(), points.size()));
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      x0 = std::min(x0, xy[2 * k]), x1 = std::max(x1, xy[2 * k]);
+      y0 = std::min(y0, xy[2 * k + 1]), y1 = std::max(y1, xy[2 * k + 1]);
+    }
+    const igds::Raster raster{x0, y0, x1, y1, std::max(x1 - x0, y1 - y0) / 3072};
+    std::size_t pieces = 0;
+    const double seconds = igds::bench::best_seconds(3, [&] {
+      igds::nearness(view, centre, points, near);
+      pieces = igds::visible_pieces({planes, rows, xy.data(), near.data()}, raster).size();
+    });
+    fmt::print("hidden_lines_{}_points {}\n", points_key, points.size());
+    fmt::print("hidden_lines_{}_pieces {}\n", points_key, pieces);
+    fmt::print("hidden_lines_{}_ms {:.1f}\n", points_key, seconds * 1e3);
+    if (at_1m == 0)
+      at_1m = seconds / double(points.size());
+    else
+      fmt::print("hidden_lines_4m_over_1m_per_point {:.2f}\n",
+                 seconds / double(points.size()) / at_1m);
+  }
 }

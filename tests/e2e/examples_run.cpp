@@ -11,6 +11,7 @@
 #include <regex>
 #include <sstream>
 
+#include "devices/layout.h"
 #include "tests/e2e/examples_support.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
@@ -139,13 +140,13 @@ TEST_CASE("the 4013 decoder reads shortened 10-bit and 12-bit addresses, text an
   CHECK(decode_tek("\x1d#d#D\x01").errors.size() == 1);
 }
 
-TEST_CASE("the seven examples are there, each with a picture page in its header") {
+TEST_CASE("the eight examples are there, each with a picture page in its header") {
   auto list = examples();
   std::vector<std::string> names;
   for (const auto& e : list) names.push_back(e.name);
   CHECK(names == std::vector<std::string>{"abbreviations", "fig3-tangents", "fig6-multipatch",
-                                          "fig7-9-projections", "hull", "marks-sphere",
-                                          "quasi-sphere"});
+                                          "fig7-9-projections", "hidden-lines", "hull",
+                                          "marks-sphere", "quasi-sphere"});
   for (const auto& e : list) {
     CAPTURE(e.name);
     CHECK(e.picture_page >= 0);
@@ -290,6 +291,42 @@ TEST_CASE("fig6-multipatch: 3 x 4 patches that follow the wave") {
     worst = std::max(worst, std::abs(z - wave));
   }
   CHECK(worst < 0.1);  // within 1.25 % of the wave's height of 8
+}
+
+TEST_CASE("hidden-lines: DISPLAY HIDDEN draws a part of what DISPLAY SURFACE draws") {
+  const Example& e = example_named("hidden-lines");
+  TempDir disk;
+  auto r = run_igds({"--disk", disk.path().string(), "--term", "tek", e.file.string()});
+  REQUIRE(r.status == 0);
+  const auto drawing = decode_tek(r.out);
+  REQUIRE(drawing.pages.size() == 4);
+  // Page 1: every curve and stringer; page 3 (the README's): the same view, hidden lines removed.
+  const auto& all = drawing.pages[1].segments;
+  const auto& seen = drawing.pages[3].segments;
+  auto ink = [](const std::vector<TekSegment>& segments) {
+    double sum = 0;
+    for (const auto& s : segments) sum += std::hypot(s.b.x - s.a.x, s.b.y - s.a.y);
+    return sum;
+  };
+  CHECK(ink(seen) < 0.9 * ink(all));
+  CHECK(ink(seen) > 0.5 * ink(all));
+  // Every end of a segment drawn in the picture's square (not a stroke of a character: the 4013
+  // has no high minus) lies on a segment of the whole surface, within a 4013 point.
+  const Box square = dialogue_layout().image;
+  std::size_t looked = 0;
+  for (const auto& s : seen) {
+    auto inside = [&](TekPoint p) {
+      return p.x >= square.x0 && p.x <= square.x1 && p.y >= square.y0 && p.y <= square.y1;
+    };
+    if (!inside(s.a) || !inside(s.b)) continue;
+    ++looked;
+    for (const TekPoint p : {s.a, s.b}) {
+      double nearest = 1e9;
+      for (const auto& t : all) nearest = std::min(nearest, distance(p, t));
+      CHECK(nearest <= 1.0);
+    }
+  }
+  CHECK(looked > 100);
 }
 
 TEST_CASE("quasi-sphere: every interpolated point lies near the sphere of radius 100") {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -18,6 +19,7 @@
 #include "workspace/disk/files.h"
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
+#include "workspace/images.h"
 
 using namespace igds;
 namespace fs = std::filesystem;
@@ -196,6 +198,41 @@ TEST_CASE("STORE FILE then DISPLAY FILE gives the image back bit for bit") {
   store_image(s.disk, "EMPTY", empty);
   CHECK(load_image(s.disk, "EMPTY") == empty);
   CHECK(files_in(s.dir.path()) == std::set<std::string>{"PIC.IGDSIMAG", "EMPTY.IGDSIMAG"});
+}
+
+TEST_CASE("a hidden-line image kept by STORE FILE comes back with its depths, and says so") {
+  Scratch s;
+  const Workspace ws = test::make_interpolated(5, 6, 2, 2);
+  const Image image = image_of(ws, {1, Projection::conic, {90, -70, 60}, true});
+  REQUIRE(image.nearness.shape == std::vector<std::size_t>{ws.intpn.shape[0], ws.intpn.shape[1]});
+  store_image(s.disk, "PIC", image);
+  const Image back = load_image(s.disk, "PIC");
+  CHECK(back.desim.hidden);
+  CHECK(back == image);
+  // A forged file: the flag on an input image, or depths that do not fit its points.
+  auto forged = [&](int what, const Array& points, const Array& depths) {
+    disk::Writer w;
+    w.i32(what | 0x100);
+    w.i32(2);
+    for (double p : {110.0, 130.0, 120.0}) w.f64(p);
+    w.array(points);
+    w.array(Array{});
+    w.array(depths);
+    test::rewrite_file(s.disk.path("PIC", "IGDSIMAG"), disk::frame("IGDSIMAG", w.str()));
+    return report_of([&] { load_image(s.disk, "PIC"); });
+  };
+  CHECK(forged(0, Array({2, 2, 2}), Array({2, 2})) ==
+        "FILE DAMAGED: PIC.IGDSIMAG (FORMAT: IMAGE IS NOT A SURFACE: ITS HIDDEN LINES CANNOT BE "
+        "REMOVED); CURRENT IMAGE KEPT");
+  CHECK(forged(1, Array({2, 2, 2}), Array({2, 3})) ==
+        "FILE DAMAGED: PIC.IGDSIMAG (FORMAT: THE DEPTHS OF IMAGE ARE 2 BY 3, NOT ONE FOR EACH "
+        "POINT); CURRENT IMAGE KEPT");
+  Array nan({2, 2});
+  nan.ravel[3] = std::numeric_limits<double>::quiet_NaN();
+  CHECK(forged(1, Array({2, 2, 2}), nan) ==
+        "FILE DAMAGED: PIC.IGDSIMAG (FORMAT: A DEPTH OF IMAGE IS NOT A FINITE NUMBER); CURRENT "
+        "IMAGE KEPT");
+  CHECK(forged(1, Array({2, 2, 2}), Array({2, 2})) == "(no report)");
 }
 
 TEST_CASE("a damaged IGDSIMAG is refused with the current image kept") {

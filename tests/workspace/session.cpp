@@ -712,6 +712,38 @@ TEST_CASE("images kept by recipe are made when first looked at, not at start") {
   session.save(back);
 }
 
+TEST_CASE("a hidden-line image is kept by its recipe, and made again the same") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  ws.image = std::make_shared<const Image>(
+      image_of(ws, {1, Projection::assonometric, {110, 130, 120}, true}));
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  auto table =
+      disk::decode_session(disk::unframe("IGDSCONT", test::read_file(s.session())).payload);
+  REQUIRE(table.images[0].kind == disk::ImageEntry::recipe);
+  CHECK(table.images[0].desim.hidden);
+  {
+    Session session(s.disk);
+    Workspace back = session.load();
+    CHECK(!back.image.made());
+    CHECK(back.image->desim.hidden);
+    CHECK(*back.image == *ws.image);
+  }
+  // A forged recipe: an input image said to be drawn without its hidden lines.
+  table.images[0].desim = {0, Projection::assonometric, {110, 130, 120}, true};
+  test::rewrite_file(s.session(), disk::frame("IGDSCONT", disk::encode_session(table), 2));
+  std::vector<std::string> notices;
+  const Workspace back = load_fresh(s.disk, &notices);
+  CHECK(!back.image);
+  CHECK(notices == std::vector<std::string>{
+                       "IMAGE IN BINSAVE.IGDSCONT DAMAGED (IMAGE: IMAGE IS NOT A SURFACE: ITS "
+                       "HIDDEN LINES CANNOT BE REMOVED): IMAGE STARTS EMPTY"});
+}
+
 TEST_CASE("an image kept by a recipe that cannot be made: nothing said at start, a look says why") {
   Scratch s;
   {

@@ -165,8 +165,12 @@ void Writer::array(const Array& a) {
   }
 }
 
+// DESIM[1] with this bit added: a hidden-line image (Description::hidden), which no earlier
+// igds wrote and an earlier one refuses as a DESIM[1] it does not know.
+constexpr std::int32_t hidden_bit = 0x100;
+
 void Writer::description(const Description& d) {
-  i32(d.what);
+  i32(d.hidden ? d.what | hidden_bit : d.what);
   i32(static_cast<std::int32_t>(d.projection));
   for (double p : d.parameters) f64(p);
 }
@@ -175,6 +179,7 @@ void Writer::image(const Image& image) {
   description(image.desim);
   array(image.points);
   array(image.arrows);
+  if (image.desim.hidden) array(image.nearness);
   // A picture (DESIM[1] = 2, which no earlier igds wrote) adds its name and its DUCT text.
   if (image.desim.what == 2 && image.picture) {
     u64(image.picture->name.size());
@@ -259,6 +264,7 @@ Array Reader::array(std::size_t max_elements) {
 Description Reader::description() {
   Description d;
   d.what = i32();
+  if (d.what >= 0 && (d.what & hidden_bit) != 0) d.what &= ~hidden_bit, d.hidden = true;
   d.projection = static_cast<Projection>(i32());
   for (double& p : d.parameters) p = f64();
   return d;
@@ -269,6 +275,7 @@ Image Reader::image(std::size_t max_elements) {
   image.desim = description();
   image.points = array(max_elements);
   image.arrows = array(max_elements);
+  if (image.desim.hidden) image.nearness = array(max_elements);
   if (image.desim.what == 2) {
     // bytes() refuses a length beyond what is left before anything is allocated.
     std::string name(bytes(static_cast<std::size_t>(u64())));
