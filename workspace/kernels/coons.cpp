@@ -79,17 +79,18 @@ std::size_t coons_patches(int nocur, int nostr, Vec3View points, const GridTange
             {lu0 * tu[k00], lu1 * tu[k01], twist(k00), twist(k01)},
             {lu0 * tu[k10], lu1 * tu[k11], twist(k10), twist(k11)},
         };
-        // x * 0 is 0 for a finite x, NaN for the rest (docs/kernels.md, "Data checks").
-        double seen = 0;
+        // x * 0 is 0 for a finite x, NaN for the rest (docs/kernels.md, "Data checks"), summed
+        // in four independent lanes.
+        double seen[4] = {0, 0, 0, 0};
         for (int r = 0; r < 4; ++r) {
           for (int c = 0; c < 4; ++c) {
             m[0 * 16 + r * 4 + c] = rows[r][c].x;
             m[1 * 16 + r * 4 + c] = rows[r][c].y;
             m[2 * 16 + r * 4 + c] = rows[r][c].z;
-            seen += rows[r][c].x * 0.0 + rows[r][c].y * 0.0 + rows[r][c].z * 0.0;
+            seen[c] += rows[r][c].x * 0.0 + rows[r][c].y * 0.0 + rows[r][c].z * 0.0;
           }
         }
-        if (seen != 0)
+        if (seen[0] + seen[1] + seen[2] + seen[3] != 0)
           keep_least(not_finite, std::size_t(m - patches.data()) + first_not_finite(m, 48));
       }
     }
