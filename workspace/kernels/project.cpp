@@ -100,7 +100,7 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
     constexpr std::size_t block = 512;
     for (std::size_t from = first; from < last; from += block) {
       const std::size_t to = std::min(last, from + block);
-      double seen = 0;
+      double seen_x = 0, seen_y = 0;
       for (std::size_t k = from; k < to; ++k) {
         const Vec3 v = in[k];
         if constexpr (conic) {
@@ -111,9 +111,10 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
         }
         const Point2 p = image(v);
         out[k] = p;
-        seen += p.x * 0.0 + p.y * 0.0;
+        seen_x += p.x * 0.0;
+        seen_y += p.y * 0.0;
       }
-      if (seen != 0 && pass.not_finite == n) {
+      if (seen_x + seen_y != 0 && pass.not_finite == n) {
         for (std::size_t k = from; k < to && pass.not_finite == n; ++k) {
           const Point2 p = out[k];
           if (!std::isfinite(p.x) || !std::isfinite(p.y)) pass.not_finite = k;
@@ -121,9 +122,9 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
       }
     }
   });
+  // Several parts only for many more points than parts: none is empty, each has its box.
   Pass all = found[0];
   for (const Pass& pass : found) {
-    if (&pass - found.data() > 0 && n * (&pass - found.data()) / parts == n) continue;  // no points
     all.not_finite = std::min(all.not_finite, pass.not_finite);
     all.behind = all.behind || pass.behind;
     all.lo = {std::min(all.lo.x, pass.lo.x), std::min(all.lo.y, pass.lo.y),
