@@ -80,8 +80,8 @@ void run_fit(Context& ctx, const Choice*) {
   try {
     const SurfaceInput input{nocur,        nostr,      density.intcu, density.intst,
                              &deck.points, &fit.inptg, true};
-    surface.intpn = refit(input, fit.patches);
-    check_finite(fit.patches, surface.intpn);
+    // PATCHES are checked whole before FIT, INTPN as FIT makes it.
+    if (auto overflow = refit_into(input, fit.patches, surface.intpn)) throw *overflow;
     const std::size_t rows = fit.inptg.size() / 4;
     for (std::size_t r = 0; r < rows; ++r) {
       if (first_not_finite(fit.inptg.data() + 4 * r, 3) == 3) continue;

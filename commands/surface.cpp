@@ -16,11 +16,14 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
     if (lend || refit_only) ws.patches = std::move(surface.patches);
     if (lend) ws.intpn = std::move(surface.intpn);
   };
+  // Inputs near the largest numbers can make a result that is not finite (the kernels find it as
+  // they make it): refused before it is kept, and what it overwrote made again as it was (bit for
+  // bit: the kernels are exact). A refit makes INTPN alone: PATCHES are the workspace's, finite
+  // since they were made.
+  std::optional<DataError> overflow;
   try {
-    if (refit_only)
-      refit_into(input, surface.patches, surface.intpn);
-    else
-      interpolate_into(input, surface);
+    overflow = refit_only ? refit_into(input, surface.patches, surface.intpn)
+                          : interpolate_into(input, surface);
   } catch (const DataError& e) {
     give_back();
     throw worded(e, "THE SURFACE IS NOT CHANGED");
@@ -28,23 +31,18 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
     give_back();
     throw;
   }
-  // Inputs near the largest numbers can make a result that is not finite: refused before it is
-  // kept, and what it overwrote made again as it was (bit for bit: the kernels are exact). A
-  // refit made INTPN alone: PATCHES are the workspace's, finite since they were made.
-  try {
-    static const Array none;
-    check_finite(refit_only ? none : surface.patches, surface.intpn);
-  } catch (const DataError& e) {
+  if (overflow) {
     if (lend) {
       const SurfaceInput before{ws.nocur,  ws.nostr,  ws.intcu,         ws.intst,
                                 &ws.inppn, &ws.inptg, ws.marks_twists()};
+      // The surface kept: finite when it was made.
       if (refit_only)
-        refit_into(before, surface.patches, surface.intpn);
+        (void)refit_into(before, surface.patches, surface.intpn);
       else
-        interpolate_into(before, surface);
+        (void)interpolate_into(before, surface);
     }
     give_back();
-    throw worded(e, "THE SURFACE IS NOT CHANGED");
+    throw worded(*overflow, "THE SURFACE IS NOT CHANGED");
   }
   return surface;
 }

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "workspace/drawing/project.h"
@@ -15,29 +17,25 @@ namespace igds {
 
 namespace {
 
-// The view point of a conic projection must lie outside what is looked at.
-void check_view_point(const View& view, Vec3View points) {
-  if (view.projection != Projection::conic) return;
-  Vec3 v{view.parameters[0], view.parameters[1], view.parameters[2]};
-  if (inside_bounding_box(points, v)) throw DataError(DataError::Problem::view_inside_box);
-}
-
-Array projected(Vec3View points, std::vector<std::size_t> shape, const View& view, Vec3 centre) {
+// The points projected (the view point of a conic projection must lie outside them, workspace/
+// kernels/project.h project_image), and the first whose image is not finite (points.size(): none).
+std::pair<Array, std::size_t> projected(Vec3View points, std::vector<std::size_t> shape,
+                                        const View& view, Vec3 centre) {
   Array out(std::move(shape));
-  project(view, centre, points, as_point2(out));
-  return out;
+  const std::size_t k = project_image(view, centre, points, as_point2(out));
+  return {std::move(out), k};
 }
 
 // A projection of finite points can overflow (coordinates near the largest numbers, a CONIC eye
-// a hair's breadth from a point's plane): the first point of `image` whose image is not finite
-// is refused, named as the array it was projected from counts it (1-based).
-void check_projected(const Array& image, const std::string& variable, std::size_t columns) {
-  const std::size_t k = first_not_finite(image.data(), image.size());
-  if (k == image.size()) return;
+// a hair's breadth from a point's plane): the first point `k` whose image is not finite is
+// refused, named as the array it was projected from counts it (1-based).
+void check_projected(std::size_t k, std::size_t points, const std::string& variable,
+                     std::size_t columns) {
+  if (k == points) return;
   DataError e(DataError::Problem::image_not_finite);
   e.variable = variable;
-  e.number = k / 2 / columns + 1;
-  e.column = k / 2 % columns + 1;
+  e.number = k / columns + 1;
+  e.column = k % columns + 1;
   throw e;
 }
 
@@ -50,11 +48,11 @@ std::uint64_t recipe_of(const Workspace& ws, bool needs_derived) {
 
 Image input_image(const Workspace& ws, const View& view) {
   auto points = as_vec3(ws.inppn);
-  check_view_point(view, points);
   const Vec3 centre = bounding_box_centre(points);
   Image image;
   image.desim = {0, view.projection, view.parameters};
-  image.points =
+  std::size_t not_finite = 0;
+  std::tie(image.points, not_finite) =
       projected(points, {static_cast<std::size_t>(ws.nocur), static_cast<std::size_t>(ws.nostr), 2},
                 view, centre);
 
@@ -85,7 +83,7 @@ Image input_image(const Workspace& ws, const View& view) {
     arrows.insert(arrows.end(), {p[0], p[1], (p[2] - p[0]) / h, (p[3] - p[1]) / h, double(k),
                                  r < curve_rows ? 1.0 : 0.0});
   }
-  check_projected(image.points, "INPPN", 1);
+  check_projected(not_finite, points.size(), "INPPN", 1);
   for (std::size_t a = 0; a < arrows.size(); a += 6) {
     if (first_not_finite(&arrows[a], 4) == 4) continue;
     DataError e(DataError::Problem::image_not_finite);
@@ -111,12 +109,13 @@ Image grid_image(const Workspace& ws, const View& view, bool hidden) {
     throw e;
   }
   auto points = as_vec3(ws.intpn);
-  check_view_point(view, points);
   Image image;
   image.desim = {1, view.projection, view.parameters, hidden};
   const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
-  image.points = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view, centre);
-  check_projected(image.points, "INTPN", ws.intpn.shape[1]);
+  std::size_t not_finite = 0;
+  std::tie(image.points, not_finite) =
+      projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view, centre);
+  check_projected(not_finite, points.size(), "INTPN", ws.intpn.shape[1]);
   if (hidden) {
     // Finite wherever the projection is (a CONIC point is in front of the eye).
     image.nearness = Array({ws.intpn.shape[0], ws.intpn.shape[1]});
@@ -181,8 +180,8 @@ namespace {
 // surface image (and refused when that overflows, as any surface is).
 Image made_from(Workspace from, const Description& desim) {
   if (desim.what != 0) {
-    Surface s = interpolate(surface_input(from));
-    check_finite(s.patches, s.intpn);
+    Surface s;
+    if (auto overflow = interpolate_into(surface_input(from), s)) throw *overflow;
     from.patches = std::move(s.patches);
     from.intpn = std::move(s.intpn);
   }

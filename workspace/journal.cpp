@@ -235,28 +235,42 @@ void Journal::bound() {
 
 void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
   const Settings& to = back ? step.before : step.after;
-  Array inppn = current_.inppn, inptg = current_.inptg;
-  if (!apply_change(step.inppn, inppn, back) || !apply_change(step.inptg, inptg, back))
+  // The inputs of that state: an array the step changed is copied and changed (the current one
+  // stays until the surface is made), one it left is read where it is.
+  const bool new_inppn = !step.inppn.unchanged(), new_inptg = !step.inptg.unchanged();
+  Array inppn = new_inppn ? current_.inppn : Array{}, inptg = new_inptg ? current_.inptg : Array{};
+  if (!apply_change(step.inppn, new_inppn ? inppn : current_.inppn, back) ||
+      !apply_change(step.inptg, new_inptg ? inptg : current_.inptg, back))
     throw std::logic_error("undo journal out of step with the workspace");
-  // PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same), with
-  // the state's twists, into the memory of the current ones when those are the interpolation of
-  // the current inputs (a 4 M-point surface then writes no fresh pages); on DataError, or a
+  const Array& to_inppn = new_inppn ? inppn : current_.inppn;
+  const Array& to_inptg = new_inptg ? inptg : current_.inptg;
+  const bool marks = to.status[Workspace::status_twists] == 1;
+  // A step that left the surface as it was (a DISPLAY, a STORE) keeps PATCHES and INTPN: they are
+  // the interpolation of the same inputs with the same twists already.
+  const bool same_surface = step.generation_before == step.generation_after &&
+                            ws.changes.surface == current_.generation && ws.changes.derived &&
+                            ws.has_surface() && !new_inppn && !new_inptg && to.nocur == ws.nocur &&
+                            to.nostr == ws.nostr && to.intcu == ws.intcu && to.intst == ws.intst &&
+                            marks == ws.marks_twists();
+  // Else PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same),
+  // with the state's twists, into the memory of the current ones when those are the interpolation
+  // of the current inputs (a 4 M-point surface then writes no fresh pages); on DataError, or a
   // result that is not finite (a state read from a forged file), they are as they were.
   const bool lend = ws.changes.derived && ws.has_surface();
   Surface surface;
-  if (lend) surface = {std::move(ws.patches), std::move(ws.intpn)};
-  if (to.nocur > 0) {
-    const bool marks = to.status[Workspace::status_twists] == 1;
+  if (same_surface) {
+    surface = {std::move(ws.patches), std::move(ws.intpn)};
+  } else if (to.nocur > 0) {
+    if (lend) surface = {std::move(ws.patches), std::move(ws.intpn)};
     try {
-      interpolate_into({to.nocur, to.nostr, to.intcu, to.intst, &inppn, &inptg, marks}, surface);
-      try {
-        check_finite(surface.patches, surface.intpn);
-      } catch (const DataError&) {
+      if (auto overflow = interpolate_into(
+              {to.nocur, to.nostr, to.intcu, to.intst, &to_inppn, &to_inptg, marks}, surface)) {
+        // The surface kept: finite when it was made.
         if (lend)
-          interpolate_into(
+          (void)interpolate_into(
               {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()},
               surface);
-        throw;
+        throw *overflow;
       }
     } catch (...) {
       if (lend) {
@@ -265,14 +279,16 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
       }
       throw;
     }
-  } else {
-    surface = {};
   }
   to.apply_to(ws);
-  current_.inppn = inppn;
-  current_.inptg = inptg;
-  ws.inppn = std::move(inppn);
-  ws.inptg = std::move(inptg);
+  if (new_inppn) {
+    current_.inppn = inppn;
+    ws.inppn = std::move(inppn);
+  }
+  if (new_inptg) {
+    current_.inptg = inptg;
+    ws.inptg = std::move(inptg);
+  }
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);
   const ImageSlots& images = back ? step.images_before : step.images_after;

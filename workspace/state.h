@@ -112,6 +112,10 @@ class ImageRef {
   // The surface's generation and the DESIM it was drawn with, for an image drawn from a surface
   // (Image::drawn_from not 0); known of a deferred image without making it.
   std::optional<std::pair<std::uint64_t, Description>> recipe() const;
+  // True when both are drawn from the same surface with the same DESIM and shown through the
+  // same window: equal images (one function makes them, bit for bit), known without making or
+  // comparing their points.
+  bool same_recipe(const ImageRef& other) const;
   // The same image (not only equal ones).
   friend bool operator==(const ImageRef& a, const ImageRef& b) { return a.cell_ == b.cell_; }
   // A weak hold on this image, for telling later whether an ImageRef is still it.
@@ -134,7 +138,7 @@ class ImageRef {
 
 // The same images, or equal ones.
 inline bool same_image(const ImageRef& a, const ImageRef& b) {
-  return a == b || (a && b && *a == *b);
+  return a == b || (a && b && (a.same_recipe(b) || *a == *b));
 }
 
 // The parts of an array changed since the session last saved it: the autosave writes those

@@ -76,6 +76,14 @@ std::optional<std::pair<std::uint64_t, Description>> ImageRef::recipe() const {
   return std::pair{from, made ? made->desim : cell_->desim};
 }
 
+bool ImageRef::same_recipe(const ImageRef& other) const {
+  const auto mine = recipe();
+  if (!mine || mine != other.recipe()) return false;
+  // An image not made yet is made whole (a recipe has no window).
+  const Image *a = cell_->image.get(), *b = other.cell_->image.get();
+  return (a ? a->window : std::nullopt) == (b ? b->window : std::nullopt);
+}
+
 const Image& ImageRef::get() const {
   if (!cell_->image) {
     // A make that throws leaves the recipe: the next look tries again, and meets the same error.

@@ -277,3 +277,52 @@ TEST_CASE("an axis or plane beyond an int's range is refused before it is made a
     }
   }
 }
+
+TEST_CASE(
+    "project_image: project() on every core, the first image not finite and a CONIC eye "
+    "in the points' box found in the same pass") {
+  // Enough points to be projected on every core: a sheet 1000 x 800 over z = 0..2.
+  const std::size_t columns = 1000, rows = 800, n = columns * rows;
+  Flat<Vec3> in(n);
+  for (std::size_t k = 0; k < n; ++k)
+    in.set(k, {double(k % columns), double(k / columns), std::sin(0.01 * double(k)) + 1});
+  const Vec3 centre = bounding_box_centre(in);
+  const View views[] = {{Projection::orthogonal, {2, 0, 0}},
+                        {Projection::isometric, {3, 30, 0}},
+                        {Projection::assonometric, {110, 130, 120}},
+                        {Projection::conic, {3000, -2000, 1500}}};
+  Flat<Point2> expected(n), out(n);
+  for (const View& view : views) {
+    CAPTURE(int(view.projection));
+    project(view, centre, in, expected);
+    CHECK(project_image(view, centre, in, out) == n);
+    CHECK(out.d == expected.d);  // bit for bit
+  }
+  // Points near the largest numbers overflow under ISOMETRIC: the first of two, in two parts.
+  Flat<Vec3> huge = in;
+  for (const std::size_t k : {n - 1000, n / 3 + 7}) huge.set(k, {1.7e308, 1.7e308, 1.7e308});
+  CHECK(project_image(views[1], centre, huge, out) == n / 3 + 7);
+  CHECK(project_image(views[0], centre, huge, out) == n);  // ORTHOGONAL adds nothing
+
+  // A CONIC eye inside the box, points behind it: refused as inside it, not as behind it.
+  auto conic = [](Vec3 eye) { return View{Projection::conic, {eye.x, eye.y, eye.z}}; };
+  const Vec3 low_corner{100, 100, 0.5};
+  CHECK(inside_bounding_box(in, low_corner));
+  CHECK(problem_of([&] { project_image(conic(low_corner), centre, in, out); }) ==
+        DataError::Problem::view_inside_box);
+  CHECK(problem_of([&] { project(conic(low_corner), centre, in, out); }) ==
+        DataError::Problem::behind_eye);
+  // The eye at the centre: inside the box, said before it has no frame; outside, no frame.
+  CHECK(problem_of([&] { project_image(conic(centre), centre, in, out); }) ==
+        DataError::Problem::view_inside_box);
+  CHECK(problem_of([&] {
+          project_image(conic({5000, 0, 0}), {5000, 0, 0}, in, out);
+        }) == DataError::Problem::view_at_centre);
+  // Outside the box with points behind the eye (towards a centre far beyond the sheet).
+  CHECK(problem_of([&] {
+          project_image(conic({500, 400, 3}), {500, 400, 1e6}, in, out);
+        }) == DataError::Problem::behind_eye);
+  CHECK(problem_of([&] {
+          project_image({Projection::isometric, {4, 30, 0}}, centre, in, out);
+        }) == DataError::Problem::projection_parameters);
+}

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "tests/kernels/helpers.h"
@@ -452,23 +453,23 @@ TEST_CASE("interpolate_into and refit_into reuse the arrays they are given") {
   SurfaceInput in{8, 9, 5, 6, &g.inppn, &g.inptg};
   Surface expected = interpolate(in);
   Surface out;
-  interpolate_into(in, out);
+  CHECK_FALSE(interpolate_into(in, out));
   CHECK(out == expected);
   const double* memory = out.intpn.data();
-  interpolate_into(in, out);
+  CHECK_FALSE(interpolate_into(in, out));
   CHECK(out.intpn.data() == memory);
   CHECK(out == expected);
   // A smaller grid fits in the same memory; a much larger one gets new memory.
-  interpolate_into({8, 9, 4, 6, &g.inppn, &g.inptg}, out);
+  CHECK_FALSE(interpolate_into({8, 9, 4, 6, &g.inppn, &g.inptg}, out));
   CHECK(out.intpn.data() == memory);
   CHECK(out.intpn == interpolate({8, 9, 4, 6, &g.inppn, &g.inptg}).intpn);
-  refit_into({8, 9, 20, 20, &g.inppn, nullptr}, out.patches, out.intpn);
+  CHECK_FALSE(refit_into({8, 9, 20, 20, &g.inppn, nullptr}, out.patches, out.intpn));
   CHECK(out.intpn == refit({8, 9, 20, 20, &g.inppn, nullptr}, out.patches));
   // Bad data leaves the output as it was.
   Surface before = out;
   g.inppn.ravel[5] = NAN;
-  CHECK_THROWS_AS(interpolate_into(in, out), DataError);
-  CHECK_THROWS_AS(refit_into(in, out.patches, out.intpn), DataError);
+  CHECK_THROWS_AS((void)interpolate_into(in, out), DataError);
+  CHECK_THROWS_AS((void)refit_into(in, out.patches, out.intpn), DataError);
   CHECK(out == before);
 }
 
@@ -476,13 +477,13 @@ TEST_CASE("an output that is also an input is computed apart") {
   Grid g = wavy_grid(4, 4, 26);
   Surface s = run(g, 2, 2);
   Array patches = s.patches;
-  refit_into({4, 4, 3, 3, &g.inppn, nullptr}, patches, patches);
+  CHECK_FALSE(refit_into({4, 4, 3, 3, &g.inppn, nullptr}, patches, patches));
   CHECK(patches == refit({4, 4, 3, 3, &g.inppn, nullptr}, s.patches));
   Grid h = g;
   Surface aliased;
   SurfaceInput in{4, 4, 2, 2, &aliased.intpn, &h.inptg};
   aliased.intpn = h.inppn;
-  interpolate_into(in, aliased);
+  CHECK_FALSE(interpolate_into(in, aliased));
   CHECK(aliased == s);
 }
 
@@ -538,4 +539,70 @@ TEST_CASE("first_not_finite finds the first number that is not finite, in large 
       CHECK(first_not_finite(w.data(), n) == at);
     }
   }
+}
+
+namespace {
+
+// The report of a second reading of every number of `s`: what the kernels must find as they make
+// them.
+std::optional<DataError> read_again(const Surface& s) {
+  if (const std::size_t k = first_not_finite(s.patches.data(), s.patches.size());
+      k < s.patches.size()) {
+    DataError e(DataError::Problem::patch_not_finite);
+    e.number = k / 48 + 1;
+    return e;
+  }
+  if (const std::size_t k = first_not_finite(s.intpn.data(), s.intpn.size()); k < s.intpn.size()) {
+    DataError e(DataError::Problem::grid_point_not_finite);
+    e.number = k / 3 / s.intpn.shape[1] + 1;
+    e.column = k / 3 % s.intpn.shape[1] + 1;
+    return e;
+  }
+  return std::nullopt;
+}
+
+std::string said(const std::optional<DataError>& e) {
+  return e ? e->what() : "finite";
+}
+
+}  // namespace
+
+TEST_CASE("COONS and FIT find the first number that is not finite as they make it") {
+  // 30 inserted: a grid of 4.4 M numbers, made on every core with streaming stores; 2: one core.
+  for (const int density : {2, 30}) {
+    for (const FitCode code : {FitCode::best, FitCode::baseline}) {
+      CAPTURE(density);
+      CAPTURE(code == FitCode::best);
+      use_fit_code(code);
+      const Grid g = wavy_grid(40, 40, 31);
+      const SurfaceInput in{40, 40, density, density, &g.inppn, &g.inptg};
+      Surface s;
+      CHECK(said(interpolate_into(in, s)) == "finite");
+      CHECK(said(read_again(s)) == "finite");
+
+      // Finite patches so large that the grid overflows, in two parts of the rows: the first.
+      Array patches = s.patches;
+      for (const std::size_t patch : {std::size_t(33 * 39 + 20), std::size_t(6 * 39 + 30)})
+        for (std::size_t k = 0; k < 48; ++k) patches.ravel[48 * patch + k] = 1.5e308;
+      Array intpn;
+      const std::size_t k = fit(40, 40, density, density, patches, as_vec3(g.inppn), intpn);
+      CHECK(k == first_not_finite(intpn.data(), intpn.size()));
+      CHECK(k < intpn.size());
+      const auto grid = refit_into(in, patches, intpn);
+      REQUIRE(grid);
+      CHECK(grid->problem == DataError::Problem::grid_point_not_finite);
+      CHECK(said(grid) == said(read_again({patches, intpn})));
+      CHECK(grid->number > std::size_t(6 * (density + 1)));
+
+      // Tangents of 1E308 at the borders: the patches overflow, the first named.
+      Grid huge = g;
+      for (const std::size_t row : {std::size_t(70), std::size_t(2 * 40 + 12)})
+        set_tangent(huge.inptg, row, {1e308, -1e308, 1e308});
+      const auto patch = interpolate_into({40, 40, density, density, &huge.inppn, &huge.inptg}, s);
+      REQUIRE(patch);
+      CHECK(patch->problem == DataError::Problem::patch_not_finite);
+      CHECK(said(patch) == said(read_again(s)));
+    }
+  }
+  use_fit_code(FitCode::best);
 }

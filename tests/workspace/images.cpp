@@ -61,5 +61,28 @@ TEST_CASE("a projection that overflows is refused, naming the point, row or tang
   CHECK(refused([&] { return surface_image(huge, isometric); }) == "INTPN 3 4");
 }
 
+TEST_CASE("images drawn from the same surface with the same DESIM are the same, unmade, unread") {
+  const Workspace ws = test::make_interpolated(3, 3, 1, 1);
+  const auto source = std::make_shared<const Workspace>(ws);
+  const Description desim{1, Projection::isometric, {3, 30, 0}};
+  const ImageRef a = image_by_recipe(source, desim), b = image_by_recipe(source, desim);
+  CHECK(same_image(a, b));
+  CHECK_FALSE(a.made());  // known by the recipe alone
+  CHECK_FALSE(b.made());
+  const ImageRef c = image_by_recipe(source, {1, Projection::isometric, {3, 31, 0}});
+  CHECK_FALSE(same_image(a, c));
+  // The same image zoomed is another picture on the screen, the same made afresh is not.
+  auto zoomed = std::make_shared<Image>(*a);
+  zoomed->window = std::array<double, 4>{0, 0, 1, 1};
+  CHECK_FALSE(same_image(a, ImageRef(zoomed)));
+  CHECK(same_image(a, ImageRef(std::make_shared<const Image>(image_of(ws, desim)))));
+  // An image with no recipe (read from a file, assigned in END APL) is compared by its points.
+  auto kept = std::make_shared<Image>(*a);
+  kept->drawn_from = 0;
+  CHECK(same_image(a, ImageRef(kept)));
+  kept->points.ravel[0] += 1;
+  CHECK_FALSE(same_image(a, ImageRef(kept)));
+}
+
 }  // namespace
 }  // namespace igds

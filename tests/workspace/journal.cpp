@@ -510,3 +510,37 @@ TEST_CASE("an UNDO whose state overflows is refused, PATCHES and INTPN as they w
   test::check_same_surface(ws, mended);
   CHECK(j.undo_count() == 2);
 }
+
+TEST_CASE("UNDO and REDO of a step that left the surface as it was keep PATCHES and INTPN") {
+  Workspace ws = test::make_interpolated(5, 6, 2, 3);
+  saved(ws);
+  Journal j(ws);
+  const ImageRef first = ws.image;
+  CHECK(command(j, ws, "DISPLAY SURFACE", [&] {
+    ws.image = std::make_shared<const Image>(image_of(ws, {1, Projection::isometric, {3, 30, 0}}));
+  }));
+  CHECK(command(j, ws, "HELP SHORT", [&] { ws.status[0] = 0; }));
+  const Workspace after = ws;
+  // Not made again: the very arrays stay, and the inputs with them.
+  const double* patches = ws.patches.data();
+  const double* intpn = ws.intpn.data();
+  const double* inppn = ws.inppn.data();
+  for (const char* name : {"HELP SHORT", "DISPLAY SURFACE"}) CHECK(j.undo(ws) == name);
+  CHECK(ws.image == first);
+  CHECK(ws.patches.data() == patches);
+  CHECK(ws.intpn.data() == intpn);
+  CHECK(ws.inppn.data() == inppn);
+  CHECK(j.redo(ws) == "DISPLAY SURFACE");
+  CHECK(j.redo(ws) == "HELP SHORT");
+  test::check_same_workspace(ws, after);
+  CHECK(ws.intpn.data() == intpn);
+  // PATCHES of the user's own (END APL, no step of their own) are made again from the inputs by an
+  // UNDO, as by any.
+  ws.patches.ravel[0] += 1;
+  ws.changes.assigned();
+  CHECK_FALSE(j.record(ws, "APL"));
+  CHECK(j.undo(ws) == "HELP SHORT");
+  CHECK(ws.changes.derived);
+  CHECK(ws.patches == after.patches);
+  CHECK(ws.intpn == after.intpn);
+}

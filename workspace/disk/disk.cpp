@@ -298,8 +298,7 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   // number was found finite (the interpolation's too: inputs near the largest numbers overflow).
   Surface surface;
   try {
-    surface = interpolate(surface_input(in));
-    check_finite(surface.patches, surface.intpn);
+    if (auto overflow = interpolate_into(surface_input(in), surface)) throw *overflow;
   } catch (const DataError& e) {
     const bool overflow = e.problem == DataError::Problem::patch_not_finite ||
                           e.problem == DataError::Problem::grid_point_not_finite;

@@ -472,8 +472,8 @@ Workspace Session::State::read_session() {
   // kernels'.
   if (t.current != 0 && t.derived) {
     try {
-      Surface made = interpolate(surface_input(ws));
-      check_finite(made.patches, made.intpn);
+      Surface made;
+      if (auto overflow = interpolate_into(surface_input(ws), made)) throw *overflow;
       ws.patches = std::move(made.patches);
       ws.intpn = std::move(made.intpn);
     } catch (const DataError& e) {

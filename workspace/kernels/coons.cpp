@@ -1,7 +1,9 @@
 #include "workspace/kernels/coons.h"
 
+#include <atomic>
 #include <cassert>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/spline.h"
 
@@ -45,8 +47,8 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
   return t;
 }
 
-void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
-                   Array& patches, Vec3View twists) {
+std::size_t coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
+                          Array& patches, Vec3View twists) {
   const std::size_t nc = nocur, ns = nostr;
   const std::size_t count = (nc - 1) * (ns - 1) * 48;
   patches.reshape_for_output({nc - 1, ns - 1, 3, 4, 4});
@@ -58,6 +60,7 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
   auto scale = [per_chord](double chord) { return per_chord ? chord : chord > 0 ? 1.0 : 0.0; };
   assert(twists.empty() || twists.size() == nc * ns);
   auto twist = [&](std::size_t k) { return twists.empty() ? Vec3{} : Vec3(twists[k]); };
+  std::atomic<std::size_t> not_finite{count};
   auto patch_rows = [&](std::size_t first, std::size_t last) {
     double* m = patches.data() + first * (ns - 1) * 48;
     for (std::size_t i = first; i < last; ++i) {
@@ -76,17 +79,24 @@ void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& ta
             {lu0 * tu[k00], lu1 * tu[k01], twist(k00), twist(k01)},
             {lu0 * tu[k10], lu1 * tu[k11], twist(k10), twist(k11)},
         };
+        // x * 0 is 0 for a finite x, NaN for the rest (docs/kernels.md, "Data checks"), summed
+        // in four independent lanes.
+        double seen[4] = {0, 0, 0, 0};
         for (int r = 0; r < 4; ++r) {
           for (int c = 0; c < 4; ++c) {
             m[0 * 16 + r * 4 + c] = rows[r][c].x;
             m[1 * 16 + r * 4 + c] = rows[r][c].y;
             m[2 * 16 + r * 4 + c] = rows[r][c].z;
+            seen[c] += rows[r][c].x * 0.0 + rows[r][c].y * 0.0 + rows[r][c].z * 0.0;
           }
         }
+        if (seen[0] + seen[1] + seen[2] + seen[3] != 0)
+          keep_least(not_finite, std::size_t(m - patches.data()) + first_not_finite(m, 48));
       }
     }
   };
   parallel_for(nc - 1, threads_for(count), patch_rows);
+  return not_finite.load();
 }
 
 }  // namespace igds

@@ -36,8 +36,9 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
 // per_parameter: as they are, but zero along a zero-length arc, which is its point), then the
 // twists: `twists` holds one per input point (per unit of both patch parameters, docs/marks.md), or
 // is empty for the zero twists of the manual. Written into `patches`, whose memory is reused when
-// it is large enough (Array::reshape_for_output).
-void coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
-                   Array& patches, Vec3View twists = {});
+// it is large enough (Array::reshape_for_output). Returns the index of PATCHES' first number that
+// is not finite (tangents near the largest numbers overflow), or its size when every one is.
+std::size_t coons_patches(int nocur, int nostr, Vec3View points, const GridTangents& tangents,
+                          Array& patches, Vec3View twists = {});
 
 }  // namespace igds

@@ -97,9 +97,7 @@ std::size_t first_not_finite(const double* v, std::size_t n) {
   std::atomic<std::size_t> found{n};
   parallel_for(n, threads_for(n), [&](std::size_t first, std::size_t last) {
     const std::size_t k = first_not_finite_in(v, first, last);
-    if (k == last) return;  // every number of this slice is finite
-    for (std::size_t seen = found.load(); k < seen && !found.compare_exchange_weak(seen, k);) {
-    }
+    if (k < last) keep_least(found, k);
   });
   return found.load();
 }

@@ -2,6 +2,7 @@
 // meant for the user: the commands layer words the report (commands/reports.h).
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <exception>
 #include <string>
@@ -53,6 +54,13 @@ struct Array;
 // the check of every result before it is kept (docs/kernels.md, "Data checks"). Reads the numbers
 // at the speed of memory, a large array on the machine's cores as the kernels make it.
 std::size_t first_not_finite(const double* v, std::size_t n);
+
+// `least` made `k` when k is less: the first index that the parts of a loop split between threads
+// (workspace/kernels/parallel.h) report, each its own.
+inline void keep_least(std::atomic<std::size_t>& least, std::size_t k) {
+  for (std::size_t seen = least.load(); k < seen && !least.compare_exchange_weak(seen, k);) {
+  }
+}
 
 // Throws DataError missing (no array) or shape (`a` is not of shape `expected`), naming
 // `variable`: the check every kernel makes of the arrays it is given.

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/spline.h"
@@ -53,7 +54,7 @@ constexpr std::size_t streaming = std::size_t(1) << 22;
 struct FitJob;
 using CurvePolynomials = void (*)(const FitJob&, std::size_t, std::size_t, std::size_t, double*,
                                   double*, double*, double*);
-using Combine = void (*)(const double*, std::size_t, const double*, const double*, const double*,
+using Combine = bool (*)(const double*, std::size_t, const double*, const double*, const double*,
                          const double*, const double*, double*);
 
 struct FitJob {
@@ -106,15 +107,35 @@ template <class = void>
   }
 }
 
-// One stretch of an output row: out = origin + fv . q, a 4-term FMA over contiguous memory.
+// One stretch of an output row: out = origin + fv . q, a 4-term FMA over contiguous memory. True
+// when every number written is finite: x * 0 is 0 for a finite x and NaN for the rest, summed in
+// the registers as the numbers are made (the check of docs/kernels.md, "Data checks").
 template <class = void>
-[[gnu::always_inline]] inline void combine_body(
+[[gnu::always_inline]] inline bool combine_body(
     const double* fv, std::size_t n, const double* __restrict origin, const double* __restrict q0,
     const double* __restrict q1, const double* __restrict q2, const double* __restrict q3,
     double* __restrict out) {
+  typedef double v4 __attribute__((vector_size(32)));
   const double w0 = fv[0], w1 = fv[1], w2 = fv[2], w3 = fv[3];
-  for (std::size_t k = 0; k < n; ++k)
+  v4 seen = {0, 0, 0, 0};
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    v4 o, a0, a1, a2, a3;
+    std::memcpy(&o, origin + k, sizeof o);
+    std::memcpy(&a0, q0 + k, sizeof a0);
+    std::memcpy(&a1, q1 + k, sizeof a1);
+    std::memcpy(&a2, q2 + k, sizeof a2);
+    std::memcpy(&a3, q3 + k, sizeof a3);
+    const v4 v = o + (w0 * a0 + w1 * a1 + w2 * a2 + w3 * a3);
+    std::memcpy(out + k, &v, sizeof v);
+    seen += v * 0.0;
+  }
+  double rest = 0;
+  for (; k < n; ++k) {
     out[k] = origin[k] + (w0 * q0[k] + w1 * q1[k] + w2 * q2[k] + w3 * q3[k]);
+    rest += out[k] * 0.0;
+  }
+  return seen[0] + seen[1] + seen[2] + seen[3] + rest == 0;
 }
 
 void curve_polynomials_base(const FitJob& job, std::size_t i, std::size_t j0, std::size_t j1,
@@ -122,9 +143,9 @@ void curve_polynomials_base(const FitJob& job, std::size_t i, std::size_t j0, st
   curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
 }
 
-void combine_base(const double* fv, std::size_t n, const double* origin, const double* q0,
+bool combine_base(const double* fv, std::size_t n, const double* origin, const double* q0,
                   const double* q1, const double* q2, const double* q3, double* out) {
-  combine_body(fv, n, origin, q0, q1, q2, q3, out);
+  return combine_body(fv, n, origin, q0, q1, q2, q3, out);
 }
 
 #if IGDS_X86
@@ -135,24 +156,27 @@ __attribute__((target("avx2,fma"))) void curve_polynomials_avx2(const FitJob& jo
   curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
 }
 
-__attribute__((target("avx2,fma"))) void combine_avx2(const double* fv, std::size_t n,
+__attribute__((target("avx2,fma"))) bool combine_avx2(const double* fv, std::size_t n,
                                                       const double* origin, const double* q0,
                                                       const double* q1, const double* q2,
                                                       const double* q3, double* out) {
-  combine_body(fv, n, origin, q0, q1, q2, q3, out);
+  return combine_body(fv, n, origin, q0, q1, q2, q3, out);
 }
 
 // The same with streaming stores, for grids much larger than the caches: the output goes to
 // memory without first being read into the cache, which halves the memory traffic.
-void combine_stream_sse2(const double* fv, std::size_t n, const double* __restrict origin,
+bool combine_stream_sse2(const double* fv, std::size_t n, const double* __restrict origin,
                          const double* __restrict q0, const double* __restrict q1,
                          const double* __restrict q2, const double* __restrict q3,
                          double* __restrict out) {
   std::size_t k = 0;
+  bool finite = true;
   if (reinterpret_cast<std::uintptr_t>(out) % 16 != 0 && n > 0) {
-    combine_base(fv, 1, origin, q0, q1, q2, q3, out);
+    finite = combine_base(fv, 1, origin, q0, q1, q2, q3, out);
     k = 1;
   }
+  const __m128d zero = _mm_setzero_pd();
+  __m128d seen = zero;
   const __m128d w0 = _mm_set1_pd(fv[0]), w1 = _mm_set1_pd(fv[1]), w2 = _mm_set1_pd(fv[2]),
                 w3 = _mm_set1_pd(fv[3]);
   for (; k + 2 <= n; k += 2) {
@@ -160,21 +184,29 @@ void combine_stream_sse2(const double* fv, std::size_t n, const double* __restri
     v = _mm_add_pd(v, _mm_mul_pd(w1, _mm_loadu_pd(q1 + k)));
     v = _mm_add_pd(v, _mm_mul_pd(w2, _mm_loadu_pd(q2 + k)));
     v = _mm_add_pd(v, _mm_mul_pd(w3, _mm_loadu_pd(q3 + k)));
-    _mm_stream_pd(out + k, _mm_add_pd(_mm_loadu_pd(origin + k), v));
+    v = _mm_add_pd(_mm_loadu_pd(origin + k), v);
+    _mm_stream_pd(out + k, v);
+    seen = _mm_add_pd(seen, _mm_mul_pd(v, zero));
   }
-  combine_base(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k);
+  double lanes[2];
+  _mm_storeu_pd(lanes, seen);
+  return combine_base(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k) && finite &&
+         lanes[0] + lanes[1] == 0;
 }
 
-__attribute__((target("avx2,fma"))) void combine_stream_avx2(
+__attribute__((target("avx2,fma"))) bool combine_stream_avx2(
     const double* fv, std::size_t n, const double* __restrict origin, const double* __restrict q0,
     const double* __restrict q1, const double* __restrict q2, const double* __restrict q3,
     double* __restrict out) {
   std::size_t k = 0;
+  bool finite = true;
   const std::size_t head = (32 - reinterpret_cast<std::uintptr_t>(out) % 32) % 32 / 8;
   if (head > 0) {
     k = std::min(head, n);
-    combine_body(fv, k, origin, q0, q1, q2, q3, out);
+    finite = combine_body(fv, k, origin, q0, q1, q2, q3, out);
   }
+  const __m256d zero = _mm256_setzero_pd();
+  __m256d seen = zero;
   const __m256d w0 = _mm256_set1_pd(fv[0]), w1 = _mm256_set1_pd(fv[1]), w2 = _mm256_set1_pd(fv[2]),
                 w3 = _mm256_set1_pd(fv[3]);
   for (; k + 4 <= n; k += 4) {
@@ -182,9 +214,14 @@ __attribute__((target("avx2,fma"))) void combine_stream_avx2(
     v = _mm256_fmadd_pd(w1, _mm256_loadu_pd(q1 + k), v);
     v = _mm256_fmadd_pd(w2, _mm256_loadu_pd(q2 + k), v);
     v = _mm256_fmadd_pd(w3, _mm256_loadu_pd(q3 + k), v);
-    _mm256_stream_pd(out + k, _mm256_add_pd(_mm256_loadu_pd(origin + k), v));
+    v = _mm256_add_pd(_mm256_loadu_pd(origin + k), v);
+    _mm256_stream_pd(out + k, v);
+    seen = _mm256_add_pd(seen, _mm256_mul_pd(v, zero));
   }
-  combine_body(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k);
+  double lanes[4];
+  _mm256_storeu_pd(lanes, seen);
+  return combine_body(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k) && finite &&
+         lanes[0] + lanes[1] + lanes[2] + lanes[3] == 0;
 }
 
 bool has_avx2_fma() {
@@ -214,8 +251,10 @@ void choose_kernels(FitJob& job, std::size_t doubles) {
 }
 
 // Output rows [first, last): for each patch row and chunk of columns, the curve polynomials
-// once, then every output row of that patch row in the chunk.
-void fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
+// once, then every output row of that patch row in the chunk. Returns the index in INTPN of the
+// first stretch written that holds a number not finite, or the size of INTPN.
+std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
+  std::size_t not_finite = job.rows * job.cols * 3;
   const std::size_t width = std::min(chunk, job.cols);
   std::vector<double> buffer(5 * 3 * width);
   double* q[4] = {buffer.data(), buffer.data() + 3 * width, buffer.data() + 6 * width,
@@ -229,8 +268,9 @@ void fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
       const std::size_t j1 = std::min(job.cols, j0 + width);
       job.polynomials(job, i, j0, j1, q[0], q[1], q[2], q[3]);
       for (std::size_t r = row; r < end; ++r) {
-        job.combine(job.wv + 4 * (r - i * (job.ic + 1)), 3 * (j1 - j0), origin, q[0], q[1], q[2],
-                    q[3], job.intpn + 3 * (r * job.cols + j0));
+        if (!job.combine(job.wv + 4 * (r - i * (job.ic + 1)), 3 * (j1 - j0), origin, q[0], q[1],
+                         q[2], q[3], job.intpn + 3 * (r * job.cols + j0)))
+          not_finite = std::min(not_finite, 3 * (r * job.cols + j0));
       }
     }
     row = end;
@@ -239,6 +279,7 @@ void fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
   // Streaming stores are weakly ordered: make them visible before the thread reports done.
   _mm_sfence();
 #endif
+  return not_finite;
 }
 
 }  // namespace
@@ -256,8 +297,8 @@ const char* fit_code_in_use() {
 #endif
 }
 
-void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
-         Array& intpn) {
+std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
+                Array& intpn) {
   const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);
   const unsigned threads = threads_for(shape.rows * shape.cols * 3);
   intpn.reshape_for_output({shape.rows, shape.cols, 3});
@@ -277,8 +318,10 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3V
              nullptr,
              nullptr};
   choose_kernels(job, intpn.size());
-  parallel_for(shape.rows, threads,
-               [&job](std::size_t first, std::size_t last) { fit_rows(job, first, last); });
+  std::atomic<std::size_t> not_finite{intpn.size()};
+  parallel_for(shape.rows, threads, [&](std::size_t first, std::size_t last) {
+    keep_least(not_finite, fit_rows(job, first, last));
+  });
   // The input points come out bit-exact (docs/kernels.md).
   MutableVec3View grid = as_vec3(intpn);
   for (std::size_t i = 0; i < std::size_t(nocur); ++i) {
@@ -286,6 +329,11 @@ void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3V
       grid[i * (intcu + 1) * shape.cols + j * (intst + 1)] = points[i * nostr + j];
     }
   }
+  // Every number before the first stretch found not finite is (the input points are finite): the
+  // first one is looked for from there, in the grid as it is now.
+  const std::size_t from = not_finite.load();
+  if (from == intpn.size()) return from;
+  return from + first_not_finite(intpn.data() + from, intpn.size() - from);
 }
 
 }  // namespace igds

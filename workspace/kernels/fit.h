@@ -20,9 +20,11 @@ GridShape intpn_shape(int nocur, int nostr, int intcu, int intst);
 // min(I div (INTCU+1), NOCUR-2) at v = b/(INTCU+1), likewise columns with u; every patch block
 // is W M W^T per coordinate, evaluated relative to the centre of the input points' bounding box.
 // The NOCUR x NOSTR input `points` are then copied bit-exactly to their places. Written into
-// `intpn`, whose memory is reused when it is large enough (Array::reshape_for_output).
-void fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
-         Array& intpn);
+// `intpn`, whose memory is reused when it is large enough (Array::reshape_for_output). Returns the
+// index of INTPN's first number that is not finite (patches near the largest numbers overflow),
+// or its size when every one is: found as the numbers are made, not by reading INTPN again.
+std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
+                Array& intpn);
 
 // Which compiled form of the FIT loops runs: the best the processor allows (the default), or the
 // baseline one everywhere (so that tests exercise both on a machine that has AVX2).

@@ -4,8 +4,10 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/parallel.h"
 
 namespace igds {
 
@@ -72,6 +74,67 @@ bool finite(Vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
+// What one pass of a projection over its points found: the first point whose image is not finite
+// (the count of points: none); CONIC's too, whether a point is not in front of the eye and the
+// box of the points about the eye (p - eye).
+struct Pass {
+  std::size_t not_finite;
+  bool behind = false;
+  Vec3 lo{}, hi{};
+};
+
+// out[k] = image(in[k]) for every point, on the machine's cores for a large image, each image
+// checked as it is made: x * 0 is 0 for a finite x and NaN for the rest (docs/kernels.md, "Data
+// checks"), summed a block at a time. CONIC (`eye` its view point, `ahead` its line of sight) also
+// looks, in the same pass, for a point not in front of the eye and at the box of the points.
+template <bool conic = false, class Image>
+Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye = {},
+                Vec3 ahead = {}) {
+  const std::size_t n = in.size();
+  const unsigned parts = threads_for(2 * n);
+  std::vector<Pass> found(parts, Pass{n});
+  in_parallel(parts, [&](unsigned part) {
+    const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
+    Pass& pass = found[part];
+    if (first < last) pass.lo = pass.hi = in[first] - eye;
+    constexpr std::size_t block = 512;
+    for (std::size_t from = first; from < last; from += block) {
+      const std::size_t to = std::min(last, from + block);
+      double seen_x = 0, seen_y = 0;
+      for (std::size_t k = from; k < to; ++k) {
+        const Vec3 v = in[k];
+        if constexpr (conic) {
+          const Vec3 q = v - eye;
+          if (!(dot(q, ahead) > 0)) pass.behind = true;
+          pass.lo = {std::min(pass.lo.x, q.x), std::min(pass.lo.y, q.y), std::min(pass.lo.z, q.z)};
+          pass.hi = {std::max(pass.hi.x, q.x), std::max(pass.hi.y, q.y), std::max(pass.hi.z, q.z)};
+        }
+        const Point2 p = image(v);
+        out[k] = p;
+        seen_x += p.x * 0.0;
+        seen_y += p.y * 0.0;
+      }
+      if (seen_x + seen_y != 0 && pass.not_finite == n) {
+        for (std::size_t k = from; k < to && pass.not_finite == n; ++k) {
+          const Point2 p = out[k];
+          if (!std::isfinite(p.x) || !std::isfinite(p.y)) pass.not_finite = k;
+        }
+      }
+    }
+  });
+  // Several parts only for many more points than parts: none is empty, each has its box.
+  Pass all = found[0];
+  for (const Pass& pass : found) {
+    all.not_finite = std::min(all.not_finite, pass.not_finite);
+    all.behind = all.behind || pass.behind;
+    all.lo = {std::min(all.lo.x, pass.lo.x), std::min(all.lo.y, pass.lo.y),
+              std::min(all.lo.z, pass.lo.z)};
+    all.hi = {std::max(all.hi.x, pass.hi.x), std::max(all.hi.y, pass.hi.y),
+              std::max(all.hi.z, pass.hi.z)};
+  }
+  return all;
+}
+
 }  // namespace
 
 bool isom_parameters_valid(double axis, double angle_degrees) {
@@ -100,25 +163,111 @@ bool view_parameters_valid(const View& view) {
   return false;
 }
 
-void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+namespace {
+
+Pass orthog_pass(Vec3View in, int plane, MutablePoint2View out) {
+  check_sizes(in, out);
+  // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
+  switch (plane) {
+    case 1:
+      return each_point(in, out, [](Vec3 p) { return Point2{p.x, p.y}; });
+    case 2:
+      return each_point(in, out, [](Vec3 p) { return Point2{p.x, p.z}; });
+    case 3:
+      return each_point(in, out, [](Vec3 p) { return Point2{p.y, p.z}; });
+    default:
+      refuse(DataError::Problem::projection_parameters);
+  }
+}
+
+Pass isom_pass(Vec3View in, int axis, double angle_degrees, MutablePoint2View out) {
+  check_sizes(in, out);
+  if (!isom_parameters_valid(axis, angle_degrees))
+    refuse(DataError::Problem::projection_parameters);
+  // docs/kernels.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn
+  // obliquely.
+  const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
+  return each_point(in, out, [axis, c, s](Vec3 p) {
+    double r1, r2, d;
+    if (axis == 1) {
+      r1 = p.y, r2 = p.z, d = p.x;
+    } else if (axis == 2) {
+      r1 = p.x, r2 = p.z, d = p.y;
+    } else {
+      r1 = p.x, r2 = p.y, d = p.z;
+    }
+    return Point2{r1 + d * c, r2 + d * s};
+  });
+}
+
+Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
+  check_sizes(in, out);
+  if (!finite(view)) refuse(DataError::Problem::projection_parameters);
+  const ConicFrame f = conic_frame(view, centre);
+  return each_point<true>(
+      in, out,
+      [&f, view](Vec3 p) {
+        const Vec3 q = p - view;
+        const double depth = dot(q, f.w);
+        return Point2{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
+      },
+      view, f.w);
+}
+
+Pass matrix_pass(Vec3View in, const AssonMatrix& a, MutablePoint2View out) {
+  return each_point(in, out, [&a](Vec3 p) {
+    return Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
+  });
+}
+
+Pass asson_pass(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out) {
+  check_sizes(in, out);
+  if (!asson_parameters_valid(angles_degrees)) refuse(DataError::Problem::projection_parameters);
+  return matrix_pass(in, asson_matrix(angles_degrees), out);
+}
+
+Pass project_pass(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
   const auto& p = view.parameters;
   // Checked before the plane or axis becomes an integer: a number beyond an int's range is none.
   if (!view_parameters_valid(view)) refuse(DataError::Problem::projection_parameters);
   switch (view.projection) {
     case Projection::conic:
-      conic(in, {p[0], p[1], p[2]}, centre, out);
-      return;
+      return conic_pass(in, {p[0], p[1], p[2]}, centre, out);
     case Projection::isometric:
-      isom(in, static_cast<int>(p[0]), p[1], out);
-      return;
+      return isom_pass(in, static_cast<int>(p[0]), p[1], out);
     case Projection::assonometric:
-      asson(in, p, out);
-      return;
+      return asson_pass(in, p, out);
     case Projection::orthogonal:
-      orthog(in, static_cast<int>(p[0]), out);
-      return;
+      return orthog_pass(in, static_cast<int>(p[0]), out);
   }
   refuse(DataError::Problem::projection_parameters);
+}
+
+}  // namespace
+
+void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+  const auto& p = view.parameters;
+  if (view.projection == Projection::conic && view_parameters_valid(view))
+    return conic(in, {p[0], p[1], p[2]}, centre, out);
+  project_pass(view, centre, in, out);
+}
+
+std::size_t project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+  const auto& p = view.parameters;
+  const Vec3 eye{p[0], p[1], p[2]};
+  const bool conic = view.projection == Projection::conic && view_parameters_valid(view);
+  // A view point at the centre has no frame: it is refused as inside the box when it is.
+  if (conic && eye.x == centre.x && eye.y == centre.y && eye.z == centre.z &&
+      inside_bounding_box(in, eye))
+    refuse(DataError::Problem::view_inside_box);
+  const Pass pass = project_pass(view, centre, in, out);
+  // The box about the eye holds 0 on every axis: the eye is in the box (the sign of p - eye is
+  // that of the comparison of p with the eye).
+  if (conic && !in.empty() && pass.lo.x <= 0 && 0 <= pass.hi.x && pass.lo.y <= 0 &&
+      0 <= pass.hi.y && pass.lo.z <= 0 && 0 <= pass.hi.z)
+    refuse(DataError::Problem::view_inside_box);
+  if (pass.behind) refuse(DataError::Problem::behind_eye);
+  return pass.not_finite;
 }
 
 std::array<double, 3> ProjectiveMap::apply(Vec3 p) const {
@@ -173,51 +322,11 @@ ProjectiveMap projection_map(const View& view, Vec3 centre) {
 }
 
 void orthog(Vec3View in, int plane, MutablePoint2View out) {
-  check_sizes(in, out);
-  // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
-  switch (plane) {
-    case 1:
-      for (std::size_t k = 0; k < in.size(); ++k) {
-        const Vec3 p = in[k];
-        out[k] = Point2{p.x, p.y};
-      }
-      return;
-    case 2:
-      for (std::size_t k = 0; k < in.size(); ++k) {
-        const Vec3 p = in[k];
-        out[k] = Point2{p.x, p.z};
-      }
-      return;
-    case 3:
-      for (std::size_t k = 0; k < in.size(); ++k) {
-        const Vec3 p = in[k];
-        out[k] = Point2{p.y, p.z};
-      }
-      return;
-    default:
-      refuse(DataError::Problem::projection_parameters);
-  }
+  orthog_pass(in, plane, out);
 }
 
 void isom(Vec3View in, int axis, double angle_degrees, MutablePoint2View out) {
-  check_sizes(in, out);
-  if (!isom_parameters_valid(axis, angle_degrees))
-    refuse(DataError::Problem::projection_parameters);
-  // docs/kernels.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn
-  // obliquely.
-  const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
-  for (std::size_t k = 0; k < in.size(); ++k) {
-    const Vec3 p = in[k];
-    double r1, r2, d;
-    if (axis == 1) {
-      r1 = p.y, r2 = p.z, d = p.x;
-    } else if (axis == 2) {
-      r1 = p.x, r2 = p.z, d = p.y;
-    } else {
-      r1 = p.x, r2 = p.y, d = p.z;
-    }
-    out[k] = Point2{r1 + d * c, r2 + d * s};
-  }
+  isom_pass(in, axis, angle_degrees, out);
 }
 
 void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
@@ -228,33 +337,20 @@ void conic(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
   for (const Vec3& p : in) {
     if (!(dot(p - view, f.w) > 0)) refuse(DataError::Problem::behind_eye);
   }
-  for (std::size_t k = 0; k < in.size(); ++k) {
-    const Vec3 q = in[k] - view;
-    const double depth = dot(q, f.w);
-    out[k] = Point2{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
-  }
+  conic_pass(in, view, centre, out);
 }
 
 void asson(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out) {
-  check_sizes(in, out);
-  if (!asson_parameters_valid(angles_degrees)) refuse(DataError::Problem::projection_parameters);
-  const AssonMatrix a = asson_matrix(angles_degrees);
-  for (std::size_t k = 0; k < in.size(); ++k) {
-    const Vec3 p = in[k];
-    out[k] = Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
-  }
+  asson_pass(in, angles_degrees, out);
 }
 
 void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2View out) {
   check_sizes(in, out);
   if (!std::isfinite(angles_degrees[0]) || !std::isfinite(angles_degrees[1]))
     refuse(DataError::Problem::projection_parameters);
-  const AssonMatrix a =
-      prospar_matrix((angles_degrees[0] + 90) * degree, (angles_degrees[1] + 90) * degree);
-  for (std::size_t k = 0; k < in.size(); ++k) {
-    const Vec3 p = in[k];
-    out[k] = Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
-  }
+  matrix_pass(in,
+              prospar_matrix((angles_degrees[0] + 90) * degree, (angles_degrees[1] + 90) * degree),
+              out);
 }
 
 Vec3 bounding_box_centre(Vec3View points) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 
 #include "workspace/kernels/vec3.h"
 
@@ -31,8 +32,15 @@ bool view_parameters_valid(const View& view);
 // The entry point: `in` projected as `view` says into `out` (as long as `in`). CONIC looks from
 // the view point at `centre`, the centre of the input points' bounding box; the other projections
 // ignore it. Throws DataError (projection_parameters, behind_eye, view_at_centre) before writing
-// anything.
+// anything. A large `in` is projected on the machine's cores.
 void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
+
+// The same for the points of an image (DISPLAY INPUT, DISPLAY SURFACE), in one pass over them:
+// CONIC also refuses a view point inside the points' bounding box (view_inside_box, before any
+// other report but projection_parameters). Returns the index of the first point whose image is
+// not finite (finite points near the largest numbers overflow), in.size() when every one is.
+// Throws the DataErrors of project(), after writing: `out` holds nothing to use then.
+std::size_t project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 
 // The same projection as a map of homogeneous coordinates: (X h, Y h, h) = M (x, y, z, 1). The
 // parallel projections have h = 1; CONIC has h the depth along the line of sight divided by D,

@@ -65,6 +65,25 @@ void check_tangents(const SurfaceInput& in) {
   }
 }
 
+// The error of a surface whose first number not finite is PATCHES' `kp` or INTPN's `ki` (the
+// array's size: none).
+std::optional<DataError> not_finite(const Array& patches, std::size_t kp, const Array& intpn,
+                                    std::size_t ki) {
+  if (kp < patches.size()) {
+    DataError e(DataError::Problem::patch_not_finite);
+    e.number = kp / 48 + 1;
+    return e;
+  }
+  if (ki < intpn.size()) {
+    const std::size_t columns = intpn.rank() == 3 ? intpn.shape[1] : 1;
+    DataError e(DataError::Problem::grid_point_not_finite);
+    e.number = ki / 3 / columns + 1;
+    e.column = ki / 3 % columns + 1;
+    return e;
+  }
+  return std::nullopt;
+}
+
 void check_patches(const SurfaceInput& in, const Array& patches) {
   const std::size_t pr = in.nocur - 1, pc = in.nostr - 1;
   require_shape("PATCHES", &patches, {pr, pc, 3, 4, 4});
@@ -104,54 +123,48 @@ void interpolate_line(const SurfaceInput& in, Surface& out) {
 
 Surface interpolate(const SurfaceInput& input) {
   Surface s;
-  interpolate_into(input, s);
+  (void)interpolate_into(input, s);  // returned as it is: the caller checks or refuses it
   return s;
 }
 
-void interpolate_into(const SurfaceInput& input, Surface& out) {
+std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out) {
   check_grid(input);
   check_tangents(input);
   if (input.nocur == 1 || input.nostr == 1) {
     Surface line;
     interpolate_line(input, line);
     out = std::move(line);
-    return;
+    return not_finite(out.patches, 0, out.intpn,
+                      first_not_finite(out.intpn.data(), out.intpn.size()));
   }
   if (&out.patches == input.inppn || &out.patches == input.inptg || &out.intpn == input.inppn ||
       &out.intpn == input.inptg) {
     // The output would overwrite the input while it is read: compute apart.
-    out = interpolate(input);
-    return;
+    Surface apart;
+    auto error = interpolate_into(input, apart);
+    out = std::move(apart);
+    return error;
   }
   const auto points = as_vec3(*input.inppn);
   // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
   const Array twists =
       input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
-  coons_patches(input.nocur, input.nostr, points,
-                grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches,
-                as_vec3(twists));
-  fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
-}
-
-void check_finite(const Array& patches, const Array& intpn) {
-  if (const std::size_t k = first_not_finite(patches.data(), patches.size()); k < patches.size())
-    refuse(DataError::Problem::patch_not_finite, k / 48 + 1);
-  if (const std::size_t k = first_not_finite(intpn.data(), intpn.size()); k < intpn.size()) {
-    const std::size_t columns = intpn.rank() == 3 ? intpn.shape[1] : 1;
-    DataError e(DataError::Problem::grid_point_not_finite);
-    e.number = k / 3 / columns + 1;
-    e.column = k / 3 % columns + 1;
-    throw e;
-  }
+  const std::size_t kp = coons_patches(
+      input.nocur, input.nostr, points,
+      grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches, as_vec3(twists));
+  const std::size_t ki =
+      fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
+  return not_finite(out.patches, kp, out.intpn, ki);
 }
 
 Array refit(const SurfaceInput& input, const Array& patches) {
   Array intpn;
-  refit_into(input, patches, intpn);
+  (void)refit_into(input, patches, intpn);  // returned as it is: the caller checks or refuses it
   return intpn;
 }
 
-void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
+std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
+  static const Array none;
   check_grid(input);
   if (input.nocur == 1 || input.nostr == 1) {
     // A line has no patches: its grid comes from its points and end tangents.
@@ -159,14 +172,19 @@ void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
     Surface line;
     interpolate_line(input, line);
     intpn = std::move(line.intpn);
-    return;
+    return not_finite(none, 0, intpn, first_not_finite(intpn.data(), intpn.size()));
   }
   check_patches(input, patches);
   if (&intpn == input.inppn || &intpn == &patches) {
-    intpn = refit(input, patches);
-    return;
+    Array apart;
+    auto error = refit_into(input, patches, apart);
+    intpn = std::move(apart);
+    return error;
   }
-  fit(input.nocur, input.nostr, input.intcu, input.intst, patches, as_vec3(*input.inppn), intpn);
+  // PATCHES are finite (check_patches): INTPN alone can overflow.
+  return not_finite(none, 0, intpn,
+                    fit(input.nocur, input.nostr, input.intcu, input.intst, patches,
+                        as_vec3(*input.inppn), intpn));
 }
 
 }  // namespace igds

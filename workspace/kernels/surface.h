@@ -1,7 +1,10 @@
 // The whole interpolation of a surface: COONS (tangents and patch matrices) then FIT (the grid).
 #pragma once
 
+#include <optional>
+
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/data_error.h"
 
 namespace igds {
 
@@ -23,14 +26,9 @@ struct Surface {
 // COONS then FIT; for a single curve (NOCUR 1) or stringer (NOSTR 1) the spline of its points,
 // and PATCHES empty ((NOCUR-1) x (NOSTR-1) x 3 x 4 x 4 with a 0). Throws DataError
 // (workspace/kernels/data_error.h) for data that cannot be interpolated: a non-finite coordinate or
-// tangent (naming the point), shapes that do not match.
+// tangent (naming the point), shapes that do not match. A result that overflowed is returned as
+// it is (interpolate_into says so).
 Surface interpolate(const SurfaceInput& input);
-
-// A surface computed from finite inputs can still overflow when they are near the largest
-// numbers (a tangent of 1E308): throws DataError for its first number that is not finite,
-// patch_not_finite naming the patch (row by row from 1), or grid_point_not_finite naming INTPN's
-// row and column. Every surface computed is checked so before it is kept.
-void check_finite(const Array& patches, const Array& intpn);
 
 // FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
 // points are copied bit-exactly to their places in the grid. A single curve or stringer has no
@@ -39,9 +37,15 @@ Array refit(const SurfaceInput& input, const Array& patches);
 
 // The same, written into arrays the caller already holds: their memory is reused when it is large
 // enough (a recompute of a surface of the same size then writes no fresh pages, which on a large
-// grid costs more than the interpolation itself). All checks come first: on DataError the output
-// is unchanged.
-void interpolate_into(const SurfaceInput& input, Surface& out);
-void refit_into(const SurfaceInput& input, const Array& patches, Array& intpn);
+// grid costs more than the interpolation itself). All checks of the inputs come first: on
+// DataError thrown the output is unchanged. A surface computed from finite inputs can still
+// overflow when they are near the largest numbers (a tangent of 1E308): returned is the DataError
+// for its first number that is not finite, patch_not_finite naming the patch (row by row from 1),
+// or grid_point_not_finite naming INTPN's row and column, found by the kernels as they make the
+// numbers (nullopt: every one is finite). The output is overwritten then: a surface that overflowed
+// is never kept.
+[[nodiscard]] std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out);
+[[nodiscard]] std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patches,
+                                                  Array& intpn);
 
 }  // namespace igds
