@@ -50,32 +50,38 @@ struct Box {
   bool empty() const { return lo.x > hi.x; }
 };
 
+// Whether a curve's weights make it rational (an empty list is all ones).
+bool is_rational(std::span<const double> w) {
+  return !w.empty() && std::any_of(w.begin(), w.end(), [&](double x) { return x != w[0]; });
+}
+
 // The tight box of what a reader draws from the file (docs/exchange.md, "Limits"): pixels on the
-// curves, and the extremes inside each span, both from the coordinates as written.
+// curves, and the extremes inside each span, both from the coordinates as written. Rounding to
+// E14.7 never reorders values, so of the pixels only the extremes are rounded, at the end; a
+// written coordinate is within 5e-7 of its magnitude of the exact one.
 class BoxBuilder {
  public:
-  // A pixel on what is drawn. Rounding to E14.7 never reorders values, so only the extremes are
-  // rounded, at the end.
+  // A pixel on what is drawn.
   void add(Vec3 p) { pixels_.add(p); }
-  // A Bézier span: its ends are pixels; its inside is the span of the written controls, worked
-  // out only when it could reach past the box (each written coordinate is within 5e-7 of its
-  // magnitude of the exact one, and so is every point of the span of them).
+  // A Bézier span, once every pixel is in: its inside is the span of the written controls,
+  // worked out only when the span could reach past the box (near a flat end the written span can
+  // pass its end pixel).
   void add_bezier(std::span<const Vec3> controls) {
-    add(controls.front());
-    add(controls.back());
-    Vec3 extremes[8];
-    std::size_t n = span_extremes(3, controls, {}, extremes);
-    extremes[n++] = controls.front();  // near a flat end the written span can pass its end
-    extremes[n++] = controls.back();
     Vec3 most{0, 0, 0};
     for (Vec3 c : controls)
       most = {std::max(most.x, std::abs(c.x)), std::max(most.y, std::abs(c.y)),
               std::max(most.z, std::abs(c.z))};
     const Vec3 margin = 5e-7 * most;
-    bool beyond = false;
-    for (std::size_t k = 0; k < n; ++k)
-      beyond = beyond || !inside(extremes[k] - margin) || !inside(extremes[k] + margin);
-    if (!beyond) return;
+    auto holds = [&](std::span<const Vec3> points) {
+      return std::all_of(points.begin(), points.end(),
+                         [&](Vec3 p) { return inside(p - margin) && inside(p + margin); });
+    };
+    if (holds(controls)) return;  // the span lies in its controls' hull
+    Vec3 extremes[8];
+    std::size_t n = span_extremes(3, controls, {}, extremes);
+    extremes[n++] = controls.front();
+    extremes[n++] = controls.back();
+    if (holds({extremes, n})) return;
     Vec3 written[4];
     for (std::size_t k = 0; k < 4; ++k) written[k] = as_written(controls[k]);
     const std::size_t m = span_extremes(3, written, {}, extremes);
@@ -100,7 +106,7 @@ class BoxBuilder {
   }
   bool empty() const { return pixels_.empty(); }
   // The box of both: the extreme pixels as written.
-  Box lo_hi() const {
+  Box box() const {
     Box b = inner_;
     b.add(as_written(pixels_.lo));
     b.add(as_written(pixels_.hi));
@@ -108,8 +114,8 @@ class BoxBuilder {
   }
 
  private:
-  // Whether `p` is inside what is known of the box (the pixels as written are within 5e-7 of
-  // their magnitude of the exact ones).
+  // Whether `p` is inside what is known of the box: the pixels' box less their rounding, and
+  // the written spans' extremes.
   bool inside(Vec3 p) const {
     auto in = [](double v, double pixel_lo, double pixel_hi, double lo, double hi) {
       return v >= std::min(pixel_lo + 5e-7 * std::abs(pixel_lo), lo) &&
@@ -165,7 +171,9 @@ std::string printable(std::string_view s) {
 // else to the most significant digits fortran::input_text fits in 10 columns.
 double outwards(double v, bool up) {
   if (v == 0 || !std::isfinite(v)) return v;
-  auto outside = [&](double r) { return up ? r >= v : r <= v; };
+  // A value on the grid but for the rounding of a span's evaluation stays there.
+  const double slack = 1e-13 * std::abs(v);
+  auto outside = [&](double r) { return up ? r >= v - slack : r <= v + slack; };
   const double towards = up ? 1 : -1;
   if (std::abs(v) >= 1) {
     auto on_grid = [](double x) -> std::optional<double> {
@@ -277,15 +285,13 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
         break;
       }
       case Kind::curve: {
-        const bool rational =
-            !w.empty() && std::any_of(w.begin(), w.end(), [&](double x) { return x != w[0]; });
+        const bool rational = is_rational(w);
         if (item.degree == 3 && !rational) {
           DuctInstruction* in = start(item.style, DuctArc::bezier, DuctMark::none, DuctPen::move);
           all_lines = false;
           for (Vec3 v : points) add_pixel(v);
           if (measure)
-            for (std::size_t k = 0; k + 3 < points.size(); k += 3)
-              box.add_bezier(std::span(points).subspan(k, 4));
+            for (std::size_t k = 0; k < points.size(); k += 3) box.add(points[k]);
           in->pixels = points.size();
         } else if (item.degree == 3) {
           // A rational cubic has no DUCT form: straight lines close to it.
@@ -355,6 +361,17 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
       }
     }
   }
+  // The insides of the Bézier spans, against the box of every pixel: few come near its sides.
+  if (measure) {
+    for (const auto& item : items) {
+      if (item.kind != Kind::curve || item.degree != 3 || is_rational(drawing.weights(item)))
+        continue;
+      points.clear();
+      for (P point : drawing.points(item)) points.push_back(in_space(point));
+      for (std::size_t k = 0; k + 3 < points.size(); k += 3)
+        box.add_bezier(std::span(points).subspan(k, 4));
+    }
+  }
   if (p.instructions.empty()) {
     start(Style{}, DuctArc::line, DuctMark::none, DuctPen::invisible)->pixels = 1;
     add_pixel({0, 0, 0});
@@ -371,7 +388,7 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   c[8] = view.projected[1];
   c[9] = view.projected[2];
   if (!box.empty()) {
-    const Box b = box.lo_hi();
+    const Box b = box.box();
     p.reals = {outwards(b.lo.x, false),
                outwards(b.hi.x, true),
                outwards(b.lo.y, false),
