@@ -225,6 +225,12 @@ TEST_CASE("a DUCT picture's dashes and colours: 4014 line styles, HP-GL pens and
   for (const char* attribute : {"stroke=\"red\"", "stroke=\"magenta\"", "stroke-dasharray=\"8 4\"",
                                 "stroke-dasharray=\"12 3 2 3\""})
     CHECK(svg.find(attribute) != std::string::npos);
+  // Texts in their pens' colours on both: the title in colour 2, ORIGIN in colour 1.
+  const std::size_t title = plot.hpgl.find("LBIGDS HAND");
+  REQUIRE(title != std::string::npos);
+  CHECK(plot.hpgl.substr(plot.hpgl.rfind("SP", title), 4) == "SP2;");
+  CHECK(svg.find("fill=\"red\" stroke=\"none\">IGDS HAND") != std::string::npos);
+  CHECK(svg.find("fill=\"black\" stroke=\"none\">ORIGIN<") != std::string::npos);
   IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
   hp2xx(plot.hpgl);
 }
