@@ -500,7 +500,9 @@ TEST_CASE("igds: DISPLAY PICTURE on the 4013, kept by the session for the next i
   fs::remove(disk.path() / "HAND.DUCTPIC");
   const RunResult next = run_commands(disk, "DISPLAY FIRST\nEXPORT DUCT AGAIN IMAGE\n");
   INFO(next.out);
-  CHECK(next.out.find("IMAGE: PICTURE, ORTHOGONAL XY") != std::string::npos);
+  // The --term none line says what the caption says: the name, the colours.
+  CHECK(next.out.find("IMAGE: PICTURE HAND, ORTHOGONAL XY, COLOURS 1 2 3 4 5\n") !=
+        std::string::npos);
   CHECK(next.out.find("AGAIN.DUCTPIC: THE IMAGE AS PROJECTED, ") != std::string::npos);
   const DuctPicture again = read_duct(read_file(disk.path() / "AGAIN.DUCTPIC"));
   CHECK(again.counters[6] == 2);
