@@ -38,8 +38,8 @@ constexpr Choice options[] = {
     {"SVG", svg, "[name]", "NAME.SVG, a picture any web browser shows"},
     {"TEK", tek, "[name]", "NAME.TEK, the bytes a Tektronix 4013 would receive"},
     {"HPGL", hpgl, "[name]", "NAME.HPGL, the plot PLOT would send"},
-    {"DUCT", duct, "[name [IMAGE]]",
-     "NAME.DUCTPIC, a DUCT 4.4 picture of the surface, or with IMAGE of the image"},
+    {"DUCT", duct, "[name]",
+     "NAME.DUCTPIC, a DUCT 4.4 picture of the surface (name IMAGE: the image)"},
     {"IGES", iges, "[name]", "NAME.IGS, the surface as exact B-spline patches (IGES 5.3)"},
     {"STEP", step, "[name]", "NAME.STP, the same in STEP (ISO 10303-21, AP214)"},
 };

@@ -590,14 +590,12 @@ TEST_CASE("the writer's lines have the spec's field widths") {
   d.add_mark({5, 5, 5}, MarkShape::diamond, 3);
   d.add_text({1, 2, 3}, "A TEXT", 1, {.pen = 4});
   const std::string text = write_duct(duct_picture(d, {"ARC", "22 SEP 1987 09:55:50", "A TITLE"}));
-  // The quarter circle as written (its mid pixel 7.071068, a little outside the circle) passes
-  // x = 10 and y = 10 near its ends: the limits hold it.
   CHECK(text ==
         "IGDS PICTURE FILE ARC 22 SEP 1987 09:55:50\n"
         "A TITLE\n"
         " *\n"
         "      7     3    -1     4     7     0     3     0     0     0\n"
-        "     0.0000   10.0001    0.0000   10.0001    0.0000    5.0000    0.0000\n"
+        "     0.0000   10.0000    0.0000   10.0000    0.0000    5.0000    0.0000\n"
         "        4097      2\n"
         "        6658      3\n"
         "        2312      1\n"
@@ -782,7 +780,7 @@ std::vector<Magnitude> magnitudes() {
 
 }  // namespace
 
-TEST_CASE("every record is in DUCT's columns at any magnitude; the limits hold what is drawn") {
+TEST_CASE("every record is in DUCT's columns at any magnitude, and the limits hold what is drawn") {
   const Drawing3 base = every_kind();
   for (const Magnitude& m : magnitudes()) {
     CAPTURE(m.scale);
