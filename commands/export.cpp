@@ -40,7 +40,8 @@ constexpr Choice options[] = {
     {"SVG", svg, "[name]", "NAME.SVG, a picture any web browser shows"},
     {"TEK", tek, "[name]", "NAME.TEK, the bytes a Tektronix 4013 would receive"},
     {"HPGL", hpgl, "[name]", "NAME.HPGL, the plot PLOT would send"},
-    {"DUCT", duct, "[name]", "NAME.DUCTPIC, a DUCT 4.4 picture of the surface or the image"},
+    {"DUCT", duct, "[name [IMAGE]]",
+     "NAME.DUCTPIC, a DUCT 4.4 picture of the surface (name IMAGE: the image)"},
     {"IGES", iges, "[name [FACES] [M|MM|CM|INCH|FOOT|NONE]]",
      "NAME.IGS, the surface as one exact B-spline surface (IGES 5.3)"},
     {"STEP", step, "[name [FACES] [M|MM|CM|INCH|FOOT|NONE]]",
@@ -91,6 +92,12 @@ const Prompt file_prompt{"FILE NAME?",
                          "1 to 8 letters, digits or $ # @ + - _; a file of that name is "
                          "replaced. After an IGES or STEP name: FACES, M MM CM INCH FOOT NONE."};
 
+// EXPORT DUCT's name, and after it IMAGE for the current image as projected (docs/decisions.md).
+constexpr Choice duct_words[] = {{"IMAGE", 1, "", "the current image as projected"}};
+const Prompt duct_prompt{"FILE NAME?",
+                         "A name for the file: 1 to 8 letters, digits or $ # @ + - _; after it "
+                         "IMAGE for the current image as projected, not the surface."};
+
 // The date the exchange files carry: now, local time; SOURCE_DATE_EPOCH (seconds since 1970,
 // UTC), when set, as reproducible builds date their files (the golden tests use it).
 Timestamp export_date() {
@@ -113,13 +120,16 @@ SurfaceInput input_of(const Workspace& ws) {
   return {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg};
 }
 
-// What EXPORT DUCT writes (docs/decisions.md): the surface itself, in space and exactly, when
-// there is one and the current image is none or a DISPLAY INPUT or SURFACE of it; the current
-// image as projected (I7 = 2) otherwise (a picture, an image of another surface or from a file).
-bool duct_of_surface(const Workspace& ws) {
-  if (!ws.has_surface()) return false;
-  if (!ws.image) return true;
-  return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
+// EXPORT DUCT's name; `image` set by IMAGE after it.
+std::string ask_duct_name(Context& ctx, bool& image) {
+  return ask_for(ctx, duct_prompt, [&](const std::vector<std::string>& words) {
+    auto name = words.empty() ? std::nullopt : cms_name(words[0]);
+    if (!name) throw ParameterError(name_rule);
+    if (words.size() > 2 || (words.size() == 2 && !choose(duct_words, words[1])))
+      throw ParameterError("AFTER THE NAME ONLY IMAGE (THE CURRENT IMAGE AS PROJECTED)");
+    image = words.size() == 2;
+    return *name;
+  });
 }
 
 // The DUCT writer refuses item n of a drawing (1-based) that is not finite: the report names what
@@ -157,10 +167,11 @@ Report not_finite_in_picture(const Drawing& drawing, const DataError& e) {
                             what));
 }
 
-// EXPORT DUCT into `out`, written straight from the surface's curves or the image's drawing.
-void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
+// EXPORT DUCT into `out`, written straight from the surface's curves or, with IMAGE, the image's
+// drawing.
+void duct_file(const Workspace& ws, const std::string& name, bool image, TextOut& out) {
   const std::string date = duct_date(export_date());
-  if (duct_of_surface(ws)) {
+  if (!image) {
     const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
@@ -171,7 +182,6 @@ void duct_file(const Workspace& ws, const std::string& name, TextOut& out) {
     }
     return;
   }
-  if (!ws.image) throw Report(reports::surface_not_found);
   std::string title;
   for (const std::string& line : describe(ws.image->desim, 72))
     title += (title.empty() ? "" : " ") + line;
@@ -233,6 +243,7 @@ void run_export(Context& ctx, const Choice* option) {
   }
   std::string name;
   CadChoice choice;
+  bool image = false;  // EXPORT DUCT name IMAGE
   if (code == iges || code == step) {
     // The name, then FACES and a unit, on the line or typed at the question.
     ask_for(ctx, file_prompt, [&](const std::vector<std::string>& words) {
@@ -242,6 +253,12 @@ void run_export(Context& ctx, const Choice* option) {
       name = *cms;
       return true;
     });
+  } else if (code == duct) {
+    name = ask_duct_name(ctx, image);
+    if (image && !ws.image) throw Report(reports::image_not_found);
+    if (!image && !ws.has_surface())
+      throw Report(reports::surface_not_found,
+                   "EXPORT DUCT NAME IMAGE WRITES THE CURRENT IMAGE AS PROJECTED");
   } else {
     name = ask_file_name(ctx, file_prompt);
   }
@@ -272,9 +289,9 @@ void run_export(Context& ctx, const Choice* option) {
       }
       case duct:
         // Made while it is written: a picture may be hundreds of megabytes.
-        holds = duct_of_surface(ws) ? "THE SURFACE IN SPACE" : "THE IMAGE AS PROJECTED";
+        holds = image ? "THE IMAGE AS PROJECTED" : "THE SURFACE IN SPACE";
         size = write_user_file(ctx.disk(), name, type,
-                               [&](TextOut& out) { duct_file(ws, name, out); });
+                               [&](TextOut& out) { duct_file(ws, name, image, out); });
         break;
       case iges:
       case step:
@@ -292,7 +309,7 @@ void run_export(Context& ctx, const Choice* option) {
   if (existed) ctx.say(fmt::format("{}.{} REPLACED", name, type));
 }
 
-constexpr const Prompt* questions[] = {&file_prompt};
+constexpr const Prompt* questions[] = {&file_prompt, &duct_prompt};
 
 }  // namespace
 
@@ -314,11 +331,10 @@ extern const Command export_command{
         "  EXPORT TEK [name]   NAME.TEK, the bytes a Tektronix 4013 would receive (a clean "
         "screen, the image, the description); tek2plot and xterm -t read it\n"
         "  EXPORT HPGL [name]  NAME.HPGL, the plot PLOT would send, for a plotter or hp2xx\n"
-        "  EXPORT DUCT [name]  NAME.DUCTPIC, a DUCT 4.4 picture file: the surface's curves and "
-        "stringers as exact Bezier spans in space, the input points and border tangents in colour "
-        "2, when the current image is of the current surface (or there is none); else the current "
-        "image as projected (a picture read by DISPLAY PICTURE, an image of another surface or "
-        "from a file)\n"
+        "  EXPORT DUCT [name [IMAGE]]  NAME.DUCTPIC, a DUCT 4.4 picture file: the current "
+        "surface's curves and stringers as exact Bezier spans in space, the input points and "
+        "border tangents in colour 2, whatever the current image; with IMAGE the current image "
+        "as projected instead (a picture read by DISPLAY PICTURE, an image from a file)\n"
         "  EXPORT IGES [name]  NAME.IGS, the surface for CAD systems: one exact bicubic B-spline "
         "surface, one face, and the input curves and stringers as B-spline curves in a group "
         "CURVES (IGES 5.3)\n"
@@ -330,8 +346,8 @@ extern const Command export_command{
         "one). IGDS's numbers are written as they are, whatever the unit.\n"
         "\n"
         "A file of the same name and type is replaced, and EXPORT says so (HULL.SVG REPLACED). "
-        "With no current image EXPORT SVG, TEK or HPGL says IMAGE NOT FOUND; with no surface "
-        "EXPORT IGES or STEP (and DUCT with no image either) says SURFACE NOT FOUND; a name that "
+        "With no current image EXPORT SVG, TEK or HPGL (and DUCT name IMAGE) says IMAGE NOT "
+        "FOUND; with no surface EXPORT DUCT, IGES or STEP says SURFACE NOT FOUND; a name that "
         "is not 1 to 8 letters, digits or $ # @ + - _ gets INCORRECT PARAMETER. The exchange "
         "files are dated now, or by SOURCE_DATE_EPOCH.\n"
         "\n"

@@ -375,6 +375,24 @@ std::string plain_number(double value) {
   return out;
 }
 
+namespace {
+
+// COLOURS and the pens of a picture's drawing when it has several (the 4013 draws them alike);
+// "" when it has one.
+std::string colours_line(const Drawing2& drawing) {
+  std::vector<int> pens;
+  for (const auto& item : drawing.items())
+    if (std::find(pens.begin(), pens.end(), item.style.pen) == pens.end())
+      pens.push_back(item.style.pen);
+  std::sort(pens.begin(), pens.end());
+  if (pens.size() < 2) return "";
+  std::string line = "COLOURS";
+  for (int pen : pens) line += fmt::format(" {}", pen);
+  return line;
+}
+
+}  // namespace
+
 std::vector<std::string> image_caption(const Image& image, std::size_t width) {
   std::vector<std::string> lines = describe(image.desim, width);
   if (image.window) lines.push_back(fitted(zoomed_word, width));
@@ -394,6 +412,12 @@ constexpr const char* auto_words = "TANGENTS AUTO";
 std::string image_line(const Image& image) {
   std::string line = describe_line(image.desim);
   if (image.desim.what == 0 && image.auto_tangents) line += std::string(", ") + auto_words;
+  if (image.desim.what == 2 && image.picture) {
+    // As the caption says it: the picture's name after PICTURE, its colours.
+    line.insert(line.find(','), " " + image.picture->name);
+    if (const std::string colours = colours_line(image.picture->drawing); !colours.empty())
+      line += ", " + colours;
+  }
   if (const auto& w = image.window) line += ", " + zoom_words(*w);
   return line;
 }
@@ -465,16 +489,8 @@ Picture picture_of_duct(const Image& image) {
   if (!image.picture) return pic;
   pic.drawing = image.picture->drawing;
   pic.caption.insert(pic.caption.begin() + 1, fitted(image.picture->name, caption_width));
-  std::vector<int> pens;
-  for (const auto& item : pic.drawing.items())
-    if (std::find(pens.begin(), pens.end(), item.style.pen) == pens.end())
-      pens.push_back(item.style.pen);
-  std::sort(pens.begin(), pens.end());
-  if (pens.size() > 1) {
-    std::string line = "COLOURS";
-    for (int pen : pens) line += fmt::format(" {}", pen);
-    pic.caption.push_back(fitted(line, caption_width));
-  }
+  if (const std::string colours = colours_line(pic.drawing); !colours.empty())
+    pic.caption.push_back(fitted(colours, caption_width));
   return pic;
 }
 

@@ -43,7 +43,8 @@ std::vector<std::string> describe(const Description& desim, std::size_t width);
 std::string describe_line(const Description& desim);
 
 // The same for an image, saying when it is zoomed: the caption gets a line ZOOMED, the line
-// `, ZOOMED TO x0 y0 x1 y1` (the window's corners).
+// `, ZOOMED TO x0 y0 x1 y1` (the window's corners). The line of a picture has what its caption
+// has: `IMAGE: PICTURE HAND, ORTHOGONAL XY, COLOURS 1 2 5`.
 std::vector<std::string> image_caption(const Image& image, std::size_t width);
 std::string image_line(const Image& image);
 inline constexpr std::string_view zoomed_word = "ZOOMED";

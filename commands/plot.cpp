@@ -133,6 +133,7 @@ void plot_picture(Context& ctx, const Picture& picture) {
   }
   ctx.say(plot_summary(where, stats));
   if (stats.clipped) ctx.say(plot_clipped_notice);
+  if (stats.texts_cut) ctx.say(plot_texts_cut_notice);
 }
 
 extern const Command plot_command{

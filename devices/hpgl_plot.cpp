@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "devices/hpgl.h"
+#include "devices/layout.h"
 #include "devices/plot_order.h"
 #include "devices/render.h"
 
@@ -57,7 +58,10 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
                       TextOut& out) {
   const PlotterModel& model = hp7475a;
   DevicePoint lim = model.limit(options.paper);
-  const Rendering rendering{.point = plot_point_mm / model.unit_mm};
+  // A text never runs into the caption's strip, which lies inside the paper.
+  const Rendering rendering{.point = plot_point_mm / model.unit_mm,
+                            .char_width = layout.advance,
+                            .text_right = layout.text.x - layout.advance / 2};
   const Placed placed =
       place(picture.drawing, layout.at, {0, 0, double(lim.x), double(lim.y)}, rendering);
   HpglEncoder hpgl(model, options.absolute, out);
@@ -65,7 +69,9 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
   // the sheet is left out (and said, as clipping).
   bool clipped = placed.clipped;
   DevicePoint t = layout.text, pen{0, 0};
-  for (const auto& line : picture.caption) {
+  std::vector<std::string_view> caption(picture.caption.begin(), picture.caption.end());
+  if (placed.texts_cut) caption.push_back(texts_cut_line);
+  for (std::string_view line : caption) {
     int end =
         t.x + static_cast<int>(std::lround(layout.advance * static_cast<double>(line.size())));
     int cap = static_cast<int>(std::lround(label_height_cm * 10 / model.unit_mm));
@@ -107,6 +113,7 @@ PlotStats plot_placed(const Picture& picture, const PlotLayout& layout, const Pl
   hpgl.finish();
   PlotStats stats = hpgl.stats();
   stats.clipped = clipped;
+  stats.texts_cut = placed.texts_cut;
   return stats;
 }
 

@@ -26,7 +26,8 @@ struct PlotStats {
   std::size_t pen_lifts = 0;  // pen-up moves
   double pen_up_mm = 0;       // pen-up travel, including the legs from and back to the start
   std::size_t bytes = 0;
-  bool clipped = false;  // something lay outside the hard-clip limits and was clipped
+  bool clipped = false;    // something lay outside the hard-clip limits and was clipped
+  bool texts_cut = false;  // a text of the drawing was cut at the caption's strip
 };
 
 struct Plot {
@@ -67,5 +68,8 @@ Plot plot_hpgl(const Picture& picture, const PlotOptions& options);
 std::string plot_summary(std::string_view where, const PlotStats& stats);
 inline constexpr std::string_view plot_clipped_notice =
     "PARTS OF THE IMAGE OUTSIDE THE PAPER WERE CLIPPED";
+// And when a text of the drawing was cut, not to run into the caption or off the paper.
+inline constexpr std::string_view plot_texts_cut_notice =
+    "TEXTS OF THE IMAGE TOO LONG FOR THEIR ROOM WERE CUT";
 
 }  // namespace igds

@@ -24,26 +24,34 @@ TekLayout dialogue_layout() {
           .dialogue_rows = rows};
 }
 
-void draw_picture(const Picture& picture, Device& device, int unit, const TekLayout& layout) {
+bool draw_picture(const Picture& picture, Device& device, int unit, const TekLayout& layout) {
   using namespace tek_screen;
   const Box& sq = layout.image;
   const Box box{unit * (sq.x0 + image_margin), unit * (sq.y0 + image_margin),
                 unit * (sq.x1 - image_margin), unit * (sq.y1 - image_margin)};
   const Placement at = fit(picture.drawing, box, unit * mark);
-  render(picture.drawing, at, {0, 0, unit * (width - 1.0), unit * (height - 1.0)},
-         Rendering{.point = double(unit)}, device);
+  // A text never runs into the caption (nor, on a 4013, past the screen's edge, where it would
+  // go on at the left over the picture).
+  const Rendering rendering{.point = double(unit),
+                            .char_width = double(unit * char_width),
+                            .text_right = double(unit * (layout.caption_x - char_width / 2))};
+  bool cut = false;
+  render(picture.drawing, at, {0, 0, unit * (width - 1.0), unit * (height - 1.0)}, rendering,
+         device, &cut);
   device.style({});
+  return cut;
 }
 
 DevicePoint draw_tek_display(const Picture& picture, Device& device, int unit) {
   using namespace tek_screen;
-  draw_picture(picture, device, unit, full_layout());
+  const bool cut = draw_picture(picture, device, unit, full_layout());
   int y = text_top;
   for (const auto& line : picture.caption) {
     device.text({unit * text_x, unit * y}, line);
     y -= line_height;
   }
-  return below_description(picture.caption.size(), unit);
+  if (cut) device.text({unit * text_x, unit * y}, texts_cut_line);
+  return below_description(picture.caption.size() + (cut ? 1 : 0), unit);
 }
 
 DevicePoint below_description(std::size_t lines, int unit) {

@@ -2,6 +2,8 @@
 // the 4013 stream and the SVG so that both carry the same coordinates.
 #pragma once
 
+#include <string_view>
+
 #include "devices/device.h"
 #include "devices/render.h"
 #include "workspace/drawing/drawing.h"
@@ -44,16 +46,22 @@ TekLayout dialogue_layout();
 inline constexpr int text_rows = tek_screen::text_top / tek_screen::line_height + 1;
 inline constexpr int text_columns = (tek_screen::width - 1) / tek_screen::char_width;
 
-// Draws the picture (not its caption) in the layout's square.
-void draw_picture(const Picture& picture, Device& device, int unit, const TekLayout& layout);
+// Draws the picture (not its caption) in the layout's square, its texts cut at the caption's
+// column. Returns true when a text was cut: the caption then says so (texts_cut_line).
+bool draw_picture(const Picture& picture, Device& device, int unit, const TekLayout& layout);
+
+// The caption line that says a text of the picture was cut at the caption's column (or at the
+// paper's caption strip, on HP-GL).
+inline constexpr std::string_view texts_cut_line = "TEXTS CUT";
 
 // Where the dialogue goes on after a DISPLAY whose description has `lines` lines: the start of
 // the line below it, at x = 780 (in device units, `unit` times the 4013's).
 DevicePoint below_description(std::size_t lines, int unit);
 
 // Draws `picture` in the left square of the screen and its caption, one item per line, at
-// x = 780 on `device`, whose units are `unit` times the 4013's (1 for 10-bit, 4 for 12-bit).
-// Returns where the dialogue goes on: the start of the line below the caption.
+// x = 780 on `device`, whose units are `unit` times the 4013's (1 for 10-bit, 4 for 12-bit);
+// TEXTS CUT after the caption when a text was. Returns where the dialogue goes on: the start of
+// the line below the caption.
 DevicePoint draw_tek_display(const Picture& picture, Device& device, int unit);
 
 // The longest caption line: the 17 columns of the Tek screen right of the image.

@@ -45,6 +45,7 @@ class Sink {
   virtual void close(std::size_t start, const Style& style) = 0;
   virtual void text(DevicePoint at, const std::string& text, const Style& style) = 0;
   bool clipped = false;
+  bool texts_cut = false;
 };
 
 class ListSink final : public Sink {
@@ -362,8 +363,10 @@ void place_lines(const Drawing2& drawing, std::size_t from, std::size_t to, cons
   }
 }
 
-// The texts of the drawing placed into the sink (after every line).
-void place_texts(const Drawing2& drawing, const Placement& at, const Box& clip, Sink& sink) {
+// The texts of the drawing placed into the sink (after every line), each cut to its room.
+void place_texts(const Drawing2& drawing, const Placement& at, const Box& clip,
+                 const Rendering& rendering, Sink& sink) {
+  std::string cut;
   for (const auto& item : drawing.items()) {
     if (item.kind != Drawing2::Kind::text) continue;
     const Point2 p = drawing.points(item)[0];
@@ -373,7 +376,19 @@ void place_texts(const Drawing2& drawing, const Placement& at, const Box& clip, 
       sink.clipped = true;
       continue;
     }
-    sink.text(rounded(q, clip), drawing.text(item), item.style);
+    const DevicePoint where = rounded(q, clip);
+    const std::string& text = drawing.text(item);
+    if (rendering.char_width > 0) {
+      const double room = std::floor((rendering.text_right - where.x) / rendering.char_width);
+      if (room < static_cast<double>(text.size())) {
+        sink.texts_cut = true;
+        if (room < 1) continue;
+        cut.assign(text, 0, static_cast<std::size_t>(room));
+        sink.text(where, cut, item.style);
+        continue;
+      }
+    }
+    sink.text(where, text, item.style);
   }
 }
 
@@ -585,13 +600,14 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
   out.box.add(second.box);
   ListSink sink(out, out.paths);
   sink.clipped = out.clipped || second.clipped;
-  place_texts(drawing, at, clip, sink);
+  place_texts(drawing, at, clip, rendering, sink);
   out.clipped = sink.clipped;
+  out.texts_cut = sink.texts_cut;
   return out;
 }
 
 bool render(const Drawing2& drawing, const Placement& at, const Box& clip,
-            const Rendering& rendering, Device& device) {
+            const Rendering& rendering, Device& device, bool* texts_cut) {
   if (placing_threads(polyline_points(drawing).back()) > 1) {
     // Placed on two threads first, then drawn as the sink below draws.
     const Placed placed = place(drawing, at, clip, rendering);
@@ -600,11 +616,13 @@ bool render(const Drawing2& drawing, const Placement& at, const Box& clip,
       device.style(t.style);
       device.text(t.at, t.text);
     }
+    if (texts_cut) *texts_cut = placed.texts_cut;
     return placed.clipped;
   }
   DeviceSink sink(device);
   place_lines(drawing, 0, drawing.size(), at, clip, rendering, sink);
-  place_texts(drawing, at, clip, sink);
+  place_texts(drawing, at, clip, rendering, sink);
+  if (texts_cut) *texts_cut = sink.texts_cut;
   return sink.clipped;
 }
 

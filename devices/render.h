@@ -41,6 +41,10 @@ bool clip_segment(Point2& a, Point2& b, const Box& clip);
 struct Rendering {
   double point = 1;
   double tolerance = 0.2;  // in 4013 points: how far a flattened curve may stray
+  // The texts' room: a text is cut to the characters, `char_width` device units each, that end
+  // at `text_right` or before it (docs/devices.md, "Texts"); 0: never cut.
+  double char_width = 0;
+  double text_right = 0;
 };
 
 struct PlacedText {
@@ -54,6 +58,7 @@ struct Placed {
   std::vector<Style> styles;      // the style of each path
   std::vector<PlacedText> texts;  // texts whose place lies inside the clip box
   bool clipped = false;           // something lay outside the clip box
+  bool texts_cut = false;         // a text was longer than its room (Rendering::text_right)
   DeviceBox box;                  // of every path's points
 };
 
@@ -64,8 +69,9 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
              const Rendering& rendering);
 
 // The same, drawn on `device` as it is placed, in drawing order, texts after the lines (no list
-// of every path is kept). Returns true when something was clipped.
+// of every path is kept). Returns true when something was clipped; `texts_cut`, when given, says
+// whether a text was cut.
 bool render(const Drawing2& drawing, const Placement& at, const Box& clip,
-            const Rendering& rendering, Device& device);
+            const Rendering& rendering, Device& device, bool* texts_cut = nullptr);
 
 }  // namespace igds

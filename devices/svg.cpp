@@ -28,14 +28,17 @@ std::string background(std::string_view more = "") {
   return fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"white\"{}/>\n", width, height, more);
 }
 
-// The attributes of polylines in `style`: "" for pen 1, solid, weight 1.
-std::string attributes_of(const Style& style) {
+// The colour of pen n (docs/devices.md, "Pens and dashes"), of lines and texts alike.
+std::string_view colour_of(int pen) {
   static constexpr std::string_view colours[] = {"black",   "red",  "green",  "blue",
                                                  "magenta", "cyan", "orange", "brown"};
+  return colours[static_cast<std::size_t>(std::max(pen, 1) - 1) % 8];
+}
+
+// The attributes of polylines in `style`: "" for pen 1, solid, weight 1.
+std::string attributes_of(const Style& style) {
   std::string a;
-  if (style.pen != 1)
-    a += fmt::format(" stroke=\"{}\"",
-                     colours[static_cast<std::size_t>(std::max(style.pen, 1) - 1) % 8]);
+  if (style.pen != 1) a += fmt::format(" stroke=\"{}\"", colour_of(style.pen));
   switch (style.dash) {
     case Dash::solid:
       break;
@@ -139,11 +142,12 @@ void SvgWriter::text(DevicePoint p, std::string_view line) {
     else
       escaped += (c >= 0x20 && c < 0x7F) ? c : '?';
   }
-  out_->put(fmt::format("<text x=\"{}\" y=\"{}\" fill=\"black\" stroke=\"none\">{}</text>\n", p.x,
-                        flip(p.y), escaped));
+  out_->put(fmt::format("<text x=\"{}\" y=\"{}\" fill=\"{}\" stroke=\"none\">{}</text>\n", p.x,
+                        flip(p.y), colour_of(pen_), escaped));
 }
 
 void SvgWriter::style(const Style& style) {
+  pen_ = style.pen;
   std::string a = attributes_of(style);
   if (a == attributes_) return;
   close_polyline();

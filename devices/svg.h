@@ -41,6 +41,7 @@ class SvgWriter : public Device {
   bool at_known_ = false;
   bool drawing_ = false;
   std::string attributes_;  // of the polylines that follow: "" for pen 1, solid, weight 1
+  int pen_ = 1;             // of the texts that follow
 };
 
 // A standalone SVG of a picture, laid out as on the Tek screen: viewBox in 4013 points,

@@ -281,13 +281,14 @@ void TekScreen::move_cursor(int x, int y) {
 
 void TekScreen::draw_picture_and_captions() {
   if (!picture_) return;
-  draw_picture(*picture_, tek_, unit_, layout_);
+  const bool cut = draw_picture(*picture_, tek_, unit_, layout_);
   cursor_.reset();
   int y = layout_.caption_top;
   for (const auto& line : captions_) {
     if (!line.empty()) draw_caption(y, line);
     y -= tek_screen::line_height;
   }
+  if (cut) draw_caption(y, std::string(texts_cut_line));
 }
 
 void TekScreen::draw_frame() {

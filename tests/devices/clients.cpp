@@ -157,6 +157,70 @@ TEST_CASE("hp2xx reads a clipped plot: nothing beyond the hard-clip limits") {
   CHECK(h.log.y1 <= 7721);
 }
 
+namespace {
+
+// A picture whose label starts near the right of the drawing and is far too long for the room
+// beside it, in colour 2, and a short one that fits.
+Picture long_label() {
+  Picture pic;
+  const double square[] = {0, 0, 100, 0, 100, 100, 0, 100, 0, 0};
+  pic.drawing.add_polyline(Point2View(square, 5));
+  pic.drawing.add_text(
+      {90, 50}, "A LABEL FAR TOO LONG FOR THE ROOM BESIDE IT, ON ANY DEVICE AT ALL", 1, {.pen = 2});
+  pic.drawing.add_text({10, 10}, "SHORT", 1);
+  pic.caption = {"PICTURE", "LONG", "ORTHOGONAL XY"};
+  return pic;
+}
+
+}  // namespace
+
+TEST_CASE("long texts are cut before the caption on every device, and the caption says so") {
+  const Picture pic = long_label();
+  // The Tek layout (EXPORT TEK, SVG, the Tek window): the label ends before x = 780 - 7; the
+  // short one is whole; TEXTS CUT follows the caption.
+  Recorder r;
+  const DevicePoint below = draw_tek_display(pic, r, 1);
+  std::vector<std::string> lines;
+  for (const auto& t : r.texts) {
+    lines.push_back(t.line);
+    if (t.at.x < 780) CHECK(t.at.x + 14 * int(t.line.size()) <= 780 - 7);
+  }
+  CHECK(std::find(lines.begin(), lines.end(), "SHORT") != lines.end());
+  CHECK(std::find(lines.begin(), lines.end(), "TEXTS CUT") != lines.end());
+  CHECK(below.y == 734 - 4 * 22);
+  // The 4013 stream as tek2plot reads it: no text past x = 780 (4 x 780 in its units) but the
+  // caption's, and none wrapped to the left margin over the picture.
+  const std::string stream = tek_stream(pic, {10});
+  if (have_program("tek2plot")) {
+    for (const auto& [at, line] : tek2plot_texts(tek2plot_svg(stream))) {
+      CAPTURE(line);
+      if (at.x < 4 * 780) CHECK(at.x + 4 * 14 * double(line.size()) <= 4 * (780 - 7));
+    }
+  }
+  // SVG: the same places, the label in its colour.
+  const std::string svg = svg_of(pic);
+  CHECK(svg.find(">TEXTS CUT</text>") != std::string::npos);
+  CHECK(svg.find("fill=\"red\" stroke=\"none\">A LABE</text>") != std::string::npos);
+  // HP-GL: the label ends before the caption's strip, on the paper; PLOT says it was cut.
+  for (Paper paper : {Paper::a4, Paper::a3}) {
+    const PlotLayout layout = plot_layout(pic, {paper, true});
+    const Plot plot = plot_placed(pic, layout, {paper, true});
+    CHECK(plot.stats.texts_cut);
+    CHECK(!plot.stats.clipped);
+    CHECK(plot.hpgl.find("LBTEXTS CUT") != std::string::npos);
+    const std::size_t label = plot.hpgl.find("LBA LABEL");
+    REQUIRE(label != std::string::npos);
+    const std::size_t end = plot.hpgl.find('\x03', label);
+    CHECK(end - label - 2 < 40);
+    const int x = std::stoi(plot.hpgl.substr(plot.hpgl.rfind("PU", label) + 2));
+    CHECK(x + layout.advance * double(end - label - 2) <= layout.text.x);
+    if (have_program("hp2xx")) {
+      const Hp2xx h = hp2xx(plot.hpgl);
+      CHECK(h.log.x1 <= hp7475a.limit(paper).x);
+    }
+  }
+}
+
 TEST_CASE("xmllint reads the SVG; its coordinates are the Tek ones, y flipped") {
   IGDS_SKIP_UNLESS(have_program("xmllint"), "xmllint (libxml2-utils) is not installed");
   for (const Image& im : sample_images()) {
@@ -225,6 +289,12 @@ TEST_CASE("a DUCT picture's dashes and colours: 4014 line styles, HP-GL pens and
   for (const char* attribute : {"stroke=\"red\"", "stroke=\"magenta\"", "stroke-dasharray=\"8 4\"",
                                 "stroke-dasharray=\"12 3 2 3\""})
     CHECK(svg.find(attribute) != std::string::npos);
+  // Texts in their pens' colours on both: the title in colour 2, ORIGIN in colour 1.
+  const std::size_t title = plot.hpgl.find("LBIGDS HAND");
+  REQUIRE(title != std::string::npos);
+  CHECK(plot.hpgl.substr(plot.hpgl.rfind("SP", title), 4) == "SP2;");
+  CHECK(svg.find("fill=\"red\" stroke=\"none\">IGDS HAND") != std::string::npos);
+  CHECK(svg.find("fill=\"black\" stroke=\"none\">ORIGIN<") != std::string::npos);
   IGDS_SKIP_UNLESS(have_program("hp2xx"), "hp2xx is not installed");
   hp2xx(plot.hpgl);
 }

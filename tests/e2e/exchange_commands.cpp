@@ -162,7 +162,7 @@ TEST_CASE("EXPORT DUCT, IGES and STEP of a small surface: the golden files, the 
   CHECK(again.substr(again.find('\n')) == duct.substr(duct.find('\n')));
 }
 
-TEST_CASE("EXPORT DUCT of an image not of the surface: the image as projected") {
+TEST_CASE("EXPORT DUCT writes the surface whatever the image, with IMAGE the image as projected") {
   const FixedDate date;
   const TestSurface t = golden_surface();
   TempDir dir;
@@ -171,19 +171,63 @@ TEST_CASE("EXPORT DUCT of an image not of the surface: the image as projected") 
   Image image = surface_image(ctx.ws, view);
   ctx.ws.image = std::make_shared<const Image>(image);
   ctx.ws.changes.replaced();  // the surface changed since the image was drawn
-  ctx.run(export_command, "DUCT", {"IMAGE"});
+  ctx.run(export_command, "DUCT", {"SURFACE"});
+  CHECK(read_duct(read_file(dir.path() / "SURFACE.DUCTPIC")).counters[6] == 3);  // I7: in space
+  CHECK(ctx.said.at(0).starts_with("SURFACE.DUCTPIC: THE SURFACE IN SPACE, "));
+  ctx.run(export_command, "DUCT", {"IMAGE", "IM"});
   const DuctPicture p = read_duct(read_file(dir.path() / "IMAGE.DUCTPIC"));
   CHECK(p.counters[6] == 2);                                           // I7: in the plane
   CHECK(p.counters[7] == static_cast<int>(Projection::assonometric));  // I8: DESIM[2]
   CHECK(p.header.at(1) == "SURFACE ASSONOMETRIC 110 130 120");
   // One straight-line instruction per curve and per stringer of the image, as it is drawn.
   CHECK(p.instructions.size() == picture_of(ctx.ws.image).drawing.size());
-  CHECK(ctx.said.at(0).starts_with("IMAGE.DUCTPIC: THE IMAGE AS PROJECTED, "));
-  // No surface: the image alone.
+  CHECK(ctx.said.at(1).starts_with("IMAGE.DUCTPIC: THE IMAGE AS PROJECTED, "));
+  // The name asked for: IMAGE may follow it there too.
+  ctx.type({"ASKED IMAGE"});
+  ctx.run(export_command, "DUCT");
+  CHECK(read_duct(read_file(dir.path() / "ASKED.DUCTPIC")).counters[6] == 2);
+  CHECK(report_of([&] {
+          ctx.run(export_command, "DUCT", {"X", "SURFACE"});
+        }) == "INCORRECT PARAMETER: AFTER THE NAME ONLY IMAGE (THE CURRENT IMAGE AS PROJECTED)");
+  // No surface: the image only when asked for.
   ctx.ws = Workspace{};
   ctx.ws.image = std::make_shared<const Image>(image);
-  ctx.run(export_command, "DUCT", {"ALONE"});
+  CHECK(report_of([&] { ctx.run(export_command, "DUCT", {"ALONE"}); }) ==
+        "SURFACE NOT FOUND: EXPORT DUCT NAME IMAGE WRITES THE CURRENT IMAGE AS PROJECTED");
+  CHECK(!fs::exists(dir.path() / "ALONE.DUCTPIC"));
+  ctx.run(export_command, "DUCT", {"ALONE", "IMAGE"});
   CHECK(read_file(dir.path() / "ALONE.DUCTPIC").find("SURFACE ASSONOMETRIC") != std::string::npos);
+  // No image: IMAGE NOT FOUND.
+  FakeContext bare(dir.path(), workspace_of(t));
+  CHECK(report_of([&] {
+          bare.run(export_command, "DUCT", {"NONE", "IMAGE"});
+        }) == reports::image_not_found);
+  CHECK(!fs::exists(dir.path() / "NONE.DUCTPIC"));
+}
+
+TEST_CASE("igds: EXPORT DUCT after RESTORE, CHANGE GRID and ERASE writes the surface in space") {
+  TempDir disk;
+  const RunResult run =
+      run_commands(disk, std::string(saddle_build) +
+                             "DISPLAY SURFACE ASSONOMETRIC 110 130 120\nSAVE HULL\nRESTORE HULL\n"
+                             "EXPORT DUCT RESTORED\nCHANGE GRID 3 3\nEXPORT DUCT CHANGED\nERASE\n"
+                             "EXPORT DUCT ERASED\nEXPORT DUCT FLAT IMAGE\n");
+  INFO(run.out);
+  CHECK(run.status == 0);
+  for (const char* name : {"RESTORED", "CHANGED", "ERASED"}) {
+    CAPTURE(name);
+    CHECK(run.out.find(fmt::format("{}.DUCTPIC: THE SURFACE IN SPACE, ", name)) !=
+          std::string::npos);
+    const DuctPicture p = read_duct(read_file(disk.path() / fmt::format("{}.DUCTPIC", name)));
+    CHECK(p.counters[6] == 3);  // I7: in space
+    CHECK(p.counters[7] == 0);  // not projected
+    CHECK(p.header.at(1).starts_with("SURFACE 3 X 3, "));
+  }
+  // CHANGE GRID's surface: 3 x 3 input points interpolated 3 x 3, 7 curves and 7 stringers.
+  CHECK(read_duct(read_file(disk.path() / "CHANGED.DUCTPIC")).header.at(1) ==
+        "SURFACE 3 X 3, INTCU 3, INTST 3");
+  CHECK(run.out.find("FLAT.DUCTPIC: THE IMAGE AS PROJECTED, ") != std::string::npos);
+  CHECK(read_duct(read_file(disk.path() / "FLAT.DUCTPIC")).counters[6] == 2);
 }
 
 TEST_CASE("EXPORT DUCT, IGES, STEP: SURFACE NOT FOUND, INCORRECT PARAMETER, nothing written") {
@@ -191,7 +235,7 @@ TEST_CASE("EXPORT DUCT, IGES, STEP: SURFACE NOT FOUND, INCORRECT PARAMETER, noth
   FakeContext ctx(dir.path());
   for (const char* option : {"DUCT", "IGES", "STEP"})
     CHECK(report_of([&] { ctx.run(export_command, option, {"A"}); }) == reports::surface_not_found);
-  // An image is enough for DUCT, never for IGES and STEP.
+  // An image is enough for EXPORT DUCT name IMAGE, never for IGES and STEP.
   FakeContext with_image(dir.path());
   with_image.ws.image = std::make_shared<const Image>(
       surface_image(workspace_of(golden_surface()), {Projection::orthogonal, {1, 0, 0}}));
@@ -318,8 +362,9 @@ TEST_CASE("DISPLAY PICTURE: a hand-written picture with every curve, pen code, m
   CHECK(page.segments.size() > 50);
   std::vector<std::string> texts;
   for (const TekText& text : page.texts) texts.push_back(text.text);
-  for (const char* expected : {"IGDS HAND-WRITTEN DUCT PICTURE FOR THE READER TESTS", "ORIGIN",
-                               "%mm", "PICTURE", "HAND", "COLOURS 1 2 3 4 5"})
+  // The title (51 characters at x = 164) is cut before the description's column, which says so.
+  for (const char* expected : {"IGDS HAND-WRITTEN DUCT PICTURE FOR THE READ", "ORIGIN", "%mm",
+                               "PICTURE", "HAND", "COLOURS 1 2 3 4 5", "TEXTS CUT"})
     CHECK(std::find(texts.begin(), texts.end(), expected) != texts.end());
   for (const TekSegment& s : page.segments) {
     CHECK(s.a.x >= 0);
@@ -742,11 +787,14 @@ TEST_CASE("igds: DISPLAY PICTURE on the 4013, kept by the session for the next i
     for (const TekText& text : page.texts) texts += text.text + "\n";
   CHECK(texts.find("ORIGIN\n") != std::string::npos);
   CHECK(texts.find("COLOURS 1 2 3 4 5\n") != std::string::npos);
-  // The next igds has the picture as IMAGE and TEMP1; EXPORT DUCT writes it as projected.
+  // The next igds has the picture as IMAGE and TEMP1; EXPORT DUCT ... IMAGE writes it as
+  // projected.
   fs::remove(disk.path() / "HAND.DUCTPIC");
-  const RunResult next = run_commands(disk, "DISPLAY FIRST\nEXPORT DUCT AGAIN\n");
+  const RunResult next = run_commands(disk, "DISPLAY FIRST\nEXPORT DUCT AGAIN IMAGE\n");
   INFO(next.out);
-  CHECK(next.out.find("IMAGE: PICTURE, ORTHOGONAL XY") != std::string::npos);
+  // The --term none line says what the caption says: the name, the colours.
+  CHECK(next.out.find("IMAGE: PICTURE HAND, ORTHOGONAL XY, COLOURS 1 2 3 4 5\n") !=
+        std::string::npos);
   CHECK(next.out.find("AGAIN.DUCTPIC: THE IMAGE AS PROJECTED, ") != std::string::npos);
   const DuctPicture again = read_duct(read_file(disk.path() / "AGAIN.DUCTPIC"));
   CHECK(again.counters[6] == 2);

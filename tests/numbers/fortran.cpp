@@ -442,6 +442,49 @@ TEST_CASE("list-directed values: separators, FORTRAN's exponents, integers") {
   CHECK(split_values(" ,\t ", values, 3) == 0);
 }
 
+TEST_CASE("reals in Fw.d's input columns at any magnitude: the form, the digits, read back") {
+  CHECK(input_text(123456.789, 0) == "123456.789");
+  CHECK(input_text(0.0125, 0) == "0.0125");
+  CHECK(input_text(0.00125, 0) == "1.25E-3");
+  CHECK(input_text(1e-5, 0) == "1.E-5");
+  CHECK(input_text(-1.2345678e-6, 6) == "-1.23457E-6");
+  CHECK(input_text(987654321.0, 7) == "9.876543E8");
+  CHECK(input_text(1e6, 0) == "1.E6");
+  CHECK(input_text(-0.0, 0) == "0.");
+  CHECK(input_text(0.5, 0) == "0.5");
+  char field[10];
+  auto put = [&](double v) {
+    REQUIRE(put_f_input(field, v, 10, 4));
+    return std::string(field, 10);
+  };
+  CHECK(put(25.2207) == "   25.2207");        // F10.4 when it reads back as the value
+  CHECK(put(1234.56789012) == "1234.56789");  // or the most digits that fit
+  CHECK(put(0.7071067811865476) == "0.70710678");
+  CHECK(put(123456.789) == "123456.789");
+  CHECK(put(-98765.4321) == "-98765.432");
+  CHECK(put(1.25e-7) == "   1.25E-7");
+  CHECK(put(-1.2345678e300) == "-1.235E300");
+  CHECK(put(-0.0) == "    0.0000");
+  CHECK(!put_f_input(field, NAN, 10, 4));
+  CHECK(std::string(field, 10) == "**********");
+  // Whatever the value, read_f reads the field as the nearest value of at least 3 significant
+  // digits (a negative value with a 3-digit exponent), 5 from 1e-6 to 1e9.
+  std::mt19937_64 random(37);
+  auto check = [&](double v, double within) {
+    const std::string text = put(v);
+    const auto back = read_f(text, 0, 10, 4);
+    REQUIRE(back);
+    CAPTURE(text);
+    CHECK(std::abs(*back - v) <= within * std::abs(v));
+  };
+  for (int n = 0; n < 200000; ++n) {
+    const double v = std::bit_cast<double>(random());
+    if (std::isfinite(v) && v != 0) check(v, 5e-3);
+    const double m = std::pow(10.0, std::uniform_real_distribution<double>(-6, 9)(random));
+    check(n % 2 ? m : -m, 5e-5);
+  }
+}
+
 TEST_CASE("what the writers write reads back") {
   std::size_t checked = 0;
   for (double v : test::varied_values(50000)) {

@@ -10,11 +10,13 @@
 #include <numbers>
 #include <sstream>
 
+#include "tests/support/skip.h"
 #include "tests/workspace/exchange_support.h"
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/dates.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/numbers/fortran.h"
 #include "workspace/text_out.h"
 
 namespace igds::test::exchange {
@@ -110,6 +112,123 @@ void expect_refusal(const std::string& text, DuctError::Problem problem, std::si
   CHECK(e->problem == problem);
   CHECK(e->line == line);
   CHECK(e->reason().rfind("LINE " + std::to_string(line) + ": ", 0) == 0);
+}
+
+// A picture read as DUCT's FORTRAN READs read it: every record in the columns of its format
+// (docs/exchange.md, "The file") through fortran::read_i and read_f, nothing past them, column 1
+// blank. Fails the test at the first record that is not so.
+DuctPicture read_columns(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::size_t number = 0;
+  auto next = [&] {
+    REQUIRE(std::getline(in, line));
+    ++number;
+    return std::string_view(line);
+  };
+  // The fields of a record: widths, each an integer or a real with `decimals`.
+  struct Field {
+    std::size_t width;
+    int decimals;  // -1: an integer
+  };
+  auto record = [&](std::string_view card, const std::vector<Field>& fields,
+                    std::size_t skip_before_each, std::vector<double>& out) {
+    CAPTURE(number);
+    CAPTURE(card);
+    std::size_t at = 0;
+    for (const Field& f : fields) {
+      if (skip_before_each > 0 || at == 0) {
+        const std::size_t blank = at == 0 ? 1 : skip_before_each;
+        for (std::size_t k = at; k < at + blank && k < card.size(); ++k) REQUIRE(card[k] == ' ');
+        at += blank;
+      }
+      if (f.decimals < 0) {
+        const auto v = fortran::read_i(card, at, f.width);
+        REQUIRE(v);
+        out.push_back(double(*v));
+      } else {
+        const auto v = fortran::read_f(card, at, f.width, f.decimals);
+        REQUIRE(v);
+        out.push_back(*v);
+      }
+      at += f.width;
+    }
+    REQUIRE(card.size() <= at);
+  };
+  DuctPicture p;
+  while (next() != " *") p.header.push_back(line);
+  std::vector<double> v;
+  record(next(), std::vector<Field>(10, {6, -1}), 0, v);
+  for (std::size_t k = 0; k < 10; ++k) p.counters[k] = std::int64_t(v[k]);
+  v.clear();
+  record(next(), std::vector<Field>(7, {10, 4}), 0, v);
+  std::copy(v.begin(), v.end(), p.reals.begin());
+  for (std::int64_t k = 0; k < p.counters[3]; ++k) {
+    v.clear();
+    record(next(), {{11, -1}, {6, -1}}, 1, v);
+    auto in = decompose_duct_code(std::int64_t(v[0]));
+    REQUIRE(in);
+    in->pixels = std::size_t(v[1]);
+    p.instructions.push_back(*in);
+  }
+  const bool tu = p.counters[0] % 2 == 1;
+  for (std::int64_t k = 0; k < p.counters[4]; ++k) {
+    v.clear();
+    std::vector<Field> fields(3, {14, 7});
+    if (tu) fields.insert(fields.end(), 2, {10, 4});
+    record(next(), fields, 1, v);
+    p.xyz.insert(p.xyz.end(), v.begin(), v.begin() + 3);
+    if (tu) p.tu.insert(p.tu.end(), v.begin() + 3, v.end());
+  }
+  if (p.counters[0] / 2 % 2 == 1) {
+    v.clear();
+    record(next(), {{6, -1}, {6, -1}}, 0, v);
+    const std::size_t texts = std::size_t(v[0]), dimensions = std::size_t(v[1]);
+    for (std::size_t k = 0; k < texts; ++k) {
+      v.clear();
+      const std::string card = std::string(next());
+      record(std::string_view(card).substr(0, 33),
+             {{8, -1}, {3, -1}, {3, -1}, {2, -1}, {8, 3}, {8, 3}}, 0, v);
+      DuctText t{std::size_t(v[0]), int(v[2]), int(v[3]), v[4], v[5], {}};
+      REQUIRE(card.substr(33, 17) == std::string(17, ' '));
+      t.text = card.substr(50);
+      if (v[1] > 30) t.text += std::string(next()).substr(1);
+      REQUIRE(t.text.size() == std::size_t(v[1]));
+      p.texts.push_back(t);
+    }
+    for (std::size_t k = 0; k < dimensions; ++k) next();
+  }
+  CHECK(!std::getline(in, line));
+  return p;
+}
+
+// `d` scaled by `scale` about the origin, then moved by `by`.
+Drawing3 moved(const Drawing3& d, double scale, Vec3 by) {
+  Drawing3 out;
+  std::vector<double> xyz;
+  for (const auto& item : d.items()) {
+    xyz.clear();
+    for (Vec3 v : d.points(item)) {
+      const Vec3 w = scale * v + by;
+      xyz.insert(xyz.end(), {w.x, w.y, w.z});
+    }
+    const Vec3View points(xyz.data(), xyz.size() / 3);
+    switch (item.kind) {
+      case Drawing3::Kind::polyline:
+        out.add_polyline(points, item.style, item.id, item.closed);
+        break;
+      case Drawing3::Kind::curve:
+        out.add_curve(item.degree, points, d.weights(item), item.style, item.id);
+        break;
+      case Drawing3::Kind::mark:
+        out.add_mark(points[0], item.shape, item.size, item.style, item.id);
+        break;
+      case Drawing3::Kind::text:
+        out.add_text(points[0], d.text(item), item.size, item.style, item.id);
+        break;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -493,21 +612,22 @@ TEST_CASE("the writer's lines have the spec's field widths") {
 }
 
 TEST_CASE("records whose numbers overflow their fields are still read back") {
-  // A full field touches its neighbour; once one overflows, the columns are lost and every
-  // number of the record gets a blank before it.
+  // Reals stay in their F10.4 columns whatever their magnitude (a point anywhere and an exponent
+  // are what Fw.d reads); an integer that overflows its field loses the columns, and every number
+  // of its record gets a blank before it.
   DuctPicture p = read_duct(small_picture);
   p.reals = {0.00001, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200};
   p.counters[7] = -12345;
   std::string text = write_duct(p);
-  CHECK(text.find("\n  0.0000 18772.2300 -1234.5678 123456.7890 0.0000 5.0000 1.E200\n") !=
+  CHECK(text.find("\n      1.E-518772.2300-1234.5678123456.789    0.0000    5.0000    1.E200\n") !=
         std::string::npos);
   DuctPicture back = read_duct(text);
-  CHECK(back.reals == std::array<double, 7>{0, 18772.23, -1234.5678, 123456.789, 0, 5, 1e200});
+  CHECK(back.reals == p.reals);
   CHECK(back.counters == p.counters);
-  p.reals = {0.00001, 18772.23, -1234.5678, 0, 0, 5, 0};
+  p.counters[7] = 1234567;
   text = write_duct(p);
-  CHECK(text.find("\n     0.000018772.2300-1234.5678    0.0000") != std::string::npos);
-  CHECK(read_duct(text).reals[1] == 18772.23);
+  CHECK(text.find("\n  4 3 -1 2 5 0 3 1234567 0 0\n") != std::string::npos);
+  CHECK(read_duct(text).counters == p.counters);
   // Texts keep their column 51 whatever their numbers.
   p.counters[0] = 6;
   p.texts = {{5, -1000, 77777, 725.5, 1e6, "TEXT"}};
@@ -620,6 +740,207 @@ TEST_CASE("a surface's picture: counters, the box and exact spans") {
     REQUIRE(b.size() == a.size() + closing);
     for (std::size_t i = 0; i < a.size(); ++i)
       CHECK(near(b[i], a[i], 5e-7 * std::max(1.0, norm(a[i]))));
+  }
+}
+
+namespace {
+
+// A drawing with every kind of item DUCT has, about 1 wide: the golden surface's curves and
+// stringers (flat at their ends, where the written spans can pass their end pixels), a quarter
+// circle, a closed polyline, marks and texts, one longer than 30 characters.
+Drawing3 every_kind() {
+  const TestSurface t = golden_surface();
+  Drawing3 d = moved(surface_curves(t.input, t.surface), 1 / 75.0, {0, 0, 0});
+  const double quarter[] = {1, 0, 0.2, 0.7071067811865476, 0.7071067811865476, 0.2, 0, 1, 0.2};
+  const double qw[] = {1, std::sqrt(0.5), 1};
+  d.add_curve(2, Vec3View(quarter, 3), qw, {.pen = 3});
+  const double square[] = {-0.1, -0.1, 0, 1.1, -0.1, 0, 1.1, 1.1, 0.1, -0.1, 1.1, 0.1};
+  d.add_polyline(Vec3View(square, 4), {.pen = 2, .dash = Dash::dashed}, {}, true);
+  d.add_mark({0.5, 0.5, -0.05}, MarkShape::cross, duct_mark_size);
+  d.add_mark({0.25, 0.75, 0.05}, MarkShape::diamond, duct_mark_size, {.pen = 4});
+  d.add_text({0.3, 0.3, 0.3}, "HULL", 1, {.pen = 2});
+  d.add_text({0.6, 0.1, -0.2}, "A TEXT LONGER THAN THIRTY CHARACTERS, ON TWO LINES", 1);
+  return d;
+}
+
+// The magnitudes checked: scales from 1e-6 to 1e9, each at the origin and moved off it.
+struct Magnitude {
+  double scale;
+  Vec3 by;
+};
+std::vector<Magnitude> magnitudes() {
+  std::vector<Magnitude> all;
+  for (double s : {1e-6, 3e-4, 0.05, 1.0, 75.0, 1234.5, 1e5, 7.5e6, 1e9}) {
+    all.push_back({s, {0, 0, 0}});
+    all.push_back({s, {0.7123 * s, -1.45678 * s, 0.2 * s}});
+    all.push_back({s, {-13.1 * s, 9.87654 * s, -2.5 * s}});
+  }
+  return all;
+}
+
+}  // namespace
+
+TEST_CASE("every record is in DUCT's columns at any magnitude, and the limits hold what is drawn") {
+  const Drawing3 base = every_kind();
+  for (const Magnitude& m : magnitudes()) {
+    CAPTURE(m.scale);
+    CAPTURE(m.by);
+    const Drawing3 d = moved(base, m.scale, m.by);
+    const DuctPicture p = duct_picture(d, {"HULL", "22 SEP 1987 09:55:50", "HULL"});
+    const std::string text = write_duct(p);
+    CHECK(streamed(d, DuctHeader{"HULL", "22 SEP 1987 09:55:50", "HULL"}, DuctView{}) == text);
+    const DuctPicture fixed = read_columns(text);
+    const DuctPicture read = read_duct(text);
+    CHECK(fixed.counters == read.counters);
+    CHECK(fixed.reals == read.reals);
+    CHECK(fixed.reals == p.reals);  // the limits are written exactly
+    CHECK(fixed.instructions == read.instructions);
+    CHECK(fixed.xyz == read.xyz);
+    CHECK(fixed.tu == read.tu);
+    CHECK(fixed.texts == read.texts);
+    // Every pixel on what is drawn lies inside the limits, as read; so does every point of the
+    // spans drawn from them (to the rounding of their evaluation); and the limits are tight:
+    // within a step of their last digit (1e-4 of their magnitude at most) of what is drawn.
+    const Drawing3 drawn = duct_drawing(fixed);
+    std::array<double, 6> seen = {INFINITY, -INFINITY, INFINITY, -INFINITY, INFINITY, -INFINITY};
+    const double most =
+        std::max({std::abs(p.reals[0]), std::abs(p.reals[1]), std::abs(p.reals[2]),
+                  std::abs(p.reals[3]), std::abs(p.reals[4]), std::abs(p.reals[5])});
+    std::size_t outside = 0;
+    auto see = [&](Vec3 v, double slack) {
+      const double c[3] = {v.x, v.y, v.z};
+      for (int k = 0; k < 3; ++k) {
+        seen[2 * k] = std::min(seen[2 * k], c[k]);
+        seen[2 * k + 1] = std::max(seen[2 * k + 1], c[k]);
+        if (c[k] < p.reals[2 * k] - slack || c[k] > p.reals[2 * k + 1] + slack) ++outside;
+      }
+    };
+    for (const auto& item : drawn.items()) {
+      const auto pts = drawn.points(item);
+      const auto w = drawn.weights(item);
+      if (item.kind != Drawing3::Kind::curve) {
+        for (Vec3 v : pts) see(v, 0);
+        continue;
+      }
+      const std::size_t deg = item.degree;
+      for (std::size_t s = 0; s + deg < pts.size(); s += deg) {
+        see(pts[s], 0);
+        see(pts[s + deg], 0);
+        for (int i = 1; i < 200; ++i) {
+          const double t = i / 200.0;
+          if (deg == 3) {
+            const Vec3 c[4] = {pts[s], pts[s + 1], pts[s + 2], pts[s + 3]};
+            see(bezier3(c, t), 1e-14 * most);
+          } else {
+            const Vec3 c[3] = {pts[s], pts[s + 1], pts[s + 2]};
+            const double ws[3] = {w[s], w[s + 1], w[s + 2]};
+            see(conic_point(c, ws, t), 1e-14 * most);
+          }
+        }
+      }
+    }
+    CHECK(outside == 0);
+    for (int k = 0; k < 6; ++k) {
+      CAPTURE(k);
+      CHECK(std::abs(p.reals[k] - seen[k]) <= 1.01e-4 * std::max(1.0, std::abs(seen[k])));
+    }
+  }
+}
+
+TEST_CASE("gfortran reads the pictures with DUCT's own formats at any magnitude") {
+  IGDS_SKIP_UNLESS(test::have_program("gfortran"), "gfortran is not installed");
+  test::TempDir dir;
+  const std::string program = R"(program duct
+  implicit none
+  integer :: i(10), k, code, npix, nt, nd, j1, j2, j3, j4
+  real(8) :: r(7), x(3), tu(2), s1, s2
+  character(len=200) :: line
+  character(len=80) :: c
+  open(10, file='PIC', status='old')
+  open(11, file='OUT', status='replace')
+  do
+    read(10, '(A)') line
+    if (trim(adjustl(line)) == '*') exit
+  end do
+  read(10, '(1X,10I6)') i
+  read(10, '(1X,7F10.4)') r
+  write(11, '(10I12)') i
+  write(11, '(7ES26.17E3)') r
+  do k = 1, i(4)
+    read(10, '(1X,I11,1X,I6)') code, npix
+    write(11, '(2I12)') code, npix
+  end do
+  do k = 1, i(5)
+    if (mod(i(1), 2) == 1) then
+      read(10, '(3(1X,E14.7),2(1X,F10.4))') x, tu
+      write(11, '(5ES26.17E3)') x, tu
+    else
+      read(10, '(3(1X,E14.7))') x
+      write(11, '(3ES26.17E3)') x
+    end if
+  end do
+  if (mod(i(1) / 2, 2) == 1) then
+    read(10, '(1X,2I6)') nt, nd
+    write(11, '(2I12)') nt, nd
+    do k = 1, nt
+      c = ' '
+      read(10, '(1X,I8,I3,I3,I2,2F8.3,17X,A)') j1, j2, j3, j4, s1, s2, c
+      if (j2 > 30) read(10, '(1X,A)') c(31:)
+      write(11, '(4I12,2ES26.17E3)') j1, j2, j3, j4, s1, s2
+      write(11, '(A,A)') 'T:', c(1:j2)
+    end do
+  end if
+end program duct
+)";
+  test::write_file(dir.path() / "duct.f90", program);
+  const auto built =
+      test::run({"gfortran", "-ffree-line-length-none", "-o", (dir.path() / "duct").string(),
+                 (dir.path() / "duct.f90").string()});
+  REQUIRE_MESSAGE(built.status == 0, built.err);
+  const Drawing3 base = every_kind();
+  for (const Magnitude& m : magnitudes()) {
+    CAPTURE(m.scale);
+    CAPTURE(m.by);
+    const std::string text =
+        write_duct(duct_picture(moved(base, m.scale, m.by), {"HULL", "22 SEP 1987", ""}));
+    test::write_file(dir.path() / "PIC", text);
+    test::RunOptions in_dir;
+    in_dir.cwd = dir.path();
+    const auto ran = test::run({(dir.path() / "duct").string()}, in_dir);
+    REQUIRE_MESSAGE(ran.status == 0, ran.err);
+    // What gfortran read, number by number, against read_duct.
+    const DuctPicture p = read_duct(text);
+    std::vector<double> ours(p.counters.begin(), p.counters.end());
+    ours.insert(ours.end(), p.reals.begin(), p.reals.end());
+    for (const auto& in : p.instructions)
+      ours.insert(ours.end(), {double(in.code()), double(in.pixels)});
+    for (std::size_t k = 0; k < p.pixel_count(); ++k) {
+      ours.insert(ours.end(), p.xyz.begin() + std::ptrdiff_t(3 * k),
+                  p.xyz.begin() + std::ptrdiff_t(3 * k + 3));
+      if (p.has_tu()) ours.insert(ours.end(), {p.tu[2 * k], p.tu[2 * k + 1]});
+    }
+    std::vector<std::string> our_texts;
+    if (p.has_texts()) {
+      ours.insert(ours.end(), {double(p.texts.size()), double(p.dimensions.size())});
+      for (const auto& t : p.texts) {
+        ours.insert(ours.end(), {double(t.pixel), double(t.text.size()), double(t.colour),
+                                 double(t.units), t.angle, t.height});
+        our_texts.push_back(t.text);
+      }
+    }
+    std::vector<double> theirs;
+    std::vector<std::string> their_texts;
+    std::istringstream out(test::read_file(dir.path() / "OUT"));
+    for (std::string line; std::getline(out, line);) {
+      if (line.rfind("T:", 0) == 0) {
+        their_texts.push_back(line.substr(2));
+        continue;
+      }
+      std::istringstream numbers(line);
+      for (std::string n; numbers >> n;) theirs.push_back(std::strtod(n.c_str(), nullptr));
+    }
+    CHECK(theirs == ours);
+    CHECK(their_texts == our_texts);
   }
 }
 

@@ -204,10 +204,10 @@ struct DuctView {
 // pen, on paper at 0 degrees, 3 mm high, at most 80 characters (control characters as '?'). Pens
 // below 1 are colour 1; dotted is dashed. Counters: I1 = 4 (+2 texts, +1 TU), I2 = view.axis, I3 =
 // -1, I4, I5, I6 = -2 when all instructions are straight lines, I7..I10 from `view`; R1..R6 the box
-// of the drawn curves themselves (not of their control points), rounded outwards to the 4 decimals
-// of F10.4; R7 = view.height. An empty drawing gives one invisible pixel at the origin (a picture
-// always has an instruction). Throws DataError (point_not_finite, `number` the item, 1-based) for a
-// point that is not finite.
+// of the curves a reader draws from the written pixels (not of their control points), rounded
+// outwards to values F10.4's columns hold exactly (docs/exchange.md, "Limits"); R7 = view.height.
+// An empty drawing gives one invisible pixel at the origin (a picture always has an instruction).
+// Throws DataError (point_not_finite, `number` the item, 1-based) for a point that is not finite.
 DuctPicture duct_picture(const Drawing3& drawing, const DuctHeader& header,
                          const DuctView& view = {});
 // The picture of an image (a drawing in the plane): its points at z = 0, I7 = 2, I2 = 3 (seen
@@ -217,10 +217,11 @@ DuctPicture duct_picture(const Drawing2& drawing, const DuctHeader& header, Proj
 // The picture in the fixed formats of the file (docs/exchange.md, "The file"): header lines, " *",
 // (1X,10I6), (1X,7F10.4), (1X,I11,1X,I6) per instruction, (3(1X,E14.7)) or
 // (3(1X,E14.7),2(1X,F10.4)) per pixel, then texts and dimensions when I1 says so. Lines end in LF.
-// A record whose fields touch is written as FORTRAN writes it; when a value does not fit its field,
-// every value of that record follows a blank (list-directed readers read both); a text's numbers
-// are brought into their fields so that its string stays in column 51. Whatever read_duct returns,
-// this writes a text it reads back.
+// Reals stay in their columns at any magnitude, in a form Fw.d reads (fortran::put_f_input). A
+// record whose fields touch is written as FORTRAN writes it; when an integer does not fit its
+// field, every value of that record follows a blank (list-directed readers read both); a text's
+// numbers are brought into their fields so that its string stays in column 51. Whatever read_duct
+// returns, this writes a text it reads back.
 std::string write_duct(const DuctPicture& picture);
 // The same into `out`, made while it is written (a picture may be hundreds of megabytes).
 void write_duct(const DuctPicture& picture, TextOut& out);

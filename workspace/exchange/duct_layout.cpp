@@ -10,6 +10,7 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct_parts.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/numbers/fortran.h"
 
 namespace igds {
 
@@ -21,23 +22,111 @@ bool finite(Vec3 v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-// The tight box of what is drawn: points, and the extremes of each curve span.
-struct BoxBuilder {
+// A coordinate as a reader gets it from its pixel line: E14.7's seven digits.
+double as_written(double v) {
+  char field[40];
+  const char* end = fortran::put_e_whole(field, v, 14, 7);
+  return fortran::read_real(trimmed({field, std::size_t(end - field)})).value_or(v);
+}
+
+Vec3 as_written(Vec3 v) {
+  return {as_written(v.x), as_written(v.y), as_written(v.z)};
+}
+
+// A shape factor as a reader gets it from its T field.
+double as_written_shape(double s) {
+  char field[10];
+  if (!fortran::put_f_input(field, s, 10, 4)) return s;
+  return fortran::read_f({field, 10}, 0, 10, 4).value_or(s);
+}
+
+struct Box {
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   void add(Vec3 p) {
     if (!finite(p)) return;  // an extreme evaluated inside a span of huge numbers
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
-  // A span's ends and its extremes inside.
-  void add_span(int degree, std::span<const Vec3> controls, std::span<const double> weights) {
-    add(controls.front());
-    add(controls[std::size_t(degree)]);
-    Vec3 extremes[6];
-    const std::size_t n = span_extremes(degree, controls, weights, extremes);
-    for (std::size_t k = 0; k < n; ++k) add(extremes[k]);
-  }
   bool empty() const { return lo.x > hi.x; }
+};
+
+// Whether a curve's weights make it rational (an empty list is all ones).
+bool is_rational(std::span<const double> w) {
+  return !w.empty() && std::any_of(w.begin(), w.end(), [&](double x) { return x != w[0]; });
+}
+
+// The tight box of what a reader draws from the file (docs/exchange.md, "Limits"): pixels on the
+// curves, and the extremes inside each span, both from the coordinates as written. Rounding to
+// E14.7 never reorders values, so of the pixels only the extremes are rounded, at the end; a
+// written coordinate is within 5e-7 of its magnitude of the exact one.
+class BoxBuilder {
+ public:
+  // A pixel on what is drawn.
+  void add(Vec3 p) { pixels_.add(p); }
+  // A Bézier span, once every pixel is in: its inside is the span of the written controls,
+  // worked out only when the span could reach past the box (near a flat end the written span can
+  // pass its end pixel).
+  void add_bezier(std::span<const Vec3> controls) {
+    Vec3 most{0, 0, 0};
+    for (Vec3 c : controls)
+      most = {std::max(most.x, std::abs(c.x)), std::max(most.y, std::abs(c.y)),
+              std::max(most.z, std::abs(c.z))};
+    const Vec3 margin = 5e-7 * most;
+    auto holds = [&](std::span<const Vec3> points) {
+      return std::all_of(points.begin(), points.end(),
+                         [&](Vec3 p) { return inside(p - margin) && inside(p + margin); });
+    };
+    if (holds(controls)) return;  // the span lies in its controls' hull
+    Vec3 extremes[8];
+    std::size_t n = span_extremes(3, controls, {}, extremes);
+    extremes[n++] = controls.front();
+    extremes[n++] = controls.back();
+    if (holds({extremes, n})) return;
+    Vec3 written[4];
+    for (std::size_t k = 0; k < 4; ++k) written[k] = as_written(controls[k]);
+    const std::size_t m = span_extremes(3, written, {}, extremes);
+    for (std::size_t k = 0; k < m; ++k) inner_.add(extremes[k]);
+  }
+  // A conic span P0 M P1 with shape factor s, drawn as read_duct's reader draws it from the
+  // written numbers.
+  void add_conic(Vec3 p0, Vec3 mid, Vec3 p1, double shape) {
+    add(p0);
+    add(mid);
+    add(p1);
+    const ConicSpans spans =
+        conic_spans(as_written(p0), as_written(mid), as_written(p1), as_written_shape(shape));
+    Vec3 extremes[6];
+    for (int k = 0; k < spans.spans; ++k) {
+      const std::span<const Vec3> c(&spans.controls[std::size_t(2 * k)], 3);
+      const std::span<const double> w(&spans.weights[std::size_t(2 * k)], 3);
+      const std::size_t n = span_extremes(2, c, w, extremes);
+      for (std::size_t e = 0; e < n; ++e) inner_.add(extremes[e]);
+      inner_.add(c[2]);  // a split span's middle end
+    }
+  }
+  bool empty() const { return pixels_.empty(); }
+  // The box of both: the extreme pixels as written.
+  Box box() const {
+    Box b = inner_;
+    b.add(as_written(pixels_.lo));
+    b.add(as_written(pixels_.hi));
+    return b;
+  }
+
+ private:
+  // Whether `p` is inside what is known of the box: the pixels' box less their rounding, and
+  // the written spans' extremes.
+  bool inside(Vec3 p) const {
+    auto in = [](double v, double pixel_lo, double pixel_hi, double lo, double hi) {
+      return v >= std::min(pixel_lo + 5e-7 * std::abs(pixel_lo), lo) &&
+             v <= std::max(pixel_hi - 5e-7 * std::abs(pixel_hi), hi);
+    };
+    const Box& b = pixels_;
+    const Box& i = inner_;
+    return in(p.x, b.lo.x, b.hi.x, i.lo.x, i.hi.x) && in(p.y, b.lo.y, b.hi.y, i.lo.y, i.hi.y) &&
+           in(p.z, b.lo.z, b.hi.z, i.lo.z, i.hi.z);
+  }
+  Box pixels_, inner_;
 };
 
 DuctMark duct_mark(MarkShape shape) {
@@ -77,13 +166,38 @@ std::string printable(std::string_view s) {
   return out;
 }
 
-// R1..R6 rounded outwards to F10.4's 4 decimals, so the limits hold the whole picture.
+// A limit rounded outwards to a value that F10.4's columns hold exactly (docs/exchange.md,
+// "Limits"): on F10.4's grid of 1e-4 from a magnitude of 1 while it fits (five digits and more);
+// else to the most significant digits fortran::input_text fits in 10 columns.
 double outwards(double v, bool up) {
-  if (!(std::abs(v) < 1e11)) return v;
-  const double scaled = v * 1e4;
-  // A value already on the grid of 1e-4 (to the rounding of the product) stays where it is.
-  const double slack = 1e-12 * std::abs(scaled);
-  return (up ? std::ceil(scaled - slack) : std::floor(scaled + slack)) / 1e4;
+  if (v == 0 || !std::isfinite(v)) return v;
+  // A value on the grid but for the rounding of a span's evaluation stays there.
+  const double slack = 1e-13 * std::abs(v);
+  auto outside = [&](double r) { return up ? r >= v - slack : r <= v + slack; };
+  const double towards = up ? 1 : -1;
+  if (std::abs(v) >= 1) {
+    auto on_grid = [](double x) -> std::optional<double> {
+      char field[10];
+      if (!fortran::put_f(field, x, 10, 4)) return std::nullopt;
+      return fortran::read_f({field, 10}, 0, 10, 4);
+    };
+    std::optional<double> r = on_grid(v);
+    if (r && !outside(*r)) r = on_grid(*r + towards * 0.6e-4);
+    if (r && outside(*r) && std::abs(*r) >= 1) return *r;
+  }
+  auto in_columns = [](double x) {
+    for (int digits = 17;; --digits)
+      if (const std::string t = fortran::input_text(x, digits); t.size() <= 10 || digits == 1)
+        return fortran::read_real(t).value_or(x);
+  };
+  double r = in_columns(v);
+  // One step of the grid outwards: the smallest move that rounds elsewhere (steps grow by half,
+  // so the first that moves is under 3/4 of the grid's step and lands on the next value).
+  for (double move = 1e-8 * std::abs(r); !outside(r); move *= 1.5) {
+    const double next = in_columns(r + towards * move);
+    if (next != r) r = next;
+  }
+  return r;
 }
 
 // The largest extent of every point of a drawing (0 when it has none).
@@ -171,15 +285,13 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
         break;
       }
       case Kind::curve: {
-        const bool rational =
-            !w.empty() && std::any_of(w.begin(), w.end(), [&](double x) { return x != w[0]; });
+        const bool rational = is_rational(w);
         if (item.degree == 3 && !rational) {
           DuctInstruction* in = start(item.style, DuctArc::bezier, DuctMark::none, DuctPen::move);
           all_lines = false;
           for (Vec3 v : points) add_pixel(v);
           if (measure)
-            for (std::size_t k = 0; k + 3 < points.size(); k += 3)
-              box.add_span(3, std::span(points).subspan(k, 4), {});
+            for (std::size_t k = 0; k < points.size(); k += 3) box.add(points[k]);
           in->pixels = points.size();
         } else if (item.degree == 3) {
           // A rational cubic has no DUCT form: straight lines close to it.
@@ -206,7 +318,7 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
             shapes = true;
             add_pixel(cs.mid);
             add_pixel(points[k + 2]);
-            if (measure) box.add_span(2, std::span(points).subspan(k, 3), ws);
+            if (measure) box.add_conic(points[k], cs.mid, points[k + 2], cs.shape);
           }
           in->pixels = points.size();
         }
@@ -249,6 +361,17 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
       }
     }
   }
+  // The insides of the Bézier spans, against the box of every pixel: few come near its sides.
+  if (measure) {
+    for (const auto& item : items) {
+      if (item.kind != Kind::curve || item.degree != 3 || is_rational(drawing.weights(item)))
+        continue;
+      points.clear();
+      for (P point : drawing.points(item)) points.push_back(in_space(point));
+      for (std::size_t k = 0; k + 3 < points.size(); k += 3)
+        box.add_bezier(std::span(points).subspan(k, 4));
+    }
+  }
   if (p.instructions.empty()) {
     start(Style{}, DuctArc::line, DuctMark::none, DuctPen::invisible)->pixels = 1;
     add_pixel({0, 0, 0});
@@ -265,12 +388,13 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   c[8] = view.projected[1];
   c[9] = view.projected[2];
   if (!box.empty()) {
-    p.reals = {outwards(box.lo.x, false),
-               outwards(box.hi.x, true),
-               outwards(box.lo.y, false),
-               outwards(box.hi.y, true),
-               outwards(box.lo.z, false),
-               outwards(box.hi.z, true),
+    const Box b = box.box();
+    p.reals = {outwards(b.lo.x, false),
+               outwards(b.hi.x, true),
+               outwards(b.lo.y, false),
+               outwards(b.hi.y, true),
+               outwards(b.lo.z, false),
+               outwards(b.hi.z, true),
                view.height};
   } else {
     p.reals = {0, 0, 0, 0, 0, 0, view.height};

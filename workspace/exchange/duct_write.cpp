@@ -13,18 +13,23 @@ namespace {
 
 using duct::trimmed;
 
-// A record of fields with no blank between them ((1X,10I6), (1X,7F10.4), ...): as FORTRAN
-// writes it when every value fits its field, so that fixed columns read it; when one does not,
-// every value after a blank, so that list-directed readers read it (columns being lost anyway).
+// A record of fields with no blank between them ((1X,10I6), (1X,7F10.4), ...): in the fixed
+// columns when every value fits its field (reals always do); when an integer does not, every
+// value after a blank, so that list-directed readers read it (columns being lost anyway).
 class WrittenRecord {
  public:
   void integer(std::int64_t v, int width) {
     fields_.push_back({{}, width});
     fortran::put_i_whole(fields_.back().text, v, 1);
   }
+  // A real in its Fw.d columns whatever its magnitude (a point anywhere, an exponent: what Fw.d
+  // reads), in the free form only when not finite.
   void fixed(double v, int width, int decimals) {
-    fields_.push_back({{}, width});
-    fortran::put_f_whole(fields_.back().text, v, 1, decimals);
+    fields_.push_back({std::string(std::size_t(width), ' '), width});
+    if (!fortran::put_f_input(fields_.back().text.data(), v, width, decimals)) {
+      fields_.back().text.clear();
+      fortran::put_f_whole(fields_.back().text, v, 1, decimals);
+    }
   }
   void write(std::string& out) const {
     bool fits = true;
@@ -88,7 +93,11 @@ char* pixel_line(char* w, const double xyz[3], const double* tu) {
   if (tu) {
     for (int i = 0; i < 2; ++i) {
       *w++ = ' ';
-      w = fortran::put_f_whole(w, tu[i], 10, 4);
+      // (A shape factor is finite: conic_shape's, or read by read_duct.)
+      if (fortran::put_f_input(w, tu[i], 10, 4))
+        w += 10;
+      else
+        w = fortran::put_f_whole(w, tu[i], 10, 4);
     }
   }
   *w++ = '\n';

@@ -309,6 +309,79 @@ char* put_e_whole(char* out, double value, int width, int digits) {
   return whole_field(out, buffer, exponent_text(buffer, value, digits), width);
 }
 
+std::string input_text(double value, int digits) {
+  if (value == 0) value = 0;  // no "-0."
+  char buffer[64];
+  const auto end =
+      digits == 0
+          ? std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific).ptr
+          : std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific,
+                          digits - 1)
+                .ptr;
+  // [-]d[.ddd]e[+-]xx: the digits, without trailing zeros, and the exponent of the first.
+  const std::string_view text(buffer, static_cast<std::size_t>(end - buffer));
+  const bool negative = text[0] == '-';
+  const std::size_t e = text.find('e');
+  std::string mantissa;
+  for (char c : text.substr(negative ? 1 : 0, e - (negative ? 1 : 0)))
+    if (c >= '0' && c <= '9') mantissa += c;
+  while (mantissa.size() > 1 && mantissa.back() == '0') mantissa.pop_back();
+  int exponent = 0;
+  std::from_chars(text.data() + e + (text[e + 1] == '+' ? 2 : 1), text.data() + text.size(),
+                  exponent);
+  const std::string sign = negative ? "-" : "";
+  std::string plain = sign;
+  if (exponent >= 0) {
+    const std::size_t whole = static_cast<std::size_t>(exponent) + 1;
+    plain += mantissa.substr(0, whole);
+    if (mantissa.size() < whole) plain.append(whole - mantissa.size(), '0');
+    plain += '.';
+    if (mantissa.size() > whole) plain += mantissa.substr(whole);
+  } else {
+    plain += "0.";
+    plain.append(static_cast<std::size_t>(-exponent - 1), '0');
+    plain += mantissa;
+  }
+  std::string scientific =
+      sign + mantissa.substr(0, 1) + '.' + mantissa.substr(1) + 'E' + std::to_string(exponent);
+  return plain.size() < scientific.size() ? plain : scientific;
+}
+
+bool put_f_input(char* out, double value, int width, int decimals) {
+  if (value == 0) value = 0;
+  const std::size_t w = columns(width);
+  if (!std::isfinite(value)) {
+    stars(out, w);
+    return false;
+  }
+  if (value == 0 && put_f(out, value, width, decimals)) return true;  // the usual T U
+  char fixed[fixed_room];
+  const bool fits = w < sizeof fixed && put_f(fixed, value, width, decimals);
+  auto put = [&](std::string_view text) {
+    std::memset(out, ' ', w - text.size());
+    std::memcpy(out + w - text.size(), text.data(), text.size());
+    return true;
+  };
+  if (fits && read_f({fixed, w}, 0, w, decimals) == value) return put({fixed, w});
+  if (const std::string exact = input_text(value, 0); exact.size() <= w) return put(exact);
+  for (int digits = 17; digits >= 1; --digits) {
+    const std::string text = input_text(value, digits);
+    if (text.size() > w) continue;
+    // Fw.d when it holds as many significant digits.
+    if (fits) {
+      const std::string_view f = std::string_view(fixed, w);
+      const std::size_t first = f.find_first_of("123456789");
+      std::size_t held = 0;
+      for (std::size_t k = first; k < w && first != f.npos; ++k)
+        held += f[k] >= '0' && f[k] <= '9' ? 1 : 0;
+      if (held >= static_cast<std::size_t>(digits)) return put(f);
+    }
+    return put(text);
+  }
+  stars(out, w);
+  return false;
+}
+
 namespace {
 
 bool is_digit(char c) {

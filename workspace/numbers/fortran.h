@@ -47,6 +47,24 @@ void put_f_whole(std::string& out, double value, int width, int decimals);
 char* put_e_whole(char* out, double value, int width, int digits);
 
 // ---------------------------------------------------------------------------------------------
+// Writing a real that an Fw.d input field reads whatever its magnitude (DUCT's R1..R7 and T U):
+// on input Fw.d takes a point anywhere and an exponent, so a value Fw.d cannot write is still
+// written in the field's columns.
+
+// `value` (finite) rounded to `digits` significant digits (1 to 17, halves of the exact binary
+// value to even), or its shortest exact digits when `digits` is 0, as the shorter of the plain
+// form ("123456.8", "0.0125") and the exponent form ("1.25E-3", "9.876543E8"), the plain one
+// only when shorter; a point in both, no '+', no trailing zeros ("1.E6", "0.").
+std::string input_text(double value, int digits);
+
+// `width` columns at `out`, right-justified, that read_f(.., width, decimals) reads: Fw.d as
+// put_f writes it when it reads back as `value`; else the shortest exact input_text when it fits;
+// else the nearest value the columns hold: input_text with as many digits as fit, or Fw.d when
+// it holds as many. False, and
+// asterisks, only when nothing fits (NaN, the infinities, a width under 8).
+bool put_f_input(char* out, double value, int width, int decimals);
+
+// ---------------------------------------------------------------------------------------------
 // Reading.
 
 // An input field of `width` columns from column `first` (0-based) of `card`, as FORTRAN's
