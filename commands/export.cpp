@@ -71,11 +71,13 @@ SurfaceInput input_of(const Workspace& ws) {
 
 // What EXPORT DUCT writes (docs/decisions.md): the surface itself, in space and exactly, when
 // there is one and the current image is none or a DISPLAY INPUT or SURFACE of it; the current
-// image as projected (I7 = 2) otherwise (a picture, an image of another surface or from a file).
+// image as projected (I7 = 2) otherwise (a picture, combs, an image of another surface or from a
+// file).
 bool duct_of_surface(const Workspace& ws) {
   if (!ws.has_surface()) return false;
   if (!ws.image) return true;
-  return ws.image->desim.what != 2 && ws.image->drawn_from == ws.changes.surface;
+  return (ws.image->desim.what == 0 || ws.image->desim.what == 1) &&
+         ws.image->drawn_from == ws.changes.surface;
 }
 
 // The DUCT writer refuses item n of a drawing (1-based) that is not finite: the report names what

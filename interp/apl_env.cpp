@@ -363,6 +363,9 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
       Image image = slot ? *slot : Image{};
       image.drawn_from = 0;
       image.file.clear();
+      // Combs are made with the surface's image: IMAGE or DESIM of APL's own have none.
+      image.combs = Array();
+      image.comb_scale = 0;
       if (info.kept == Kept::image_view) {
         image.desim = apl_args::description_of(a.ravel);
       } else {

@@ -7,6 +7,7 @@
 
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct.h"
+#include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/surface.h"
 
@@ -118,6 +119,55 @@ Image surface_image(const Workspace& ws, const View& view) {
   return image;
 }
 
+double comb_scale_for(double extent, double most) {
+  if (!(most > 0) || !(extent > 0) || !std::isfinite(extent / most)) return 0;
+  const double target = comb_fraction * extent / most;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double step : {5.0, 2.0, 1.0})
+    if (step * decade <= target) return step * decade;
+  return decade / 2;  // log10 rounded up (target just below a power of ten)
+}
+
+Image comb_image(const Workspace& ws, const View& view) {
+  Image image = surface_image(ws, view);
+  image.desim.what = 3;
+  const Array bends = grid_curvature(surface_input(ws), ws.patches);
+  require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
+  const auto points = as_vec3(ws.intpn);
+  Vec3 low = points[0], high = low;
+  double most = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vec3 p = points[k];
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    for (std::size_t d = 0; d < 2; ++d) {
+      const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
+      if (std::isfinite(bend)) most = std::max(most, bend);
+    }
+  }
+  const Vec3 size = high - low;
+  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  // The comb's end in space, away from the centre of curvature (so that a comb stands outside
+  // the surface's convex side and combs do not cross in a tight bend), then projected.
+  Array ends({points.size() * 2, 3});
+  auto out = as_vec3(ends);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t d = 0; d < 2; ++d)
+      out[2 * k + d] = points[k] - image.comb_scale * Vec3::load(bends.data() + 6 * k + 3 * d);
+  image.combs = projected(as_vec3(ends), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,
+                          bounding_box_centre(as_vec3(ws.inppn)));
+  // A comb that overflowed is named by its point of INTPN.
+  if (const std::size_t k = first_not_finite(image.combs.data(), image.combs.size());
+      k < image.combs.size()) {
+    DataError e(DataError::Problem::image_not_finite);
+    e.variable = "INTPN";
+    e.number = k / 4 / ws.intpn.shape[1] + 1;
+    e.column = k / 4 % ws.intpn.shape[1] + 1;
+    throw e;
+  }
+  return image;
+}
+
 Image picture_image(std::string name, std::string text, const View& view) {
   const Drawing3 drawing = duct_drawing(read_duct(text));
   return picture_image(std::move(name), std::move(text), drawing, view);
@@ -153,7 +203,9 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 
 Image image_of(const Workspace& ws, const Description& desim) {
   const View view{desim.projection, desim.parameters};
-  return desim.what == 0 ? input_image(ws, view) : surface_image(ws, view);
+  return desim.what == 0   ? input_image(ws, view)
+         : desim.what == 3 ? comb_image(ws, view)
+                           : surface_image(ws, view);
 }
 
 namespace {

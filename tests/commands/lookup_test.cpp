@@ -117,8 +117,8 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS TW=TWISTS"));
   CHECK(resolved(command("DISPLAY").options) ==
-        table("F=FIRST I=INPUT P=PICTURE S=SECOND FI=FIRST IN=INPUT PI=PICTURE SE=SECOND "
-              "SU=SURFACE"));
+        table("C=COMBS F=FIRST I=INPUT P=PICTURE S=SECOND CO=COMBS FI=FIRST IN=INPUT "
+              "PI=PICTURE SE=SECOND SU=SURFACE"));
   CHECK(resolved(command("PLOT").options) == table("E=EBCDIC S=SELECTRIC EB=EBCDIC SE=SELECTRIC"));
   CHECK(resolved(command("STORE").options) == table("F=FIRST S=SECOND FI=FIRST SE=SECOND"));
   CHECK(resolved(command("END").options) == table("A=APL C=CMS AP=APL CM=CMS"));
