@@ -66,8 +66,8 @@ void refuse_command_word(const std::vector<std::string>& words) {
 
 // PICK at CHANGE POINTS' POINTS?: the point picked on the image shown, rather than its number.
 const Prompt change_points_prompt{"POINTS?",
-                                  "k x y z [x y z ...] (to points k, k+1, ...); PICK: point at "
-                                  "one on the image shown; an empty line ends the points.",
+                                  "A point number k and x y z (more go to k+1, ...); PICK: point "
+                                  "at one on the image shown; an empty line ends the points.",
                                   pick_choices()};
 const Prompt new_place_prompt{"NEW X Y Z?",
                               "The point's new x y z; in an ORTHOGONAL view PICK: point at where "

@@ -48,11 +48,6 @@ Placement placement_of(const Image& shown, TermMode mode) {
 
 }  // namespace
 
-Point2 image_point(const Image& shown, TermMode mode, DevicePoint at) {
-  const Placement p = placement_of(shown, mode);
-  return {(at.x - p.dx) / p.scale, (at.y - p.dy) / p.scale};
-}
-
 Point2 pick_image_point(Context& ctx, const Prompt& prompt, const Image& shown, bool rounded) {
   for (;;) {
     if (auto at = ctx.pick(prompt)) {

@@ -15,13 +15,10 @@
 
 namespace igds {
 
-// A screen address (4013 points) as a point of the image shown: the inverse of the placement the
-// screen drew it with (devices/layout.h: the dialogue's square in tek mode, the full one in the
-// Tek window of xterm and in the files), its ZOOM window included.
-Point2 image_point(const Image& shown, TermMode mode, DevicePoint at);
-
-// A cross-hair pick after `prompt` as a point of the image shown; a reply that is not a pick gets
-// INCORRECT ENTRY and the cross-hair again. With `rounded`, each coordinate is rounded to the
+// A cross-hair pick after `prompt` as a point of the image shown, by the inverse of the placement
+// the screen drew it with (devices/layout.h: the dialogue's square in tek mode, the full one in
+// the Tek window of xterm and in the files), its ZOOM window included. A reply that is not a pick
+// gets INCORRECT ENTRY and the cross-hair again. With `rounded`, each coordinate is rounded to the
 // power of ten just below one screen point in image units: what a pick can tell, and no more.
 Point2 pick_image_point(Context& ctx, const Prompt& prompt, const Image& shown,
                         bool rounded = false);

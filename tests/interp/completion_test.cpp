@@ -31,8 +31,9 @@ TEST_CASE("completion: commands, then their options, then projections") {
   CHECK(commands.front() == "BUILD");
   CHECK(has(commands, "EXPORT"));
 
-  CHECK(interpreter.completions({"d"}) ==
-        std::vector<std::string>{"FIRST", "SECOND", "FILE", "INPUT", "SURFACE", "PICTURE"});
+  CHECK(interpreter.completions({"d"}) == std::vector<std::string>{"FIRST", "SECOND", "FILE",
+                                                                   "INPUT", "SURFACE", "PICTURE",
+                                                                   "COMBS"});
   CHECK(interpreter.completions({"E"}) == std::vector<std::string>{"APL", "CMS"});
   CHECK(interpreter.completions({"BUILD"}).empty());
   CHECK(interpreter.completions({"NOSUCH"}).empty());
