@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "workspace/drawing/project.h"
@@ -131,7 +132,7 @@ double comb_scale_for(double extent, double most) {
 Image comb_image(const Workspace& ws, const View& view) {
   Image image = surface_image(ws, view);
   image.desim.what = 3;
-  const Array bends = grid_curvature(surface_input(ws), ws.patches);
+  Array bends = grid_curvature(surface_input(ws), ws.patches);
   require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
   const auto points = as_vec3(ws.intpn);
   Vec3 low = points[0], high = low;
@@ -148,14 +149,14 @@ Image comb_image(const Workspace& ws, const View& view) {
   const Vec3 size = high - low;
   image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
   // The comb's end in space, away from the centre of curvature (so that a comb stands outside
-  // the surface's convex side and combs do not cross in a tight bend), then projected.
-  Array ends({points.size() * 2, 3});
-  auto out = as_vec3(ends);
+  // the surface's convex side and combs do not cross in a tight bend), written over its vector
+  // (a large grid holds no second array of them), then projected.
+  auto ends = as_vec3(bends);
   for (std::size_t k = 0; k < points.size(); ++k)
     for (std::size_t d = 0; d < 2; ++d)
-      out[2 * k + d] = points[k] - image.comb_scale * Vec3::load(bends.data() + 6 * k + 3 * d);
-  image.combs = projected(as_vec3(ends), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,
-                          bounding_box_centre(as_vec3(ws.inppn)));
+      ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  image.combs = projected(as_vec3(std::as_const(bends)), {ws.intpn.shape[0], ws.intpn.shape[1], 4},
+                          view, bounding_box_centre(as_vec3(ws.inppn)));
   // A comb that overflowed is named by its point of INTPN.
   if (const std::size_t k = first_not_finite(image.combs.data(), image.combs.size());
       k < image.combs.size()) {
