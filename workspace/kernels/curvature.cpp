@@ -25,20 +25,6 @@ Blend blend(double s) {
           {12 * s - 6, -12 * s + 6, 6 * s - 4, 6 * s - 2}};
 }
 
-// a^T M b for each coordinate of a patch's three 4 x 4 matrices.
-Vec3 form(const double* m, const double* a, const double* b) {
-  double out[3];
-  for (int c = 0; c < 3; ++c) {
-    double sum = 0;
-    for (int r = 0; r < 4; ++r) {
-      const double* row = m + 16 * c + 4 * r;
-      sum += a[r] * (row[0] * b[0] + row[1] * b[1] + row[2] * b[2] + row[3] * b[3]);
-    }
-    out[c] = sum;
-  }
-  return {out[0], out[1], out[2]};
-}
-
 // Grid line `index` of `count` in a direction with `inputs` input lines and `inserted` lines
 // between each two: its patch and its parameter in that patch, as FIT places it.
 struct Place {
@@ -108,16 +94,38 @@ Array grid_curvature(const SurfaceInput& in, const Array& patches) {
   }
   parallel_for(shape.rows, threads_for(shape.rows * shape.cols * 6),
                [&](std::size_t first, std::size_t last) {
+                 // Per patch of the row, M times v's blends and their derivatives, per
+                 // coordinate: then each point costs four products of length 4 per coordinate.
+                 std::vector<double> mv(pc * 3 * 3 * 4);
                  for (std::size_t i = first; i < last; ++i) {
                    const Place row = place(i, std::size_t(in.nocur), std::size_t(in.intcu));
                    const Blend v = blend(row.s);
+                   for (std::size_t j = 0; j < pc; ++j) {
+                     const double* m = patches.data() + 48 * (row.patch * pc + j);
+                     double* out_j = mv.data() + 36 * j;
+                     for (const double* b : {v.f, v.d1, v.d2}) {
+                       for (int c = 0; c < 3; ++c)
+                         for (int r = 0; r < 4; ++r, ++out_j) {
+                           const double* mr = m + 16 * c + 4 * r;
+                           *out_j = mr[0] * b[0] + mr[1] * b[1] + mr[2] * b[2] + mr[3] * b[3];
+                         }
+                     }
+                   }
                    double* o = out.data() + 6 * shape.cols * i;
                    for (std::size_t j = 0; j < shape.cols; ++j, o += 6) {
                      const Blend& u = columns[j];
-                     const double* m = patches.data() + 48 * (row.patch * pc + column_patch[j]);
+                     const double* f = mv.data() + 36 * column_patch[j];  // M F(v)
+                     const double *f1 = f + 12, *f2 = f + 24;             // M F'(v), M F''(v)
+                     auto times = [](const double* a, const double* mb) {
+                       double x[3];
+                       for (int c = 0; c < 3; ++c)
+                         x[c] = a[0] * mb[4 * c] + a[1] * mb[4 * c + 1] + a[2] * mb[4 * c + 2] +
+                                a[3] * mb[4 * c + 3];
+                       return Vec3{x[0], x[1], x[2]};
+                     };
                      // u runs along the curves, v along the stringers (docs/kernels.md).
-                     store(o, curvature_vector(form(m, u.d1, v.f), form(m, u.d2, v.f)));
-                     store(o + 3, curvature_vector(form(m, u.f, v.d1), form(m, u.f, v.d2)));
+                     store(o, curvature_vector(times(u.d1, f), times(u.d2, f)));
+                     store(o + 3, curvature_vector(times(u.f, f1), times(u.f, f2)));
                    }
                  }
                });
