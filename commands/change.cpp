@@ -5,6 +5,7 @@
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/entries.h"
+#include "commands/pick.h"
 #include "commands/reports.h"
 #include "commands/surface.h"
 #include "workspace/numbers/typed.h"
@@ -60,6 +61,70 @@ void refuse_command_word(const std::vector<std::string>& words) {
   if (!parse_typed_number(words[0])) {
     std::string reason = command_word_reason(words[0], answer_first);
     if (!reason.empty()) throw EntryError(reason);
+  }
+}
+
+// PICK at CHANGE POINTS' POINTS?: the point picked on the image shown, rather than its number.
+const Prompt change_points_prompt{"POINTS?",
+                                  "A point number k and x y z (more go to k+1, ...); PICK: point "
+                                  "at one on the image shown; an empty line ends the points.",
+                                  pick_choices()};
+const Prompt new_place_prompt{"NEW X Y Z?",
+                              "The point's new x y z; in an ORTHOGONAL view PICK: point at where "
+                              "it goes (the third coordinate kept); an empty line leaves it.",
+                              pick_choices()};
+
+// PICK at POINTS?: the point nearest the cross-hair, named, then its new place typed or (in an
+// orthogonal view) picked. Throws EntryError when there is nothing to pick on.
+void change_picked_point(Context& ctx, const Workspace& ws, Array& inppn, Edits& edits) {
+  if (!ws.image) throw EntryError("THERE IS NO IMAGE TO PICK ON (DISPLAY INPUT OR SURFACE FIRST)");
+  const ImageRef shown = ws.image;
+  if (!shows_input_points(ws, *shown))
+    throw EntryError("THE CURRENT IMAGE SHOWS NO INPUT POINTS OF THE SURFACE");
+  const int k = nearest_input_point(ws, *shown, pick_image_point(ctx, pick_point_prompt, *shown));
+  ctx.say(point_words(inppn, k));
+  const std::size_t first = 3 * std::size_t(k - 1);
+  for (;;) {
+    auto words = ctx.ask(new_place_prompt);
+    if (words.empty()) return;  // the point stays where it is
+    try {
+      if (!is_pick(words)) {
+        words.insert(words.begin(), std::to_string(k));
+        if (words.size() != 4) throw EntryError("GIVE X Y Z, OR PICK IN AN ORTHOGONAL VIEW");
+        apply_point_entry(words, inppn, &edits);
+      } else {
+        const std::array<double, 3> now{inppn.ravel[first], inppn.ravel[first + 1],
+                                        inppn.ravel[first + 2]};
+        if (!placed_in_view(shown->desim, now, {}))
+          throw EntryError("A PLACE IS PICKED IN AN ORTHOGONAL VIEW ONLY: TYPE X Y Z");
+        const auto placed = placed_in_view(shown->desim, now,
+                                           pick_image_point(ctx, pick_place_prompt, *shown, true));
+        std::copy(placed->begin(), placed->end(),
+                  inppn.ravel.begin() + static_cast<std::ptrdiff_t>(first));
+        edits.part(first, first + 3);
+      }
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+      continue;
+    }
+    ctx.say(point_words(inppn, k));
+    return;
+  }
+}
+
+// The point entries of CHANGE POINTS: those of BUILD, and PICK.
+void ask_changed_points(Context& ctx, const Workspace& ws, Array& inppn, Edits& edits) {
+  for (;;) {
+    auto words = ctx.ask(change_points_prompt);
+    if (words.empty()) return;
+    try {
+      if (is_pick(words))
+        change_picked_point(ctx, ws, inppn, edits);
+      else
+        apply_point_entry(words, inppn, &edits);
+    } catch (const EntryError& e) {
+      ctx.report(e.what());
+    }
   }
 }
 
@@ -123,7 +188,7 @@ void run_change(Context& ctx, const Choice* option) {
     modes.marks_twists = ask_twists(ctx);
   } else {
     if (what == points) {
-      ask_point_entries(ctx, inppn, &point_edits);
+      ask_changed_points(ctx, ws, inppn, point_edits);
       // Tangents set by AUTO were the old points': only AUTO again keeps the surface's flag.
       modes.auto_tangents = ask_tangents_too(ctx, ws, inppn, inptg, tangent_edits);
     } else {
@@ -148,9 +213,10 @@ void run_change(Context& ctx, const Choice* option) {
   if (refitted) ws.changes.derived = changes.derived;
 }
 
-constexpr const Prompt* questions[] = {&density_prompt,         &points_prompt,
-                                       &change_tangents_prompt, &tangents_prompt,
-                                       &change_grid_prompt,     &twists_prompt};
+constexpr const Prompt* questions[] = {
+    &density_prompt,   &change_points_prompt, &pick_point_prompt,
+    &new_place_prompt, &pick_place_prompt,    &change_tangents_prompt,
+    &tangents_prompt,  &change_grid_prompt,   &twists_prompt};
 
 }  // namespace
 
@@ -175,7 +241,12 @@ extern const Command change_command{
         "along the curve, 0 along the stringer) up to an empty line, then asks CHANGE GRID TOO? "
         "(Y OR N): answer Y or N, or type the two numbers.\n"
         "  CHANGE POINTS    takes point entries \"k x y z [x y z ...]\" up to an empty line, then "
-        "asks CHANGE TANGENTS TOO? (Y OR N) (Y, N, AUTO or a tangent entry) and CHANGE GRID TOO?\n"
+        "asks CHANGE TANGENTS TOO? (Y OR N) (Y, N, AUTO or a tangent entry) and CHANGE GRID TOO? "
+        "PICK at POINTS? takes the point by pointing at it on the image shown (DISPLAY INPUT, "
+        "SURFACE or COMBS of the surface) with the cross-hair (POINT?): igds names it, POINT 7 AT "
+        "10 5 2, and asks NEW X Y Z?: type the coordinates, or in an ORTHOGONAL view PICK and "
+        "point at where it goes (NEW PLACE?; the coordinate the view does not show is kept). From "
+        "a command file a pick is a line X Y, the screen address (0..1023, 0..779).\n"
         "  CHANGE TWISTS    asks TWISTS? (ZERO OR MARKS), or takes the word on the line (C TW M): "
         "ZERO, the default, gives every patch corner the zero twist of IGDS 1975; MARKS the twist "
         "of Marks 1970 (Birkhoff and de Boor, from the four diagonal neighbours; zero at the "
@@ -195,7 +266,14 @@ extern const Command change_command{
         "  POINTS? 5 10 10 4\n"
         "  POINTS?\n"
         "  CHANGE TANGENTS TOO? (Y OR N) N\n"
-        "  CHANGE GRID TOO? (Y OR N) 8 8",
+        "  CHANGE GRID TOO? (Y OR N) 8 8\n"
+        "Or by pointing, on DISPLAY INPUT ORTHOGONAL XZ:\n"
+        "  POINTS? PICK\n"
+        "  POINT?                 (the cross-hair: click on the point)\n"
+        "  POINT 5 AT 10 10 0\n"
+        "  NEW X Y Z? PICK\n"
+        "  NEW PLACE?             (click where it goes: x and z change, y stays)\n"
+        "  POINT 5 AT 10.2 10 3.9",
     .questions = questions,
     .run = run_change,
 };

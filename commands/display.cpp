@@ -1,5 +1,6 @@
 // DISPLAY FIRST | SECOND | FILE | INPUT | SURFACE (manual 4.4): a new current image, drawn;
-// and PICTURE, a DUCT 4.4 picture file projected like a surface (docs/exchange.md).
+// and PICTURE, a DUCT 4.4 picture file projected like a surface (docs/exchange.md); COMBS, the
+// surface with the curvature combs of its curves and stringers (docs/kernels.md, "Curvature").
 #include "commands/answers.h"
 #include "commands/command.h"
 #include "commands/reports.h"
@@ -15,7 +16,7 @@ namespace igds {
 
 namespace {
 
-enum Option { first, second, file, input, surface, picture, hidden };
+enum Option { first, second, file, input, surface, picture, hidden, combs };
 
 constexpr Choice options[] = {
     {"FIRST", first, {}, "the copy kept by STORE FIRST"},
@@ -27,6 +28,8 @@ constexpr Choice options[] = {
      "the DUCT picture NAME.DUCTPIC, projected like a surface"},
     {"HIDDEN", hidden, "[projection [parameters]]",
      "the interpolated grid without the lines the surface hides"},
+    {"COMBS", combs, "[projection [parameters]]",
+     "the interpolated grid with the curvature combs of its curves and stringers"},
 };
 
 const Prompt file_prompt{"FILE NAME?",
@@ -96,6 +99,10 @@ void run_display(Context& ctx, const Choice* option) {
       if (!ws.has_surface()) throw Report(reports::surface_not_found);
       show(ctx, std::make_shared<const Image>(ask_image(ctx, hidden_surface_image)));
       return;
+    case combs:
+      if (!ws.has_surface()) throw Report(reports::surface_not_found);
+      show(ctx, std::make_shared<const Image>(ask_image(ctx, comb_image)));
+      return;
   }
 }
 
@@ -112,6 +119,7 @@ std::string_view image_kind_word(int what) {
   return what == 0   ? options[input].word
          : what == 1 ? options[surface].word
          : what == 2 ? options[picture].word
+         : what == 3 ? options[combs].word
                      : "IMAGE";
 }
 
@@ -124,12 +132,14 @@ extern const Command display_command{
     .options = options,
     .follows = {},
     .option_prompt =
-        {"FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE OR HIDDEN?",
-         "INPUT or SURFACE: project the current surface, HIDDEN without what it hides; "
-         "FIRST, SECOND or FILE: a kept image; PICTURE: a DUCT picture file.",
+        {"FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE, HIDDEN OR COMBS?",
+         "INPUT, SURFACE, HIDDEN (hidden lines removed), COMBS (curvature): project the "
+         "surface; FIRST, SECOND, FILE: kept images; PICTURE: a DUCT file.",
          options},
     .bad_option = reports::incorrect_parameter,  // the manual's 4.4
-    .summary = "projects and draws the input, the surface or a DUCT picture, or a kept image",
+    .summary =
+        "projects and draws the input, the surface, its combs or a DUCT picture, or a "
+        "kept image",
     .long_help =
         "DISPLAY makes a new current image and draws it on the left of the screen with a short "
         "description beside it. The screen is not erased first (ERASE does that): images are "
@@ -152,6 +162,16 @@ extern const Command display_command{
         "  DISPLAY HIDDEN [projection [parameters]]  the surface as DISPLAY SURFACE draws it, "
         "without the parts of its curves and stringers that the surface itself hides, found to "
         "the device's resolution; PLOT, EXPORT, STORE, ZOOM, UNDO and REDO keep them hidden.\n"
+        "  DISPLAY COMBS [projection [parameters]]  the surface's grid with the curvature combs of "
+        "its curves and stringers, the fairness check of a hull: at every interpolated point a "
+        "line normal to the curve (or stringer), away from the centre of curvature, as long as "
+        "the curvature times the scale, and the line joining the ends. The curvature is the exact "
+        "one of the patches. The scale, written in the description (SCALE 50: a curvature of 0.1 "
+        "gives a comb 5 long, in the units of the points), is 1, 2 or 5 times a power of ten, "
+        "chosen so that the largest comb is at most a fifth of the surface's larger side. A fair "
+        "line has a smooth comb; a bump in the comb is a bump in the line, a comb changing side "
+        "an inflection. PLOT and EXPORT draw the combs with the image (SURFACE NOT FOUND if "
+        "there is no surface).\n"
         "\n"
         "Projections and their parameters (what is not on the line is asked):\n"
         "  CONIC x y z         perspective from the view point x y z towards the centre of the "
@@ -170,7 +190,8 @@ extern const Command display_command{
         "  D I C 100 -50 80        (DISPLAY INPUT CONIC, view point 100 -50 80)\n"
         "  D SU O XY\n"
         "  D H ASSONOMETRIC 110 130 120   (the same surface, hidden lines removed)\n"
-        "  DISPLAY PICTURE HULL ORTHOGONAL XY",
+        "  DISPLAY PICTURE HULL ORTHOGONAL XY\n"
+        "  DISPLAY COMBS ORTHOGONAL YZ",
     .questions = questions,
     .run = run_display,
 };

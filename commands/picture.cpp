@@ -351,6 +351,38 @@ void add_visible(Drawing2& drawing, const Image& image, const Grid& g, const Box
   }
 }
 
+// DISPLAY COMBS: every curve's comb, then every stringer's, each as one path that goes out along
+// a hair, across to the next comb's end and back along its hair, then along the line to the next
+// hair (every hair drawn once, all finite for every device and file), and the envelope joining
+// the combs' ends.
+void add_combs(Drawing2& drawing, const Array& combs, const Grid& g, const Box* window) {
+  if (combs.shape != std::vector<std::size_t>{g.planes, g.rows, 4}) return;
+  auto comb = [&](std::size_t count, auto index, std::size_t column, Identity id) {
+    auto end = [&](std::size_t k) {
+      const double* e = combs.data() + 4 * index(k) + column;
+      return Point2{e[0], e[1]};
+    };
+    auto base = [&](std::size_t k) { return g.at(index(k) / g.rows, index(k) % g.rows); };
+    std::vector<Point2> hairs, envelope;
+    hairs.reserve(2 * count);
+    envelope.reserve(count);
+    for (std::size_t k = 0; k < count; ++k) {
+      const bool out = k % 2 == 0;
+      hairs.push_back(out ? base(k) : end(k));
+      hairs.push_back(out ? end(k) : base(k));
+      envelope.push_back(end(k));
+    }
+    add_line(drawing, hairs, id, window);
+    add_line(drawing, envelope, id, window);
+  };
+  for (std::size_t c = 0; c < g.planes; ++c)
+    comb(g.rows, [&](std::size_t k) { return c * g.rows + k; }, 0,
+         {Role::comb, static_cast<int>(c + 1), 1});
+  for (std::size_t r = 0; r < g.rows; ++r)
+    comb(g.planes, [&](std::size_t k) { return k * g.rows + r; }, 2,
+         {Role::comb, static_cast<int>(r + 1), 0});
+}
+
 std::string fitted(std::string_view text, std::size_t width) {
   std::string line(text);
   if (line.size() > width) line.resize(width);
@@ -409,6 +441,12 @@ std::string zoom_words(const std::array<double, 4>& window) {
 // How an input image of a surface whose tangents AUTO set says so.
 constexpr const char* auto_words = "TANGENTS AUTO";
 
+std::string comb_words(const Image& image) {
+  if (image.combs.empty()) return "NO COMBS";
+  if (image.comb_scale == 0) return "NO CURVATURE";
+  return fmt::format("SCALE {}", plain_number(image.comb_scale));
+}
+
 std::string image_line(const Image& image) {
   std::string line = describe_line(image.desim);
   if (image.desim.what == 0 && image.auto_tangents) line += std::string(", ") + auto_words;
@@ -418,6 +456,7 @@ std::string image_line(const Image& image) {
     if (const std::string colours = colours_line(image.picture->drawing); !colours.empty())
       line += ", " + colours;
   }
+  if (image.desim.what == 3) line += ", " + comb_words(image);
   if (const auto& w = image.window) line += ", " + zoom_words(*w);
   return line;
 }
@@ -501,6 +540,7 @@ Picture picture_of(std::shared_ptr<const Image> image) {
   Picture pic;
   pic.caption = image_caption(*image, caption_width);
   if (image->desim.what == 0 && image->auto_tangents) pic.caption.push_back(auto_words);
+  if (image->desim.what == 3) pic.caption.push_back(fitted(comb_words(*image), caption_width));
   Grid g = grid_of(image->points);
   if (g.planes == 0 || g.rows == 0) return pic;
   Drawing2& d = pic.drawing;
@@ -536,6 +576,7 @@ Picture picture_of(std::shared_ptr<const Image> image) {
     for (std::size_t r = 0; r < g.rows; ++r)
       add_clipped(d, Point2View(g.data + 2 * r, g.planes, 2 * g.rows),
                   {Role::stringer, static_cast<int>(r + 1)}, *window);
+    add_combs(d, image->combs, g, window);
     return pic;
   }
   // The curves and stringers read the image's own points: no copy of a large grid.
@@ -545,6 +586,7 @@ Picture picture_of(std::shared_ptr<const Image> image) {
   for (std::size_t r = 0; r < g.rows; ++r)
     d.add_polyline(pool, 2 * r, g.planes, 2 * g.rows, {},
                    {Role::stringer, static_cast<int>(r + 1)});
+  add_combs(d, image->combs, g, nullptr);
   return pic;
 }
 

@@ -24,12 +24,14 @@ namespace igds {
 // one polyline per curve, then one per stringer, reading the image's own points (not copied).
 // An IMAGE of a shape other than planes x rows x 2 gives no lines (never a crash); non-finite
 // points break a line. DISPLAY HIDDEN (desim.hidden): the visible pieces of the curves, then of
-// the stringers (workspace/kernels/hidden.h), each a polyline. DISPLAY PICTURE (desim.what == 2):
-// the picture's projected drawing with its colours and dashes; the description adds the picture's
-// name after PICTURE, and COLOURS and the colours used when there are several (the 4013 draws them
-// alike). A zoomed image (Image::window): only what lies inside the window, lines cut at its edges,
-// and the window's corners as two one-point polylines (they draw nothing) so that the window is
-// what gets scaled to the screen.
+// the stringers (workspace/kernels/hidden.h), each a polyline. DISPLAY COMBS (desim.what == 3): the
+// surface's lines, then the combs (one path of hairs and one envelope per curve, then per
+// stringer, Role::comb). DISPLAY PICTURE (desim.what == 2): the picture's projected drawing with
+// its colours and dashes; the description adds the picture's name after PICTURE, and COLOURS and
+// the colours used when there are several (the 4013 draws them alike). A zoomed image
+// (Image::window): only what lies inside the window, lines cut at its edges, and the window's
+// corners as two one-point polylines (they draw nothing) so that the window is what gets scaled
+// to the screen.
 Picture picture_of(std::shared_ptr<const Image> image);
 Picture picture_of(const ImageRef& image);
 Picture picture_of(const Image& image);
@@ -50,6 +52,11 @@ std::string image_line(const Image& image);
 inline constexpr std::string_view zoomed_word = "ZOOMED";
 // ZOOMED TO x0 y0 x1 y1, the window's corners to five significant digits.
 std::string zoom_words(const std::array<double, 4>& window);
+
+// What the caption of DISPLAY COMBS says of its combs: SCALE s (a comb is s times the curvature
+// long, in the units of the surface), NO CURVATURE (no line bends) or NO COMBS (an image assigned
+// in APL).
+std::string comb_words(const Image& image);
 
 // A number as APL writes it, in plain ASCII (a minus sign for APL's high minus).
 std::string plain_number(double value);

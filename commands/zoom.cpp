@@ -13,6 +13,7 @@
 
 #include "commands/answers.h"
 #include "commands/command.h"
+#include "commands/pick.h"
 #include "commands/picture.h"
 #include "devices/layout.h"
 #include "devices/render.h"
@@ -32,8 +33,6 @@ const Prompt first_corner{"FIRST CORNER?",
 const Prompt second_corner{"SECOND CORNER?",
                            "Point at the opposite corner with the cross-hair and click (or type "
                            "its screen address X Y: X 0..1023, Y 0..779)."};
-
-constexpr Choice pick_word[] = {{"PICK", 0, {}, "two corners picked with the cross-hair"}};
 
 // The box of the image's finite points (x0 > x1 when there are none).
 Window extent_of(const Image& image) {
@@ -84,31 +83,10 @@ Window by_factor(const Image& image, const std::vector<double>& v) {
   return corners(cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2);
 }
 
-// A screen address (4013 points) as a point of the image shown: the inverse of the placement
-// the screen drew it with (devices/layout.h: the dialogue's square in tek mode, the full one in
-// the Tek window of xterm and in the files).
-Point2 image_point(const Image& shown, TermMode mode, DevicePoint at) {
-  const TekLayout layout = mode == TermMode::tek ? dialogue_layout() : full_layout();
-  const Box& sq = layout.image;
-  const double m = tek_screen::image_margin;
-  const Box box{sq.x0 + m, sq.y0 + m, sq.x1 - m, sq.y1 - m};
-  const Placement p = fit(picture_of(shown).drawing, box, tek_screen::mark);
-  return {(at.x - p.dx) / p.scale, (at.y - p.dy) / p.scale};
-}
-
 Window by_picks(Context& ctx, const Image& shown) {
   std::array<Point2, 2> picked;
   const Prompt* prompts[] = {&first_corner, &second_corner};
-  for (int k = 0; k < 2; ++k) {
-    for (;;) {
-      if (auto at = ctx.pick(*prompts[k])) {
-        picked[k] = image_point(shown, ctx.options().term, *at);
-        break;
-      }
-      ctx.report(
-          fmt::format("{}: A CROSS-HAIR PICK OR X Y (0..1023 0..779)", reports::incorrect_entry));
-    }
-  }
+  for (int k = 0; k < 2; ++k) picked[k] = pick_image_point(ctx, *prompts[k], shown);
   return corners(picked[0].x, picked[0].y, picked[1].x, picked[1].y);
 }
 
@@ -119,7 +97,7 @@ void run_zoom(Context& ctx, const Choice*) {
   std::optional<Window> window;
   if (ctx.has_pending()) {
     const std::vector<std::string> words = ctx.ask({});
-    if (words.size() == 1 && choose(pick_word, words[0])) {
+    if (is_pick(words)) {
       window = by_picks(ctx, shown);
     } else {
       const std::vector<double> v = numbers_of(words);

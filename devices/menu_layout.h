@@ -17,7 +17,7 @@ namespace igds {
 
 namespace menu_screen {
 inline constexpr int label_columns = 10;  // a label's characters ("D SURFACE", "ST SECOND")
-inline constexpr int item_height = 24;    // one alpha line (22) and a gap
+inline constexpr int item_height = 23;    // one alpha line (22) and a point: 33 items a column
 // A label's ten cells and room around them: xterm draws a character with its font's glyph from
 // the start of its cell, and in a small window the glyph is wider than the scaled cell.
 inline constexpr int box_width = label_columns * tek_screen::char_width + 24;

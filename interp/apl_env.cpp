@@ -366,6 +366,9 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
       // Nor can igds tell what of it is hidden: it is drawn whole.
       image.desim.hidden = false;
       image.nearness = Array();
+      // Combs are made with the surface's image: IMAGE or DESIM of APL's own have none.
+      image.combs = Array();
+      image.comb_scale = 0;
       if (info.kept == Kept::image_view) {
         image.desim = apl_args::description_of(a.ravel);
       } else {

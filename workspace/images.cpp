@@ -9,6 +9,7 @@
 
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct.h"
+#include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/hidden.h"
 #include "workspace/kernels/surface.h"
@@ -135,6 +136,51 @@ Image hidden_surface_image(const Workspace& ws, const View& view) {
   return grid_image(ws, view, true);
 }
 
+double comb_scale_for(double extent, double most) {
+  if (!(most > 0) || !(extent > 0) || !std::isfinite(extent / most)) return 0;
+  const double target = comb_fraction * extent / most;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double step : {5.0, 2.0, 1.0})
+    if (step * decade <= target) return step * decade;
+  return decade / 2;  // log10 rounded up (target just below a power of ten)
+}
+
+Image comb_image(const Workspace& ws, const View& view) {
+  Image image = surface_image(ws, view);
+  image.desim.what = 3;
+  Array bends = grid_curvature(surface_input(ws), ws.patches);
+  require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
+  const auto points = as_vec3(ws.intpn);
+  Vec3 low = points[0], high = low;
+  double most = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Vec3 p = points[k];
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    for (std::size_t d = 0; d < 2; ++d) {
+      const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
+      if (std::isfinite(bend)) most = std::max(most, bend);
+    }
+  }
+  const Vec3 size = high - low;
+  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  // The comb's end in space, away from the centre of curvature (so that a comb stands outside
+  // the surface's convex side and combs do not cross in a tight bend), written over its vector
+  // (a large grid holds no second array of them), then projected.
+  auto ends = as_vec3(bends);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t d = 0; d < 2; ++d)
+      ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  std::size_t not_finite = 0;
+  std::tie(image.combs, not_finite) =
+      projected(as_vec3(std::as_const(bends)), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,
+                bounding_box_centre(as_vec3(ws.inppn)));
+  // A comb that overflowed is named by its point of INTPN (two combs a point).
+  if (not_finite < ends.size())
+    check_projected(not_finite / 2, points.size(), "INTPN", ws.intpn.shape[1]);
+  return image;
+}
+
 Image picture_image(std::string name, std::string text, const View& view) {
   const Drawing3 drawing = duct_drawing(read_duct(text));
   return picture_image(std::move(name), std::move(text), drawing, view);
@@ -170,8 +216,10 @@ Image picture_image(std::string name, std::string text, const Drawing3& drawing,
 
 Image image_of(const Workspace& ws, const Description& desim) {
   const View view{desim.projection, desim.parameters};
-  if (desim.what == 0) return input_image(ws, view);
-  return desim.hidden ? hidden_surface_image(ws, view) : surface_image(ws, view);
+  return desim.what == 0   ? input_image(ws, view)
+         : desim.what == 3 ? comb_image(ws, view)
+         : desim.hidden    ? hidden_surface_image(ws, view)
+                           : surface_image(ws, view);
 }
 
 namespace {

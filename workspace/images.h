@@ -21,6 +21,15 @@ namespace igds {
 Image input_image(const Workspace& ws, const View& view);
 Image surface_image(const Workspace& ws, const View& view);
 Image hidden_surface_image(const Workspace& ws, const View& view);
+// DISPLAY COMBS: the surface image (DESIM[1] 3) and the curvature combs of its curves and
+// stringers (Image::combs, docs/kernels.md "Curvature"): at every point of INTPN a comb away from
+// the centre of curvature, of length comb_scale times the curvature, comb_scale the number 1, 2 or
+// 5 times a power of ten that makes the largest comb at most comb_fraction of the grid's larger
+// side (0 when no line bends).
+Image comb_image(const Workspace& ws, const View& view);
+inline constexpr double comb_fraction = 0.2;
+// The scale of the combs: largest curvature `most` on a grid `extent` long.
+double comb_scale_for(double extent, double most);
 
 // DISPLAY PICTURE: the DUCT picture `text` of NAME.DUCTPIC drawn in space (duct_drawing of
 // workspace/exchange/duct.h) and seen as `view` says, CONIC towards the centre of the picture's
@@ -31,8 +40,8 @@ Image picture_image(std::string name, std::string text, const View& view);
 // The same, with the picture already read and drawn in space from `text` (`drawing`).
 Image picture_image(std::string name, std::string text, const Drawing3& drawing, const View& view);
 
-// The image `desim` describes (DESIM[1] 0 input, 1 surface) of the surface of `ws` (a picture
-// image, DESIM[1] 2, is made by picture_image from its text, not from a surface).
+// The image `desim` describes (DESIM[1] 0 input, 1 surface, 3 combs) of the surface of `ws` (a
+// picture image, DESIM[1] 2, is made by picture_image from its text, not from a surface).
 Image image_of(const Workspace& ws, const Description& desim);
 // The same image of the surface whose inputs `source` holds (its generation in
 // changes.surface), made when it is first looked at (a surface image interpolates the inputs

@@ -21,7 +21,9 @@ namespace igds {
 
 // DESIM: what an image shows and how it was projected.
 struct Description {
-  int what = 0;  // DESIM[1]: 0 input points, 1 surface, 2 a DUCT picture (DISPLAY PICTURE)
+  // DESIM[1]: 0 input points, 1 surface, 2 a DUCT picture (DISPLAY PICTURE), 3 the surface with
+  // its curvature combs (DISPLAY COMBS)
+  int what = 0;
   Projection projection = Projection::orthogonal;  // DESIM[2]
   std::array<double, 3> parameters{};  // DESIM[3 4 5]: view point, angles, axis+angle, plane
   // DISPLAY HIDDEN: a surface image drawn without what the surface hides. Not one of
@@ -51,6 +53,11 @@ struct Image {
   // and 1 (along the curve) or 0 (along the stringer). Drawn as arrows. (Files written before the
   // last two columns existed have k x 4.)
   Array arrows;
+  // DISPLAY COMBS only: planes x rows x 4, the projected ends of the combs of each point of
+  // `points`, along its curve (x y) then along its stringer (x y); and the comb's length in space
+  // per unit of curvature (docs/kernels.md, "Curvature"). Empty when IMAGE was assigned in APL.
+  Array combs;
+  double comb_scale = 0;
   // The generation of the surface this image is a projection of (Changes::surface), when it can
   // be made again from that surface and `desim` alone; 0 otherwise (an image read from a file or
   // assigned in the APL environment). The session saves such an image as that recipe.
@@ -70,9 +77,9 @@ struct Image {
   // A hidden-line image (desim.hidden): how near each point of `points` is to the eye, planes x
   // rows (workspace/kernels/hidden.h), from which the picture finds what the surface hides.
   Array nearness;
-  // The memory its points, arrows and nearness hold.
+  // The memory its points, arrows, nearness and combs hold.
   std::size_t bytes() const {
-    return (points.size() + arrows.size() + nearness.size()) * sizeof(double);
+    return (points.size() + arrows.size() + nearness.size() + combs.size()) * sizeof(double);
   }
   // Equal images show the same: how they were made is not compared.
   friend bool operator==(const Image& a, const Image& b) {
@@ -80,7 +87,8 @@ struct Image {
         a.picture == b.picture || (a.picture && b.picture && a.picture->name == b.picture->name &&
                                    a.picture->text == b.picture->text);
     return a.desim == b.desim && a.points == b.points && a.arrows == b.arrows && same_picture &&
-           a.window == b.window && a.nearness == b.nearness;
+           a.window == b.window && a.nearness == b.nearness && a.combs == b.combs &&
+           a.comb_scale == b.comb_scale;
   }
 };
 

@@ -226,8 +226,8 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
   if (d.what == 2 && !image.picture)
     return VariableProblem{
         view, fmt::format("{}[1] IS 2 BUT THE IMAGE IS NOT A DUCT PICTURE", info(view).name)};
-  if (d.what != 0 && d.what != 1 && d.what != 2)
-    return VariableProblem{view, fmt::format("{}[1] IS NOT 0, 1 OR 2", info(view).name)};
+  if (d.what < 0 || d.what > 3)
+    return VariableProblem{view, fmt::format("{}[1] IS NOT 0, 1, 2 OR 3", info(view).name)};
   if (d.hidden && d.what != 1)
     return VariableProblem{view, fmt::format("{} IS NOT A SURFACE: ITS HIDDEN LINES CANNOT BE "
                                              "REMOVED",
@@ -257,6 +257,23 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
   if (!(a.empty() || (a.size() == 2 && (a[1] == 6 || a[1] == 4))))
     return VariableProblem{points, fmt::format("THE ARROWS OF {} ARE {}, NOT K BY 6",
                                                info(points).name, shape_words(a))};
+  // Combs: none (an IMAGE assigned in APL), or two ends for every point.
+  const auto& c = image.combs.shape;
+  if (d.what != 3 && !c.empty())
+    return VariableProblem{
+        view, fmt::format("{}[1] IS NOT 3 BUT {} HAS COMBS", info(view).name, info(points).name)};
+  if (!c.empty() && !(s.size() == 3 && c == std::vector<std::size_t>{s[0], s[1], 4}))
+    return VariableProblem{
+        points, fmt::format("THE COMBS OF {} ARE {}, NOT {} BY 4", info(points).name,
+                            shape_words(c), shape_words(s.empty() ? s : std::vector{s[0], s[1]}))};
+  if (!std::isfinite(image.comb_scale) || image.comb_scale < 0)
+    return VariableProblem{points, fmt::format("THE COMB SCALE OF {} IS NOT A FINITE NUMBER, 0 OR "
+                                               "MORE",
+                                               info(points).name)};
+  if (const std::size_t k = first_not_finite(image.combs.data(), image.combs.size());
+      k < image.combs.size())
+    return VariableProblem{
+        points, fmt::format("COMB {} OF {} IS NOT A FINITE NUMBER", k / 2 + 1, info(points).name)};
   if (auto q = finite_problem(points, image.points)) return q;
   // A hidden-line image made now has no points yet (a recipe); one read has one nearness each.
   const auto& n = image.nearness.shape;

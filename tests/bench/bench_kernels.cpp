@@ -11,6 +11,7 @@
 
 #include "tests/bench/bench.h"
 #include "tests/bench/inputs.h"
+#include "workspace/kernels/curvature.h"
 #include "workspace/kernels/hidden.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/spline.h"
@@ -116,4 +117,15 @@ IGDS_BENCH("hidden") {
       fmt::print("hidden_lines_4m_over_1m_per_point {:.2f}\n",
                  seconds / double(points.size()) / at_1m);
   }
+}
+
+IGDS_BENCH("curvature") {
+  // DISPLAY COMBS's curvature of about a million points (991 x 991), against FIT of the same grid.
+  const Input in = wavy(100, 100);
+  const igds::SurfaceInput si{in.nocur, in.nostr, 9, 9, &in.inppn, &in.inptg};
+  const igds::Surface s = igds::interpolate(si);
+  double seconds = igds::bench::best_seconds(5, [&] { igds::grid_curvature(si, s.patches); });
+  double fit = igds::bench::best_seconds(5, [&] { igds::refit(si, s.patches); });
+  fmt::print("curvature_100x100_int9_ms {:.2f}\n", seconds * 1e3);
+  fmt::print("curvature_over_fit {:.2f}\n", seconds / fit);
 }

@@ -296,6 +296,37 @@ TEST_CASE("DISPLAY SURFACE asks the projection and its parameters") {
   CHECK(ctx.shown.size() == 4);
 }
 
+TEST_CASE("DISPLAY COMBS: the surface and a comb at every point, its scale said") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  CHECK(report_of(ctx, display_command, "COMBS") == "SURFACE NOT FOUND");
+  build_saddle(ctx);
+  ctx.run(display_command, "COMBS", {"O", "XZ"});
+  REQUIRE(ctx.ws.image);
+  const Image& image = *ctx.ws.image;
+  CHECK(image.desim == Description{3, Projection::orthogonal, {2, 0, 0}});
+  CHECK(image.points.shape == std::vector<std::size_t>{7, 7, 2});
+  CHECK(image.combs.shape == std::vector<std::size_t>{7, 7, 4});
+  // The saddle's lines are parabola-like arcs 20 long and 2 high: a comb of the largest
+  // curvature is at most a fifth of 20, and a scale of 1, 2 or 5 times a power of ten.
+  CHECK(image.comb_scale > 0);
+  const double mantissa = image.comb_scale / std::pow(10, std::floor(std::log10(image.comb_scale)));
+  CHECK((std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 ||
+         std::abs(mantissa - 5) < 1e-9));
+  // Point 1 of the grid (0 0 0) in XZ: its curve (along y, bending up to z 2 at y 10) bends
+  // towards +z, so its comb stands below it, in the plane x = 0.
+  CHECK(image.combs.ravel[0] == doctest::Approx(0));
+  CHECK(image.combs.ravel[1] < 0);
+  REQUIRE(ctx.shown.size() == 1);
+  CHECK(ctx.shown[0] == image);
+  // STORE FILE and DISPLAY FILE keep the combs.
+  ctx.run(store_command, "FILE", {"COMBS"});
+  ctx.run(display_command, "SURFACE", {"O", "XY"});
+  ctx.run(display_command, "FILE", {"COMBS"});
+  CHECK(*ctx.ws.image == image);
+  CHECK(ctx.ws.image->combs == image.combs);
+}
+
 TEST_CASE("STORE and DISPLAY FIRST, SECOND and FILE") {
   TempDir dir;
   FakeContext ctx(dir.path());

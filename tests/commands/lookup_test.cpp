@@ -88,7 +88,7 @@ TEST_CASE("the command table is the manual's, then the project's additions") {
   for (const Command* c : command_table()) got.push_back(c->name);
   const std::vector<std::string_view> expected{
       "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE", "END",   "HELP",
-      "ERASE", "EXPORT", "FIT",     "PUNCH",   "LIST", "UNDO",  "REDO", "ZOOM",  "IMPORT"};
+      "ERASE", "EXPORT", "FIT",     "PUNCH",   "LIST", "UNDO",  "REDO", "ZOOM",  "IMPORT", "PICK"};
   CHECK(got == expected);
 }
 
@@ -96,8 +96,8 @@ TEST_CASE("every one- and two-letter abbreviation of a command") {
   CHECK(resolved(names()) ==
         table("B=BUILD C=CHANGE D=DISPLAY E=END F=FIT H=HELP I=IMPORT L=LIST P=PLOT R=RESTORE "
               "S=STORE U=UNDO W=WRITE Z=ZOOM BU=BUILD CH=CHANGE DI=DISPLAY EN=END ER=ERASE "
-              "EX=EXPORT FI=FIT HE=HELP IM=IMPORT LI=LIST PL=PLOT PU=PUNCH RE=RESTORE SA=SAVE "
-              "ST=STORE UN=UNDO WR=WRITE ZO=ZOOM"));
+              "EX=EXPORT FI=FIT HE=HELP IM=IMPORT LI=LIST PI=PICK PL=PLOT PU=PUNCH RE=RESTORE "
+              "SA=SAVE ST=STORE UN=UNDO WR=WRITE ZO=ZOOM"));
   // REDO comes after RESTORE: R and RE stay RESTORE, RED is REDO.
   CHECK(find_command("RED")->name == "REDO");
   CHECK(find_command("RES")->name == "RESTORE");
@@ -112,12 +112,13 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(command("FIT").options.empty());
   CHECK(command("PUNCH").options.empty());
   CHECK(command("ZOOM").options.empty());
+  CHECK(command("PICK").options.empty());
   CHECK(command("UNDO").options.empty());
   CHECK(command("REDO").options.empty());
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS TW=TWISTS"));
   CHECK(resolved(command("DISPLAY").options) ==
-        table("F=FIRST H=HIDDEN I=INPUT P=PICTURE S=SECOND FI=FIRST HI=HIDDEN IN=INPUT "
+        table("C=COMBS F=FIRST H=HIDDEN I=INPUT P=PICTURE S=SECOND CO=COMBS FI=FIRST HI=HIDDEN IN=INPUT "
               "PI=PICTURE SE=SECOND SU=SURFACE"));
   CHECK(resolved(command("PLOT").options) == table("E=EBCDIC S=SELECTRIC EB=EBCDIC SE=SELECTRIC"));
   CHECK(resolved(command("STORE").options) == table("F=FIRST S=SECOND FI=FIRST SE=SECOND"));

@@ -71,6 +71,8 @@ TEST_CASE("2250 menu: the manual's items in the manual's order, then the command
     CHECK(std::find(added.begin(), added.end(), "EXPORT") != added.end());
     CHECK(std::find(added.begin(), added.end(), "CHANGE TWISTS") != added.end());
     CHECK(std::find(added.begin(), added.end(), "DISPLAY PICTURE") != added.end());
+    CHECK(std::find(added.begin(), added.end(), "DISPLAY COMBS") != added.end());
+    CHECK(std::find(added.begin(), added.end(), "PICK") != added.end());
     // One column beside the picture, as on the 2250.
     CHECK(items.size() <= static_cast<std::size_t>(menu_screen::rows));
   }

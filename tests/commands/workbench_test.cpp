@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands/command.h"
+#include "commands/pick.h"
 #include "commands/picture.h"
 #include "devices/layout.h"
 #include "devices/render.h"
@@ -28,6 +29,7 @@ extern const Command write_command;
 extern const Command export_command;
 extern const Command list_command;
 extern const Command zoom_command;
+extern const Command pick_command;
 }  // namespace igds
 
 namespace igds::test {
@@ -306,6 +308,109 @@ TEST_CASE("ZOOM: a window by its corners, by a factor and a centre, by picks; ZO
     CHECK(ctx.shown.size() == 1);
     CHECK(ctx.ws.image->window == std::nullopt);
   }
+}
+
+namespace {
+
+// The screen address (the full square of --term none and xterm) of image point p of the
+// current image.
+std::string address_of(FakeContext& ctx, Point2 p) {
+  const TekLayout l = full_layout();
+  const double m = tek_screen::image_margin;
+  const Placement at =
+      fit(picture_of(*ctx.ws.image).drawing,
+          {l.image.x0 + m, l.image.y0 + m, l.image.x1 - m, l.image.y1 - m}, tek_screen::mark);
+  const Point2 a = at.apply(p);
+  return fmt::format("{} {}", std::lround(a.x), std::lround(a.y));
+}
+
+}  // namespace
+
+TEST_CASE(
+    "PICK names the input point nearest the cross-hair, on an input, surface or combs image") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  CHECK(report_of(ctx, pick_command, "") == "INPUT NOT FOUND");
+  build_saddle(ctx);
+  CHECK(report_of(ctx, pick_command, "") == "IMAGE NOT FOUND");
+  CHECK(report_of(ctx, pick_command, "", {"5"}) == "INCORRECT COMMAND OR PARAMETERS");
+  for (const char* what : {"INPUT", "SURFACE", "COMBS"}) {
+    CAPTURE(what);
+    ctx.run(display_command, what, {"ORTHOGONAL", "XY"});
+    ctx.said.clear();
+    ctx.type({"NOT A PICK", address_of(ctx, {10.4, 19.2})});
+    ctx.run(pick_command, "");
+    CHECK(ctx.prompts.back() == "POINT?");
+    CHECK(ctx.said ==
+          std::vector<std::string>{"INCORRECT ENTRY: A CROSS-HAIR PICK OR X Y (0..1023 0..779)",
+                                   "POINT 6 AT 10 20 2"});
+  }
+  // Zoomed: the pick is read through the window.
+  ctx.run(zoom_command, "", {"15", "0", "25", "10"});
+  ctx.said.clear();
+  ctx.type({address_of(ctx, {19, 9})});
+  ctx.run(pick_command, "");
+  CHECK(ctx.said == std::vector<std::string>{"POINT 8 AT 20 10 2"});
+  // An image of another shape than the surface's (after CHANGE GRID) shows none of its points.
+  ctx.type({"3 3"});
+  ctx.run(change_command, "GRID");
+  CHECK(report_of(ctx, pick_command, "") ==
+        "THE CURRENT IMAGE SHOWS NO INPUT POINTS OF THE SURFACE (DISPLAY INPUT OR SURFACE FIRST)");
+}
+
+TEST_CASE(
+    "CHANGE POINTS takes a picked point: a new place typed, or picked in an orthogonal view") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  ctx.type({"PICK", "", "N", "N"});
+  ctx.run(change_command, "POINTS");
+  CHECK(ctx.reports == 1);  // no image to pick on: the entry refused, the next one awaited
+  ctx.run(display_command, "INPUT", {"ORTHOGONAL", "XZ"});
+  const Image xz = *ctx.ws.image;
+  // Point 4 (10 0 2) picked and moved to x 5, z 3 in the XZ view: y kept. Then point 7 (20 0
+  // 0) picked and given a new place typed.
+  ctx.said.clear();
+  ctx.type({"PICK", address_of(ctx, {10, 2}), "PICK", address_of(ctx, {5, 3}), "PICK",
+            address_of(ctx, {19.5, 0.3}), "1 2", "1 2 3", "", "N", "N"});
+  ctx.run(change_command, "POINTS");
+  REQUIRE(ctx.said.size() == 5);
+  CHECK(ctx.said[0] == "POINT 4 AT 10 0 2");
+  CHECK(ctx.said[1].starts_with("POINT 4 AT "));
+  CHECK(ctx.said[2] == "POINT 7 AT 20 0 0");
+  CHECK(ctx.said[3] == "INCORRECT ENTRY: GIVE X Y Z, OR PICK IN AN ORTHOGONAL VIEW");
+  CHECK(ctx.said[4] == "POINT 7 AT 1 2 3");
+  CHECK(ctx.reports == 2);  // "1 2": three coordinates wanted
+  const double* p4 = ctx.ws.inppn.data() + 3 * 3;
+  CHECK(std::abs(p4[0] - 5) < 0.1);
+  CHECK(p4[1] == 0);
+  CHECK(std::abs(p4[2] - 3) < 0.1);
+  const double* p7 = ctx.ws.inppn.data() + 3 * 6;
+  CHECK(std::array<double, 3>{p7[0], p7[1], p7[2]} == std::array<double, 3>{1, 2, 3});
+  CHECK(ctx.ws.image->desim == xz.desim);
+
+  // In another projection the new place is typed, not picked.
+  ctx.run(display_command, "SURFACE", {"ASSONOMETRIC", "110", "130", "120"});
+  ctx.said.clear();
+  ctx.type({"PICK", address_of(ctx, {0, 0}), "PICK", "", "", "N", "N"});
+  const std::size_t reports = ctx.reports;
+  const Array before = ctx.ws.inppn;
+  ctx.run(change_command, "POINTS");
+  CHECK(ctx.reports == reports + 1);
+  REQUIRE(ctx.said.size() == 2);
+  CHECK(ctx.said[0].starts_with("POINT "));
+  CHECK(ctx.said[1] == "INCORRECT ENTRY: A PLACE IS PICKED IN AN ORTHOGONAL VIEW ONLY: TYPE X Y Z");
+  CHECK(ctx.ws.inppn == before);  // an empty line at NEW X Y Z? leaves the point
+}
+
+TEST_CASE("placed_in_view: the plane's two coordinates set, the third kept; other views none") {
+  const std::array<double, 3> p{1, 2, 3};
+  auto in = [](double plane) { return Description{0, Projection::orthogonal, {plane, 0, 0}}; };
+  CHECK(placed_in_view(in(1), p, {7, 8}) == std::array<double, 3>{7, 8, 3});
+  CHECK(placed_in_view(in(2), p, {7, 8}) == std::array<double, 3>{7, 2, 8});
+  CHECK(placed_in_view(in(3), p, {7, 8}) == std::array<double, 3>{1, 7, 8});
+  CHECK(!placed_in_view(in(4), p, {7, 8}));
+  CHECK(!placed_in_view({0, Projection::conic, {100, 0, 0}}, p, {7, 8}));
 }
 
 TEST_CASE("a zoomed picture: the window scaled to the square, the rest cut away") {

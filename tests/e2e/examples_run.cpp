@@ -146,7 +146,7 @@ TEST_CASE("the eight examples are there, each with a picture page in its header"
   for (const auto& e : list) names.push_back(e.name);
   CHECK(names == std::vector<std::string>{"abbreviations", "fig3-tangents", "fig6-multipatch",
                                           "fig7-9-projections", "hidden-lines", "hull",
-                                          "marks-sphere", "quasi-sphere"});
+                                          "marks-sphere", "quasi-sphere", "wave-combs"});
   for (const auto& e : list) {
     CAPTURE(e.name);
     CHECK(e.picture_page >= 0);
@@ -327,6 +327,41 @@ TEST_CASE("hidden-lines: DISPLAY HIDDEN draws a part of what DISPLAY SURFACE dra
     }
   }
   CHECK(looked > 100);
+}
+
+TEST_CASE("wave-combs: the combs drawn in SVG and HP-GL, the same after a restart, UNDO and REDO") {
+  TempDir disk;
+  auto ran =
+      run_example(example_named("wave-combs"), disk,
+                  "EXPORT SVG AGAIN\nPLOT SELECTRIC\nUNDO\nREDO\nEXPORT SVG REDONE\n"
+                  "DISPLAY SURFACE ORTHOGONAL XZ\nEXPORT SVG LINES\nPLOT SELECTRIC\nEND CMS\n");
+  REQUIRE(ran.result.status == 0);
+  REQUIRE(ran.after.status == 0);
+  CHECK(ran.result.out.find("CURRENT IMAGE  COMBS, ORTHOGONAL XZ") != std::string::npos);
+  // The session kept the image by its recipe: made again after the restart, and after UNDO and
+  // REDO, it is the same picture, its scale said.
+  const std::string wave = read_file(disk.path() / "WAVE.SVG");
+  CHECK(read_file(disk.path() / "AGAIN.SVG") == wave);
+  CHECK(read_file(disk.path() / "REDONE.SVG") == wave);
+  CHECK(wave.find(">SCALE 100<") != std::string::npos);
+  // The combs are drawn: far more points than the surface's lines alone (13 x 17 points, twice).
+  auto points = [](const std::string& text) { return std::count(text.begin(), text.end(), ','); };
+  const std::string lines = read_file(disk.path() / "LINES.SVG");
+  CHECK(points(lines) >= 13 * 17);
+  CHECK(points(wave) > points(lines) + 3 * 13 * 17);
+  // PLOT draws them too: the first plot (the combs) has more pen-down strokes than the second.
+  std::vector<std::filesystem::path> plots;
+  for (const auto& entry : std::filesystem::directory_iterator(disk.path()))
+    if (std::regex_match(entry.path().filename().string(), std::regex(R"(PLOT\d{4}\.HPGL)")))
+      plots.push_back(entry.path());
+  std::sort(plots.begin(), plots.end());
+  REQUIRE(plots.size() == 2);
+  auto strokes = [](const std::string& hpgl) {
+    std::size_t n = 0;
+    for (std::size_t at = 0; (at = hpgl.find("PD", at)) != std::string::npos; ++at) ++n;
+    return n;
+  };
+  CHECK(strokes(read_file(plots[0])) > strokes(read_file(plots[1])));
 }
 
 TEST_CASE("quasi-sphere: every interpolated point lies near the sphere of radius 100") {

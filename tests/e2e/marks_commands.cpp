@@ -61,7 +61,7 @@ TEST_CASE("AUTO, CHANGE TWISTS, FIT and PUNCH: the transcript and the files") {
         "NOCUR 3 NOSTR 3 INTCU 1 INTST 1\nDOME.CADALIST: 9 POINTS, 4 PATCHES, 0 GIVEN VECTORS\n"
         "READY\nHELP SHORT\n"
         "Type a command: BUILD CHANGE RESTORE DISPLAY PLOT STORE SAVE WRITE END HELP\n"
-        "ERASE EXPORT FIT PUNCH LIST UNDO REDO ZOOM IMPORT.\n"
+        "ERASE EXPORT FIT PUNCH LIST UNDO REDO ZOOM IMPORT PICK.\n"
         "A first letter is enough (S is STORE); HELP LONG explains them all.\n"
         "THE CURRENT SURFACE HAS TANGENTS AUTO (MARKS'S RULE) AND TWISTS MARKS.\nREADY\n");
   // The tape decodes to 4 patches, 162 frames each and the end mark.

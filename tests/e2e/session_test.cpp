@@ -229,9 +229,8 @@ CMS
   CHECK(r.out.find("TANGENTS? H S\nA border point k") != std::string::npos);
   CHECK(r.out.find("INTERPOLATED CURVES AND STRINGERS? H S\nTwo whole numbers >= 0") !=
         std::string::npos);
-  CHECK(
-      r.out.find("FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE OR HIDDEN? H S\nINPUT or SURFACE") !=
-      std::string::npos);
+  CHECK(r.out.find("FIRST, SECOND, FILE, INPUT, SURFACE, PICTURE, HIDDEN OR COMBS? H S\nINPUT, "
+                   "SURFACE, HIDDEN") != std::string::npos);
   CHECK(r.out.find("PROJECTION? H S\nCONIC, ISOMETRIC") != std::string::npos);
   CHECK(r.out.find("AXIS AND ANGLE? H S\nThe axis to drop") != std::string::npos);
   CHECK(r.out.find("FILE NAME? H S\nA name for the image file") != std::string::npos);

@@ -12,6 +12,7 @@
 #include "tests/e2e/e2e_support.h"
 #include "tests/support/process.h"
 #include "tests/support/tek_decoder.h"
+#include "tests/support/tek_terminal.h"
 
 namespace igds::test {
 
@@ -302,6 +303,134 @@ TEST_CASE("ZOOM PICK on the Tek screen: two cross-hair picks, from a command fil
   CHECK(std::abs(y0) <= 1 / unit);
   CHECK(std::abs(x1 - 10) <= 1 / unit);
   CHECK(std::abs(y1 - 10) <= 1 / unit);
+}
+
+namespace {
+
+// Where tek mode draws the saddle seen from above (in the square above the dialogue): the border
+// starts at point 1 (0 0) and goes to point 2 (0 10), point 3 (0 20), point 6 (10 20).
+struct SaddleOnScreen {
+  TekPoint origin;
+  double unit = 0;  // screen points per image unit
+  std::string at(double x, double y) const {
+    return fmt::format("{} {}", std::lround(origin.x + unit * x), std::lround(origin.y + unit * y));
+  }
+  std::array<int, 2> address(double x, double y) const {
+    return {int(std::lround(origin.x + unit * x)), int(std::lround(origin.y + unit * y))};
+  }
+};
+
+SaddleOnScreen saddle_on_screen(const TempDir& disk) {
+  const RunResult shown = run_in(disk, "tek", seen_from_above);
+  REQUIRE(shown.status == 0);
+  const TekDrawing before = decode_tek(shown.out);
+  REQUIRE(!before.pages.empty());
+  const auto& border = before.pages.back().segments;
+  REQUIRE(border.size() > 3);
+  SaddleOnScreen s{border[0].a, (border[0].b.y - border[0].a.y) / 10};
+  REQUIRE(s.unit > 20);
+  return s;
+}
+
+// The x y z of the first line `POINT k AT x y z` after `from` in `out`.
+std::array<double, 3> point_at(const std::string& out, int k, std::size_t from = 0) {
+  const std::string start = fmt::format("POINT {} AT ", k);
+  const auto at = out.find(start, from);
+  REQUIRE(at != std::string::npos);
+  std::array<double, 3> p{};
+  REQUIRE(std::sscanf(out.c_str() + at + start.size(), "%lf %lf %lf", &p[0], &p[1], &p[2]) == 3);
+  return p;
+}
+
+}  // namespace
+
+TEST_CASE("PICK and CHANGE POINTS by pointing, from a command file as X Y") {
+  TempDir disk;
+  const SaddleOnScreen screen = saddle_on_screen(disk);
+  // A pick a little off point 5 (10 10) names it; at CHANGE POINTS, point 9 (20 20) is picked
+  // and put at 15 5 (z kept, the view is XY); point 4 is typed a new place.
+  const RunResult r =
+      run_in(disk, "tek",
+             "PICK\n" + screen.at(10.2, 9.7) + "\nCHANGE POINTS\nPICK\nNOT A PICK\n" +
+                 screen.at(19.8, 20) + "\nPICK\n" + screen.at(15, 5) + "\nPICK\n" +
+                 screen.at(10, 0) + "\n10 ¯1 2.5\n\nN\nN\nLIST POINTS\n");
+  REQUIRE(r.status == 0);
+  const TekDrawing d = decode_tek(r.out);
+  CHECK(d.errors.empty());
+  for (const auto& page : d.pages)
+    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
+  std::string said;
+  for (const auto& page : d.pages)
+    for (const auto& t : page.texts) said += t.text + "\n";
+  CHECK(has(said, "POINT 5 AT 10 10 0\n"));
+  CHECK(has(said, "INCORRECT ENTRY: A CROSS-HAIR PICK OR X Y (0..1023 0..779)"));
+  CHECK(has(said, "POINT 9 AT 20 20 0\n"));
+  // The new place within a screen point, rounded to what a pick can tell; z kept.
+  const auto moved = point_at(said, 9, said.find("NEW PLACE?"));
+  CHECK(std::abs(moved[0] - 15) <= 1 / screen.unit + 0.01);
+  CHECK(std::abs(moved[1] - 5) <= 1 / screen.unit + 0.01);
+  CHECK(moved[2] == 0);
+  CHECK(std::abs(moved[0] * 100 - std::round(moved[0] * 100)) < 1e-6);
+  CHECK(has(said, "POINT 4 AT 10 0 2\n"));
+  CHECK(has(said, "POINT 4 AT 10 -1 2.5\n"));
+  // LIST POINTS shows the surface changed.
+  CHECK(
+      has(said, fmt::format("    9     3     3 {:>13} {:>13}             0", moved[0], moved[1])));
+}
+
+TEST_CASE("PICK and CHANGE POINTS by pointing through the pty: the cross-hair clicked") {
+  TempDir disk;
+  const SaddleOnScreen screen = saddle_on_screen(disk);
+  TempDir home;
+  XtermPty term({igds_binary().string(), "--term", "tek", "--disk", disk.path().string()},
+                {{"TERM", "tek4014"},
+                 {"INPUTRC", "/dev/null"},
+                 {"HOME", home.path().string()},
+                 {"XTERM_VERSION", ""},
+                 {"IGDS_DISK", ""}});
+  PtySession& igds = term.pty();
+  REQUIRE(term.expect("READY", 60));
+  // The session's image is the saddle seen from above, drawn again at start.
+  igds.send("ERASE\r");
+  REQUIRE(term.expect("READY"));
+  igds.send("DISPLAY INPUT ORTHOGONAL XY\r");
+  REQUIRE(term.expect("READY"));
+  igds.send("PICK\r");
+  REQUIRE(term.expect("POINT?"));
+  REQUIRE(term.expect_gin());
+  auto [x5, y5] = screen.address(9.8, 10.1);
+  term.click('l', x5, y5);
+  if (!term.expect("POINT 5 AT 10 10 0")) FAIL(term.transcript());
+  REQUIRE(term.expect("READY"));
+
+  igds.send("CHANGE POINTS\r");
+  REQUIRE(term.expect("POINTS?"));
+  igds.send("PICK\r");
+  REQUIRE(term.expect_gin());
+  auto [x1, y1] = screen.address(0.2, 0.3);
+  term.click('l', x1, y1);
+  REQUIRE(term.expect("POINT 1 AT 0 0 0"));
+  REQUIRE(term.expect("NEW X Y Z?"));
+  igds.send("PICK\r");
+  REQUIRE(term.expect("NEW PLACE?"));
+  REQUIRE(term.expect_gin());
+  auto [xn, yn] = screen.address(3, 4);
+  term.click('l', xn, yn);
+  REQUIRE(term.expect("POINT 1 AT "));
+  REQUIRE(term.expect("POINTS?"));
+  igds.send("\r");
+  REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
+  igds.send("N\r");
+  REQUIRE(term.expect("CHANGE GRID TOO?"));
+  igds.send("N\r");
+  REQUIRE(term.expect("READY"));
+  // The last NEW PLACE? (the screen may start a new page and write the dialogue's end again).
+  const auto moved = point_at(igds.output(), 1, igds.output().rfind("NEW PLACE?"));
+  CHECK(std::abs(moved[0] - 3) <= 1 / screen.unit + 0.01);
+  CHECK(std::abs(moved[1] - 4) <= 1 / screen.unit + 0.01);
+  CHECK(moved[2] == 0);
+  igds.send("END CMS\r");
+  CHECK(igds.wait(60) == 0);
 }
 
 }  // namespace igds::test

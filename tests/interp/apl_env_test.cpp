@@ -274,6 +274,22 @@ TEST_CASE("an image assigned is checked at START") {
   CHECK(apl("IMAGE←1 2 3⍴0").at(0) == "LENGTH ERROR");
 }
 
+TEST_CASE("a combs image in END APL: DESIM[1] is 3; IMAGE or DESIM assigned drop the combs") {
+  Workspace ws = make_interpolated(3, 3, 1, 1);
+  ws.image = std::make_shared<const Image>(image_of(ws, {3, Projection::orthogonal, {1, 0, 0}}));
+  REQUIRE(!ws.image->combs.empty());
+  Apl apl(std::move(ws));
+  CHECK(apl("DESIM") == Lines{"3 4 1 0 0"});
+  CHECK(apl("⍴IMAGE") == Lines{"5 5 2"});
+  CHECK(apl("DESIM←3 4 2 0 0").empty());
+  CHECK(!apl.env.start());
+  CHECK(apl.ws.image->desim.what == 3);
+  CHECK(apl.ws.image->combs.empty());
+  CHECK(apl.ws.image->drawn_from == 0);
+  CHECK(apl("DESIM←4 4 2 0 0").empty());
+  CHECK(apl.env.start().has_value());  // refused: DESIM[1] IS NOT 0, 1, 2 OR 3
+}
+
 TEST_CASE("workspace_variable and defined_variables") {
   Workspace ws = surface(2, 2, 0, 0);
   CHECK(workspace_variable(ws, "nocur")->ravel == std::vector<double>{2});

@@ -33,7 +33,7 @@ TEST_CASE("completion: commands, then their options, then projections") {
 
   CHECK(interpreter.completions({"d"}) == std::vector<std::string>{"FIRST", "SECOND", "FILE",
                                                                    "INPUT", "SURFACE", "PICTURE",
-                                                                   "HIDDEN"});
+                                                                   "HIDDEN", "COMBS"});
   CHECK(interpreter.completions({"E"}) == std::vector<std::string>{"APL", "CMS"});
   CHECK(interpreter.completions({"BUILD"}).empty());
   CHECK(interpreter.completions({"NOSUCH"}).empty());

@@ -262,6 +262,39 @@ TEST_CASE("a damaged IGDSIMAG is refused with the current image kept") {
         "IMAGE KEPT");
 }
 
+TEST_CASE("DISPLAY COMBS in an IGDSIMAG: kept exactly; forged combs refused") {
+  Scratch s;
+  Image combs = test::make_image(3, Projection::orthogonal, 2, 3, 5);
+  combs.combs = Array({2, 3, 4});
+  for (std::size_t k = 0; k < combs.combs.size(); ++k) combs.combs.ravel[k] = 0.25 * double(k);
+  combs.comb_scale = 20;
+  store_image(s.disk, "PIC", combs);
+  const Image back = load_image(s.disk, "PIC");
+  CHECK(back == combs);
+  CHECK(back.combs == combs.combs);
+  CHECK(back.comb_scale == 20);
+  auto forged = [&](auto&& change, const std::string& reason) {
+    CAPTURE(reason);
+    Image bad = combs;
+    change(bad);
+    disk::Writer w;
+    w.image(bad);
+    test::rewrite_file(s.disk.path("PIC", "IGDSIMAG"), disk::frame("IGDSIMAG", w.str()));
+    CHECK(report_of([&] { load_image(s.disk, "PIC"); }) ==
+          "FILE DAMAGED: PIC.IGDSIMAG (FORMAT: " + reason + "); CURRENT IMAGE KEPT");
+  };
+  forged(
+      [](Image& i) {
+        i.combs = Array({3, 2, 4});
+      },
+      "THE COMBS OF IMAGE ARE 3 BY 2 BY 4, NOT 2 BY 3 BY 4");
+  forged([](Image& i) { i.combs.ravel[5] = std::nan(""); },
+         "COMB 3 OF IMAGE IS NOT A FINITE NUMBER");
+  forged([](Image& i) { i.comb_scale = -1; },
+         "THE COMB SCALE OF IMAGE IS NOT A FINITE NUMBER, 0 OR MORE");
+  forged([](Image& i) { i.desim.what = 7; }, "DESIM[1] IS NOT 0, 1, 2 OR 3");
+}
+
 TEST_CASE("a disk that refuses a write: clear report, old file kept, no temporary left") {
   Scratch s;
   Workspace first = test::make_workspace(2, 2, 1, 1);

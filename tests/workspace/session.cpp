@@ -681,6 +681,14 @@ TEST_CASE("a session whose checksum holds but whose variables disagree is refuse
       "STARTS EMPTY");
   image_crafted(
       [](disk::SessionTable& t) {
+        t.images[0].kind = disk::ImageEntry::recipe;
+        t.images[0].record = t.current;
+        t.images[0].desim.what = 4;
+      },
+      "IMAGE IN BINSAVE.IGDSCONT DAMAGED (IMAGE: DESIM[1] IS NOT 0, 1, 2 OR 3): IMAGE STARTS "
+      "EMPTY");
+  image_crafted(
+      [](disk::SessionTable& t) {
         t.images[1].kind = disk::ImageEntry::stored;
         t.images[1].data.pieces = {
             disk::Piece{true, {}, {1, (std::uint64_t(1) << 40) + 32, 0}, std::uint64_t(1) << 40}};
@@ -742,6 +750,31 @@ TEST_CASE("a hidden-line image is kept by its recipe, and made again the same") 
   CHECK(notices == std::vector<std::string>{
                        "IMAGE IN BINSAVE.IGDSCONT DAMAGED (IMAGE: IMAGE IS NOT A SURFACE: ITS "
                        "HIDDEN LINES CANNOT BE REMOVED): IMAGE STARTS EMPTY"});
+}
+
+TEST_CASE("DISPLAY COMBS is kept by its recipe and made again the same, combs and scale") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(6, 6, 2, 2);
+  ws.image =
+      std::make_shared<const Image>(image_of(ws, {3, Projection::assonometric, {110, 130, 120}}));
+  REQUIRE(ws.image->combs.shape == std::vector<std::size_t>{16, 16, 4});
+  REQUIRE(ws.image->comb_scale > 0);
+  // A copy whose recipe is not the current surface's is kept by its points, combs included.
+  Image stored = *ws.image;
+  stored.drawn_from = 0;
+  ws.temp1 = std::make_shared<const Image>(stored);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  Session session(s.disk);
+  Workspace back = session.load();
+  CHECK(!back.image.made());
+  CHECK(*back.image == *ws.image);
+  CHECK(back.image->combs == ws.image->combs);
+  CHECK(back.image->comb_scale == ws.image->comb_scale);
+  CHECK(*back.temp1 == *ws.temp1);
 }
 
 TEST_CASE("an image kept by a recipe that cannot be made: nothing said at start, a look says why") {

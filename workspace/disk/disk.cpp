@@ -228,10 +228,11 @@ std::size_t max_surface_file_bytes() {
 
 std::size_t max_image_file_bytes() {
   // The points of max_grid_points, an arrow (6 numbers) for every border tangent of
-  // max_input_points in a line.
+  // max_input_points in a line, the ends of two combs for every point and their scale.
   const std::size_t grid = disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
                            array_bytes(3, 2 * double(max_grid_points)) +
-                           array_bytes(2, 6 * 2 * (double(max_input_points) + 1));
+                           array_bytes(2, 6 * 2 * (double(max_input_points) + 1)) +
+                           array_bytes(3, 4 * double(max_grid_points)) + 8;
   // Or a DUCT picture: empty points and arrows, a name of up to 8 characters, the text.
   const std::size_t picture = disk::frame_header_bytes + disk::frame_trailer_bytes + 8 + 24 +
                               2 * array_bytes(0, 0) + 8 + 8 + 8 + duct_max_file_bytes;

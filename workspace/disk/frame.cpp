@@ -187,6 +187,11 @@ void Writer::image(const Image& image) {
     u64(image.picture->text.size());
     borrow(image.picture->text);
   }
+  // Combs (DESIM[1] = 3, likewise new) add their ends and their scale.
+  if (image.desim.what == 3) {
+    array(image.combs);
+    f64(image.comb_scale);
+  }
 }
 
 void Writer::append(const Writer& other) {
@@ -290,6 +295,10 @@ Image Reader::image(std::size_t max_elements) {
     } catch (const DataError&) {
       throw Damage("PICTURE: ITS VIEW");
     }
+  }
+  if (image.desim.what == 3) {
+    image.combs = array(max_elements);
+    image.comb_scale = f64();
   }
   return image;
 }

@@ -46,6 +46,7 @@ enum class Role : std::uint8_t {
   label,     // a text written beside something (a point number: `index` is the point)
   menu,      // menu item `index` of the 2250 workspace
   line,      // any other line (a DUCT instruction: `index` is its number)
+  comb,      // the curvature comb of curve `index` (`detail` 1) or stringer `index` (`detail` 0)
 };
 struct Identity {
   Role role = Role::none;

@@ -1,0 +1,206 @@
+// The curvature of the interpolated lines (workspace/kernels/curvature.h): a circle, a sphere grid,
+// and the patches' own derivatives against differences of an independent evaluation.
+#include "workspace/kernels/curvature.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "tests/kernels/helpers.h"
+#include "workspace/kernels/data_error.h"
+#include "workspace/kernels/fit.h"
+#include "workspace/kernels/surface.h"
+
+using namespace igds;
+
+namespace {
+
+constexpr double degree = std::numbers::pi / 180;
+
+void set_row(Array& inptg, std::size_t row, Vec3 t, std::size_t point) {
+  double* r = inptg.data() + 4 * row;
+  t.store(r);
+  r[3] = double(point);
+}
+
+Vec3 bend(const Array& bends, std::size_t k, std::size_t direction) {
+  return Vec3::load(bends.data() + 6 * k + 3 * direction);
+}
+
+// Points of a sphere of radius R about `centre`: curve i is the parallel at latitude lat[i],
+// stringer j the meridian at longitude lon[j]; the border tangents are the lines' own.
+struct Sphere {
+  double r;
+  Vec3 centre;
+  std::vector<double> lat, lon;
+  Vec3 at(double phi, double theta) const {
+    return centre + r * Vec3{std::cos(phi) * std::cos(theta), std::cos(phi) * std::sin(theta),
+                             std::sin(phi)};
+  }
+  test::Grid grid() const {
+    const std::size_t nc = lat.size(), ns = lon.size();
+    test::Grid g{int(nc), int(ns), Array({nc * ns, 3}), Array({2 * (nc + ns), 4})};
+    auto pts = as_vec3(g.inppn);
+    for (std::size_t i = 0; i < nc; ++i)
+      for (std::size_t j = 0; j < ns; ++j) pts[i * ns + j] = at(lat[i], lon[j]);
+    auto along_curve = [](double theta) { return Vec3{-std::sin(theta), std::cos(theta), 0}; };
+    auto along_stringer = [](double phi, double theta) {
+      return Vec3{-std::sin(phi) * std::cos(theta), -std::sin(phi) * std::sin(theta),
+                  std::cos(phi)};
+    };
+    for (std::size_t i = 0; i < nc; ++i) {
+      set_row(g.inptg, 2 * i, along_curve(lon.front()), i * ns + 1);
+      set_row(g.inptg, 2 * i + 1, along_curve(lon.back()), i * ns + ns);
+    }
+    for (std::size_t j = 0; j < ns; ++j) {
+      set_row(g.inptg, 2 * nc + 2 * j, along_stringer(lat.front(), lon[j]), j + 1);
+      set_row(g.inptg, 2 * nc + 2 * j + 1, along_stringer(lat.back(), lon[j]),
+              (nc - 1) * ns + j + 1);
+    }
+    return g;
+  }
+};
+
+std::vector<double> steps(double from, double to, int n) {
+  std::vector<double> out;
+  for (int k = 0; k <= n; ++k) out.push_back((from + (to - from) * k / n) * degree);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("the curvature vector: its length is the curvature, towards the centre") {
+  // A circle of radius 4 at the angle 0, with the speed 3: derivatives (0, 3, 0), (-9/4, 0, 0).
+  const Vec3 k = curvature_vector({0, 3, 0}, {-9.0 / 4, 0, 0});
+  CHECK(k.x == doctest::Approx(-0.25));
+  CHECK(k.y == doctest::Approx(0));
+  // A tangential acceleration changes the speed, not the bend.
+  const Vec3 same = curvature_vector({0, 3, 0}, {-9.0 / 4, 5, 0});
+  CHECK(norm(same - k) < 1e-15);
+  CHECK(norm(curvature_vector({0, 0, 0}, {1, 2, 3})) == 0);
+}
+
+TEST_CASE("a circle's comb is constant: 1/R everywhere, towards the centre") {
+  // One curve (no patches: the spline of its points) once around a circle of radius 50, and two
+  // curves (a cylinder, patches) whose stringers are straight.
+  const double r = 50;
+  const Vec3 centre{10, -20, 5};
+  for (int nocur : {1, 2}) {
+    CAPTURE(nocur);
+    const int n = 49;  // 48 arcs of 7.5 degrees
+    test::Grid g{nocur, n, Array({std::size_t(nocur * n), 3}),
+                 Array({std::size_t(2 * (nocur + n)), 4})};
+    auto pts = as_vec3(g.inppn);
+    for (int i = 0; i < nocur; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double a = 2 * std::numbers::pi * j / (n - 1);
+        pts[i * n + j] = centre + Vec3{r * std::cos(a), r * std::sin(a), 7.0 * i};
+      }
+    for (int i = 0; i < nocur; ++i) {
+      set_row(g.inptg, 2 * i, {0, 1, 0}, i * n + 1);
+      set_row(g.inptg, 2 * i + 1, {0, 1, 0}, i * n + n);
+    }
+    for (int j = 0; j < n; ++j) {
+      set_row(g.inptg, 2 * nocur + 2 * j, {0, 0, 1}, j + 1);
+      set_row(g.inptg, 2 * nocur + 2 * j + 1, {0, 0, 1}, (nocur - 1) * n + j + 1);
+    }
+    const SurfaceInput in{nocur, n, 2, 5, &g.inppn, &g.inptg};
+    const Surface s = interpolate(in);
+    const Array bends = grid_curvature(in, s.patches);
+    REQUIRE(bends.shape == std::vector<std::size_t>{s.intpn.shape[0], s.intpn.shape[1], 6});
+    const auto grid = as_vec3(s.intpn);
+    double least = 1e300, most = 0;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+      const Vec3 along = bend(bends, k, 0);
+      least = std::min(least, norm(along));
+      most = std::max(most, norm(along));
+      Vec3 inward = centre - grid[k];
+      inward.z = 0;
+      CHECK(dot(along, inward) / (norm(along) * norm(inward)) > 0.9999);
+      CHECK(norm(bend(bends, k, 1)) < 1e-12);  // straight stringers, or none
+    }
+    CHECK(least > 0.99 / r);
+    CHECK(most < 1.01 / r);
+    CHECK((most - least) / most < 0.01);
+  }
+}
+
+TEST_CASE("a sphere grid: its meridians bend by 1/R, its parallels by 1/(R cos latitude)") {
+  // Curves along parallels 10 degrees apart, stringers along meridians. On the input lines the
+  // surface is their spline: there the curvature is the sphere's within 1 %. Between them the
+  // patches are not a sphere (the twists are zero or Marks's estimate): the combs show that.
+  const Sphere sphere{100, {3, 4, -5}, steps(-40, 40, 8), steps(0, 90, 9)};
+  const test::Grid g = sphere.grid();
+  for (bool marks : {false, true}) {
+    CAPTURE(marks);
+    const SurfaceInput in{g.nocur, g.nostr, 3, 3, &g.inppn, &g.inptg, marks};
+    const Surface s = interpolate(in);
+    const Array bends = grid_curvature(in, s.patches);
+    const auto grid = as_vec3(s.intpn);
+    const std::size_t cols = s.intpn.shape[1];
+    double worst_meridian = 0, worst_parallel = 0, worst_inside = 0;
+    std::size_t meridian_points = 0, parallel_points = 0;
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+      const Vec3 p = grid[k] - sphere.centre;
+      const double latitude = std::asin(std::clamp(p.z / norm(p), -1.0, 1.0));
+      const double parallel = norm(bend(bends, k, 0)) * sphere.r * std::cos(latitude) - 1;
+      const double meridian = norm(bend(bends, k, 1)) * sphere.r - 1;
+      const bool input_curve = k / cols % 4 == 0, input_stringer = k % cols % 4 == 0;
+      if (input_curve) {
+        worst_parallel = std::max(worst_parallel, std::abs(parallel));
+        ++parallel_points;
+      }
+      if (input_stringer) {
+        worst_meridian = std::max(worst_meridian, std::abs(meridian));
+        ++meridian_points;
+      }
+      if (!input_curve && !input_stringer)
+        worst_inside = std::max({worst_inside, std::abs(parallel), std::abs(meridian)});
+      // Every comb stands outside: the normal points into the sphere.
+      CHECK(dot(bend(bends, k, 1), p) < 0);
+    }
+    MESSAGE("sphere grid: meridians within " << 100 * worst_meridian << " %, parallels within "
+                                             << 100 * worst_parallel << " %, between the input "
+                                             << "lines " << 100 * worst_inside << " %");
+    CHECK(meridian_points == 10 * 33);
+    CHECK(parallel_points == 9 * 37);
+    CHECK(worst_meridian < 0.01);
+    CHECK(worst_parallel < 0.01);
+  }
+}
+
+TEST_CASE("the curvature is the patches' own: against differences of an independent evaluation") {
+  const test::Grid g = test::wavy_grid(4, 5, 7);
+  const SurfaceInput in{g.nocur, g.nostr, 2, 3, &g.inppn, &g.inptg};
+  const Surface s = interpolate(in);
+  const Array bends = grid_curvature(in, s.patches);
+  const GridShape shape = intpn_shape(g.nocur, g.nostr, 2, 3);
+  const std::size_t pc = std::size_t(g.nostr) - 1;
+  const double h = 1e-4;
+  for (std::size_t i = 0; i < shape.rows; ++i)
+    for (std::size_t j = 0; j < shape.cols; ++j) {
+      // FIT's patch and parameters (docs/kernels.md, "The grid INTPN").
+      const std::size_t pi = std::min<std::size_t>(i / 3, g.nocur - 2);
+      const std::size_t pj = std::min<std::size_t>(j / 4, g.nostr - 2);
+      const double v = double(i - 3 * pi) / 3, u = double(j - 4 * pj) / 4;
+      const double* m = s.patches.data() + 48 * (pi * pc + pj);
+      auto along = [&](double du, double dv) {
+        const Vec3 a = test::eval_patch(m, u - du, v - dv), b = test::eval_patch(m, u, v),
+                   c = test::eval_patch(m, u + du, v + dv);
+        return curvature_vector((1 / (2 * h)) * (c - a), (1 / (h * h)) * (c - 2.0 * b + a));
+      };
+      const std::size_t k = i * shape.cols + j;
+      const Vec3 curve = along(h, 0), stringer = along(0, h);
+      CHECK(norm(bend(bends, k, 0) - curve) < 1e-4 * (1 + norm(curve)));
+      CHECK(norm(bend(bends, k, 1) - stringer) < 1e-4 * (1 + norm(stringer)));
+    }
+}
+
+TEST_CASE("patches of another shape are refused, not read") {
+  const test::Grid g = test::wavy_grid(3, 3, 1);
+  const SurfaceInput in{g.nocur, g.nostr, 1, 1, &g.inppn, &g.inptg};
+  const Array wrong({2, 1, 3, 4, 4});
+  CHECK_THROWS_AS(grid_curvature(in, wrong), DataError);
+}

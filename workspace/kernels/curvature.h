@@ -1,0 +1,24 @@
+// The curvature of the interpolated curves and stringers, for DISPLAY COMBS (docs/kernels.md,
+// "Curvature"): from the exact derivatives of the bicubic patches, not from differences of INTPN.
+#pragma once
+
+#include "workspace/kernels/array.h"
+#include "workspace/kernels/surface.h"
+#include "workspace/kernels/vec3.h"
+
+namespace igds {
+
+// The curvature vector of a curve with first and second derivatives d1, d2 at a point: the
+// curvature times the unit normal towards the centre of curvature, (d2 - (d2.T)T) / |d1|^2 with
+// T = d1/|d1|; zero where the curve has no direction (d1 = 0).
+Vec3 curvature_vector(Vec3 d1, Vec3 d2);
+
+// At every point of INTPN (rows x cols of intpn_shape), the curvature vector of the curve through
+// it, then of the stringer through it: rows x cols x 6. Each point is evaluated in the patch FIT
+// takes it from (a point on a patch border: the patch after it, the last patch for the last
+// line). A single curve or stringer (no patches) is the spline of its points, and the other
+// direction has no curvature. `patches` is PATCHES of `input` (not read for a single line). Throws
+// DataError for arrays of another shape.
+Array grid_curvature(const SurfaceInput& input, const Array& patches);
+
+}  // namespace igds
