@@ -87,7 +87,7 @@ TEST_CASE("the command table is the manual's, then the project's additions") {
   std::vector<std::string_view> got;
   for (const Command* c : command_table()) got.push_back(c->name);
   const std::vector<std::string_view> expected{
-      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE", "END",   "HELP",
+      "BUILD", "CHANGE", "RESTORE", "DISPLAY", "PLOT", "STORE", "SAVE", "WRITE", "END",    "HELP",
       "ERASE", "EXPORT", "FIT",     "PUNCH",   "LIST", "UNDO",  "REDO", "ZOOM",  "IMPORT", "PICK"};
   CHECK(got == expected);
 }
@@ -118,7 +118,8 @@ TEST_CASE("every one- and two-letter abbreviation of an option, and of the words
   CHECK(resolved(command("CHANGE").options) ==
         table("G=GRID P=POINTS T=TANGENTS GR=GRID PO=POINTS TA=TANGENTS TW=TWISTS"));
   CHECK(resolved(command("DISPLAY").options) ==
-        table("C=COMBS F=FIRST H=HIDDEN I=INPUT P=PICTURE S=SECOND CO=COMBS FI=FIRST HI=HIDDEN IN=INPUT "
+        table("C=COMBS F=FIRST H=HIDDEN I=INPUT P=PICTURE S=SECOND CO=COMBS FI=FIRST HI=HIDDEN "
+              "IN=INPUT "
               "PI=PICTURE SE=SECOND SU=SURFACE"));
   CHECK(resolved(command("PLOT").options) == table("E=EBCDIC S=SELECTRIC EB=EBCDIC SE=SELECTRIC"));
   CHECK(resolved(command("STORE").options) == table("F=FIRST S=SECOND FI=FIRST SE=SECOND"));
