@@ -169,25 +169,24 @@ Report not_finite_in_picture(const Drawing& drawing, const DataError& e) {
 
 // EXPORT DUCT into `out`, written straight from the surface's curves or, with IMAGE, the image's
 // drawing.
-void duct_file(const Workspace& ws, const std::string& name, bool image, TextOut& out) {
+bool duct_file(const Workspace& ws, const std::string& name, bool image, TextOut& out) {
   const std::string date = duct_date(export_date());
   if (!image) {
     const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
     try {
-      write_duct(drawing, {name, date, title}, {}, out);
+      return write_duct(drawing, {name, date, title}, {}, out);
     } catch (const DataError& e) {
       throw not_finite_in_picture(drawing, e);
     }
-    return;
   }
   std::string title;
   for (const std::string& line : describe(ws.image->desim, 72))
     title += (title.empty() ? "" : " ") + line;
   const Picture picture = picture_of(ws.image);
   try {
-    write_duct(picture.drawing, {name, date, title}, ws.image->desim.projection, out);
+    return write_duct(picture.drawing, {name, date, title}, ws.image->desim.projection, out);
   } catch (const DataError& e) {
     throw not_finite_in_picture(picture.drawing, e);
   }
@@ -265,6 +264,7 @@ void run_export(Context& ctx, const Choice* option) {
   const bool existed = ctx.disk().exists(name, type);
   std::uint64_t size = 0;
   std::string_view holds;
+  bool counts_fit = true;  // EXPORT DUCT: every count in its I6 field
   try {
     switch (code) {
       case svg: {
@@ -291,7 +291,7 @@ void run_export(Context& ctx, const Choice* option) {
         // Made while it is written: a picture may be hundreds of megabytes.
         holds = image ? "THE IMAGE AS PROJECTED" : "THE SURFACE IN SPACE";
         size = write_user_file(ctx.disk(), name, type,
-                               [&](TextOut& out) { duct_file(ws, name, image, out); });
+                               [&](TextOut& out) { counts_fit = duct_file(ws, name, image, out); });
         break;
       case iges:
       case step:
@@ -306,6 +306,11 @@ void run_export(Context& ctx, const Choice* option) {
     ctx.say(fmt::format("{}.{}: {} BYTES", name, type, size));
   else
     ctx.say(fmt::format("{}.{}: {}, {} BYTES", name, type, holds, size));
+  if (!counts_fit)
+    ctx.say(
+        fmt::format("{}.{}: A MILLION PIXELS OR MORE: ITS COUNTS DO NOT FIT DUCT'S I6 "
+                    "FIELDS AND ARE WRITTEN FREE-FORM",
+                    name, type));
   if (existed) ctx.say(fmt::format("{}.{} REPLACED", name, type));
 }
 

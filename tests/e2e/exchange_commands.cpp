@@ -22,6 +22,7 @@
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
 #include "tests/support/tek_decoder.h"
+#include "tests/workspace/disk_fixtures.h"
 #include "tests/workspace/exchange_support.h"
 #include "tests/workspace/occt_support.h"
 #include "workspace/disk/session.h"
@@ -203,6 +204,31 @@ TEST_CASE("EXPORT DUCT writes the surface whatever the image, with IMAGE the ima
           bare.run(export_command, "DUCT", {"NONE", "IMAGE"});
         }) == reports::image_not_found);
   CHECK(!fs::exists(dir.path() / "NONE.DUCTPIC"));
+}
+
+TEST_CASE("EXPORT DUCT of a million pixels or more says its counts do not fit DUCT's fields" *
+          doctest::test_suite("slow")) {
+  const FixedDate date;
+  TempDir dir;
+  // 711 x 711 interpolated points: an image of as many vertices on its curves and on its
+  // stringers, 1,011,042 pixels, more than I5's six columns hold.
+  FakeContext ctx(dir.path(), test::make_interpolated(143, 143, 4, 4));
+  ctx.ws.image =
+      std::make_shared<const Image>(surface_image(ctx.ws, {Projection::orthogonal, {1, 0, 0}}));
+  ctx.run(export_command, "DUCT", {"LARGE", "IMAGE"});
+  const DuctPicture p = read_duct(read_file(dir.path() / "LARGE.DUCTPIC"));
+  CHECK(p.pixel_count() >= 1000000);
+  CHECK(!duct_counts_fit(p));
+  REQUIRE(ctx.said.size() == 2);
+  CHECK(ctx.said[1] ==
+        "LARGE.DUCTPIC: A MILLION PIXELS OR MORE: ITS COUNTS DO NOT FIT DUCT'S I6 FIELDS AND ARE "
+        "WRITTEN FREE-FORM");
+  // A smaller picture: nothing more said.
+  ctx.said.clear();
+  ctx.ws = test::make_interpolated(6, 6, 2, 2);
+  ctx.run(export_command, "DUCT", {"SMALL"});
+  CHECK(ctx.said.size() == 1);
+  CHECK(duct_counts_fit(read_duct(read_file(dir.path() / "SMALL.DUCTPIC"))));
 }
 
 TEST_CASE("igds: EXPORT DUCT after RESTORE, CHANGE GRID and ERASE writes the surface in space") {

@@ -228,10 +228,14 @@ void write_duct(const DuctPicture& picture, TextOut& out);
 // write_duct(duct_picture(drawing, header, ...)) into `out`, byte for byte, without the picture
 // being kept: its pixels are written straight from the drawing (a second walk over it, after the
 // first has laid out the counts, limits and instructions written before them). Throws DataError
-// as duct_picture does, before writing anything.
-void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
+// as duct_picture does, before writing anything. Returns duct_counts_fit of what it wrote.
+bool write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
                 TextOut& out);
-void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
+bool write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
                 TextOut& out);
+// Whether every count of `p` fits its I6 field (the counters I1..I10, each instruction's NPIX,
+// the numbers of texts and dimensions), so that DUCT's own fixed formats read the file: a picture
+// of a million pixels or more does not (I5), and its counters record is written free-form.
+bool duct_counts_fit(const DuctPicture& p);
 
 }  // namespace igds

@@ -176,7 +176,7 @@ class WrittenPixels final : public duct::PixelSink {
 // A drawing's picture written without being kept: laid out once for the counts, limits and
 // instructions that come first, then walked again for its pixels.
 template <class P>
-void write_picture(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
+bool write_picture(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
                    TextOut& out) {
   const DuctPicture p = duct::lay_out(drawing, header, view, nullptr, true);
   write_head(p, out);
@@ -184,9 +184,19 @@ void write_picture(const Drawing<P>& drawing, const DuctHeader& header, const Du
   duct::lay_out(drawing, header, view, &pixels, false);
   pixels.flush();
   write_tail(p, out);
+  return duct_counts_fit(p);
 }
 
 }  // namespace
+
+bool duct_counts_fit(const DuctPicture& p) {
+  auto fits = [](std::int64_t v) { return v >= -99999 && v <= 999999; };
+  for (std::int64_t v : p.counters)
+    if (!fits(v)) return false;
+  for (const DuctInstruction& in : p.instructions)
+    if (!fits(std::int64_t(in.pixels))) return false;
+  return fits(std::int64_t(p.texts.size())) && fits(std::int64_t(p.dimensions.size()));
+}
 
 void write_duct(const DuctPicture& p, TextOut& out) {
   write_head(p, out);
@@ -197,14 +207,14 @@ void write_duct(const DuctPicture& p, TextOut& out) {
   write_tail(p, out);
 }
 
-void write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
+bool write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
                 TextOut& out) {
-  write_picture(drawing, header, view, out);
+  return write_picture(drawing, header, view, out);
 }
 
-void write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
+bool write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,
                 TextOut& out) {
-  write_picture(drawing, header, duct::image_view(projection), out);
+  return write_picture(drawing, header, duct::image_view(projection), out);
 }
 
 std::string write_duct(const DuctPicture& picture) {
