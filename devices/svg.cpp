@@ -28,11 +28,12 @@ std::string background(std::string_view more = "") {
   return fmt::format("<rect width=\"{}\" height=\"{}\" fill=\"white\"{}/>\n", width, height, more);
 }
 
-// The colour of pen n (docs/devices.md, "Pens and dashes"), of lines and texts alike.
+// The colour of pen n (docs/devices.md, "Pens and dashes"), of lines and texts alike: the
+// plotter's six pens, a pen above 6 drawn with pen 6 as PLOT draws it.
 std::string_view colour_of(int pen) {
-  static constexpr std::string_view colours[] = {"black",   "red",  "green",  "blue",
-                                                 "magenta", "cyan", "orange", "brown"};
-  return colours[static_cast<std::size_t>(std::max(pen, 1) - 1) % 8];
+  static constexpr std::string_view colours[] = {"black", "red",     "green",
+                                                 "blue",  "magenta", "cyan"};
+  return colours[static_cast<std::size_t>(std::clamp(pen, 1, 6) - 1)];
 }
 
 // The attributes of polylines in `style`: "" for pen 1, solid, weight 1.

@@ -300,3 +300,23 @@ TEST_CASE("a DUCT picture's dashes and colours: 4014 line styles, HP-GL pens and
 }
 
 }  // namespace igds::test::devices
+
+namespace igds::test::devices {
+
+TEST_CASE("pens above 6: SVG draws them in pen 6's colour, as the plotter plots them with pen 6") {
+  Picture pic;
+  const double line[] = {0, 0, 10, 10};
+  for (int pen : {2, 6, 7, 9}) pic.drawing.add_polyline(Point2View(line, 2), Style{.pen = pen});
+  const std::string svg = igds::svg_of(pic);
+  std::size_t cyan = 0;
+  for (std::size_t at = 0; (at = svg.find("stroke=\"cyan\"", at)) != std::string::npos; ++at)
+    ++cyan;
+  CHECK(cyan == 3);
+  CHECK(svg.find("stroke=\"red\"") != std::string::npos);
+  const Plot plot = igds::plot_hpgl(pic, {});
+  CHECK(plot.hpgl.find("SP6;") != std::string::npos);
+  CHECK(plot.hpgl.find("SP7;") == std::string::npos);
+  CHECK(plot.hpgl.find("SP9;") == std::string::npos);
+}
+
+}  // namespace igds::test::devices
