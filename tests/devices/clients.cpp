@@ -192,9 +192,11 @@ TEST_CASE("long texts are cut before the caption on every device, and the captio
   // caption's, and none wrapped to the left margin over the picture.
   const std::string stream = tek_stream(pic, {10});
   if (have_program("tek2plot")) {
-    for (const auto& [at, line] : tek2plot_texts(tek2plot_svg(stream))) {
+    for (const auto& text : tek2plot_texts(tek2plot_svg(stream))) {
+      const std::string& line = text.second;
       CAPTURE(line);
-      if (at.x < 4 * 780) CHECK(at.x + 4 * 14 * double(line.size()) <= 4 * (780 - 7));
+      if (text.first.x < 4 * 780)
+        CHECK(text.first.x + 4 * 14 * double(line.size()) <= 4 * (780 - 7));
     }
   }
   // SVG: the same places, the label in its colour.
