@@ -303,7 +303,7 @@ TEST_CASE("DISPLAY COMBS: the surface and a comb at every point, its scale said"
   build_saddle(ctx);
   ctx.run(display_command, "COMBS", {"O", "XZ"});
   REQUIRE(ctx.ws.image);
-  const Image& image = *ctx.ws.image;
+  const Image image = *ctx.ws.image;  // a copy: DISPLAY SURFACE below replaces the current image
   CHECK(image.desim == Description{3, Projection::orthogonal, {2, 0, 0}});
   CHECK(image.points.shape == std::vector<std::size_t>{7, 7, 2});
   CHECK(image.combs.shape == std::vector<std::size_t>{7, 7, 4});
