@@ -23,7 +23,7 @@ constexpr Choice options[] = {
     {"SECOND", second, {}, "the copy kept by STORE SECOND"},
     {"FILE", file, "[name]", "the image kept by STORE FILE in NAME.IGDSIMAG"},
     {"INPUT", input, "[projection [parameters]]", "the input points, border and tangents"},
-    {"SURFACE", surface, "[projection [parameters]]", "the whole interpolated grid"},
+    {"SURFACE", surface, "[HIDDEN] [projection [parameters]]", "the whole interpolated grid"},
     {"PICTURE", picture, "[name [projection [parameters]]]",
      "the DUCT picture NAME.DUCTPIC, projected like a surface"},
     {"HIDDEN", hidden, "[projection [parameters]]",
@@ -63,6 +63,19 @@ Image ask_picture(Context& ctx) {
   });
 }
 
+// DISPLAY SURFACE HIDDEN [projection [parameters]]: HIDDEN on the line after SURFACE asks for
+// DISPLAY HIDDEN's image (docs/decisions.md). No projection starts with H; H alone is HIDDEN only
+// with more words after it, as at DISPLAY's question, where H alone is HELP.
+constexpr Choice surface_words[] = {{"HIDDEN", hidden}};
+bool hidden_follows(Context& ctx) {
+  if (!ctx.has_pending()) return false;
+  const std::vector<std::string> words = ctx.ask(projection_prompt);
+  const bool hidden = !words.empty() && choose(surface_words, words[0]) &&
+                      (words[0].size() > 1 || words.size() > 1);
+  ctx.unread(std::vector<std::string>(words.begin() + (hidden ? 1 : 0), words.end()));
+  return hidden;
+}
+
 void show(Context& ctx, ImageRef image) {
   Workspace& ws = ctx.workspace();
   ws.image = std::move(image);
@@ -90,7 +103,8 @@ void run_display(Context& ctx, const Choice* option) {
       return;
     case surface:
       if (!ws.has_surface()) throw Report(reports::surface_not_found);
-      show(ctx, std::make_shared<const Image>(ask_image(ctx, surface_image)));
+      show(ctx, std::make_shared<const Image>(
+                    ask_image(ctx, hidden_follows(ctx) ? hidden_surface_image : surface_image)));
       return;
     case picture:
       show(ctx, std::make_shared<const Image>(ask_picture(ctx)));
@@ -148,8 +162,9 @@ extern const Command display_command{
         "  DISPLAY INPUT [projection [parameters]]   the input points, the border joined by "
         "segments, the non-zero border tangents as arrows (INPUT NOT FOUND if there is no "
         "surface).\n"
-        "  DISPLAY SURFACE [projection [parameters]] the whole interpolated grid, joined along "
-        "the curves and the stringers (SURFACE NOT FOUND if there is none).\n"
+        "  DISPLAY SURFACE [HIDDEN] [projection [parameters]] the whole interpolated grid, joined "
+        "along the curves and the stringers (SURFACE NOT FOUND if there is none); HIDDEN after "
+        "SURFACE draws it as DISPLAY HIDDEN does.\n"
         "  DISPLAY FIRST | SECOND   the copy kept by STORE FIRST or SECOND (IMAGE NOT FOUND if "
         "there is none).\n"
         "  DISPLAY FILE [name]      the image kept by STORE FILE in NAME.IGDSIMAG (FILE NOT "

@@ -94,3 +94,21 @@ TEST_CASE("DISPLAY HIDDEN: SURFACE NOT FOUND without a surface, and a projection
   CHECK(r.out.find("D H CONIC 20 15 0\nINCORRECT PARAMETER: THE VIEW POINT IS INSIDE THE "
                    "SURFACE'S BOX\n") != std::string::npos);
 }
+
+TEST_CASE(
+    "DISPLAY SURFACE HIDDEN draws what DISPLAY HIDDEN draws; H alone there is no projection") {
+  TempDir dir;
+  const fs::path disk = dir.path();
+  auto r = igds_on(disk, wave +
+                             "D H ASSONOMETRIC 110 130 120\nEXPORT TEK ONE\n"
+                             "DISPLAY SURFACE HIDDEN ASSONOMETRIC 110 130 120\nEXPORT TEK TWO\n"
+                             "D SU HI\nASSONOMETRIC 110 130 120\nEXPORT TEK THREE\n"
+                             "D SU ASSONOMETRIC 110 130 120\nEXPORT TEK ALL\nD SU H\n");
+  REQUIRE(r.status == 0);
+  const std::string hidden = read_file(disk / "ONE.TEK");
+  CHECK(read_file(disk / "TWO.TEK") == hidden);
+  CHECK(read_file(disk / "THREE.TEK") == hidden);
+  CHECK(read_file(disk / "ALL.TEK") != hidden);
+  CHECK(r.out.find("D SU H\nINCORRECT PARAMETER: THE PROJECTION IS CONIC, ISOMETRIC, ASSONOMETRIC "
+                   "OR ORTHOGONAL\n") != std::string::npos);
+}
