@@ -12,6 +12,7 @@
 
 #include "devices/device.h"
 #include "devices/hpgl_plot.h"
+#include "devices/layout.h"
 #include "devices/tek_stream.h"
 #include "workspace/disk/disk.h"
 #include "workspace/journal.h"
@@ -97,10 +98,11 @@ class Context {
 
   // Draws an image on the terminal as the terminal mode says.
   virtual void show(const ImageRef& image) = 0;
-  // A position picked on the screen after `prompt`, in 4013 addresses (0..1023, 0..779): the
-  // cross-hair of a Tek terminal (GIN mode), or a line `X Y` typed or read from a command file;
-  // nullopt when the reply is not a pick. Throws Interrupted on Ctrl-C, EndOfInput at the end.
-  virtual std::optional<DevicePoint> pick(const Prompt& prompt) = 0;
+  // A position picked after `prompt`, in 4013 addresses (0..1023, 0..779), and the layout it is
+  // in: the cross-hair of a Tek terminal (GIN mode) or a line `X Y` typed, on the screen as
+  // drawn; a line `X Y` of a command file, on the page (PickLayout, devices/layout.h). nullopt
+  // when the reply is not a pick. Throws Interrupted on Ctrl-C, EndOfInput at the end.
+  virtual std::optional<PickedAddress> pick(const Prompt& prompt) = 0;
   // ERASE: a clean screen (a page), where there is a screen to erase.
   virtual void erase() = 0;
   // The plotter on the terminal line (--plotter tty): bytes already wrapped in ESC.( ... ESC.).

@@ -37,9 +37,12 @@ const Prompt pick_place_prompt{"NEW PLACE?",
 
 namespace {
 
-// How the screen placed the image (devices/layout.h).
-Placement placement_of(const Image& shown, TermMode mode) {
-  const TekLayout layout = mode == TermMode::tek ? dialogue_layout() : full_layout();
+// How the image is placed in the layout a pick is read in (devices/layout.h): the screen of tek
+// mode has the dialogue below the picture; xterm's Tek window, none mode and the page have the
+// picture alone.
+Placement placement_of(const Image& shown, TermMode mode, PickLayout in) {
+  const bool dialogue = in == PickLayout::screen && mode == TermMode::tek;
+  const TekLayout layout = dialogue ? dialogue_layout() : full_layout();
   const Box& sq = layout.image;
   const double m = tek_screen::image_margin;
   const Box box{sq.x0 + m, sq.y0 + m, sq.x1 - m, sq.y1 - m};
@@ -50,9 +53,10 @@ Placement placement_of(const Image& shown, TermMode mode) {
 
 Point2 pick_image_point(Context& ctx, const Prompt& prompt, const Image& shown, bool rounded) {
   for (;;) {
-    if (auto at = ctx.pick(prompt)) {
-      const Placement p = placement_of(shown, ctx.options().term);
-      Point2 point{(at->x - p.dx) / p.scale, (at->y - p.dy) / p.scale};
+    if (const auto picked = ctx.pick(prompt)) {
+      const Placement p = placement_of(shown, ctx.options().term, picked->layout);
+      const DevicePoint at = picked->at;
+      Point2 point{(at.x - p.dx) / p.scale, (at.y - p.dy) / p.scale};
       const double step = std::pow(10.0, std::floor(std::log10(1 / p.scale)));
       if (rounded && std::isfinite(step) && step > 0)
         point = {std::round(point.x / step) * step, std::round(point.y / step) * step};
@@ -156,9 +160,11 @@ extern const Command pick_command{
         "click. igds names the input point nearest the place picked, with its coordinates: POINT "
         "7 AT 10 5 2. The image must show the current surface's input points: DISPLAY INPUT, "
         "SURFACE or COMBS of it, zoomed or not (otherwise THE CURRENT IMAGE SHOWS NO INPUT "
-        "POINTS OF THE SURFACE; IMAGE NOT FOUND without an image). Without a cross-hair (a "
-        "command file, the none terminal mode), the answer to POINT? is the screen address X Y "
-        "(X 0..1023, Y 0..779), as for ZOOM PICK.\n"
+        "POINTS OF THE SURFACE; IMAGE NOT FOUND without an image). Without a cross-hair the "
+        "answer to POINT? is an address X Y (X 0..1023, Y 0..779), as for ZOOM PICK, on the page "
+        "EXPORT TEK draws: a command file names the same point under every terminal mode. Typed "
+        "on the screen of tek mode, it is on that screen, where the picture sits above the "
+        "dialogue.\n"
         "\n"
         "CHANGE POINTS takes a picked point too: PICK at POINTS? picks it and names it, then NEW "
         "X Y Z? asks where it goes: type its coordinates, or in an ORTHOGONAL view PICK again and "

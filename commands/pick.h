@@ -16,8 +16,9 @@
 namespace igds {
 
 // A cross-hair pick after `prompt` as a point of the image shown, by the inverse of the placement
-// the screen drew it with (devices/layout.h: the dialogue's square in tek mode, the full one in
-// the Tek window of xterm and in the files), its ZOOM window included. A reply that is not a pick
+// in the pick's layout (devices/layout.h, PickLayout): on the screen, the dialogue's square in
+// tek mode and the full one in the Tek window of xterm; on the page (a command file's X Y), the
+// full one whatever the mode. Its ZOOM window included. A reply that is not a pick
 // gets INCORRECT ENTRY and the cross-hair again. With `rounded`, each coordinate is rounded to the
 // power of ten just below one screen point in image units: what a pick can tell, and no more.
 Point2 pick_image_point(Context& ctx, const Prompt& prompt, const Image& shown,

@@ -42,6 +42,18 @@ TekLayout full_layout();
 // left, the caption at x = 600, eight full lines of dialogue (73 characters) below the picture.
 TekLayout dialogue_layout();
 
+// The layout a picked address is read in (docs/devices.md, "The cross-hair"): `screen`, the
+// screen as the terminal mode draws it (a cross-hair pick, or X Y typed by a person who sees the
+// picture); `page`, full_layout's, the page of EXPORT TEK and of --term none (a command file's
+// X Y, so that one file names the same place under every terminal mode).
+enum class PickLayout { screen, page };
+
+// A position picked, in 4013 addresses (0..1023, 0..779), and the layout it is in.
+struct PickedAddress {
+  DevicePoint at;
+  PickLayout layout = PickLayout::screen;
+};
+
 // A page without a picture: the dialogue over the whole screen, 34 lines of 73 characters.
 inline constexpr int text_rows = tek_screen::text_top / tek_screen::line_height + 1;
 inline constexpr int text_columns = (tek_screen::width - 1) / tek_screen::char_width;

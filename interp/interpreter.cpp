@@ -235,12 +235,12 @@ void Interpreter::show(const ImageRef& image) {
   terminal_.show(std::move(picture), image_line(*image));
 }
 
-std::optional<DevicePoint> Interpreter::pick(const Prompt& prompt) {
+std::optional<PickedAddress> Interpreter::pick(const Prompt& prompt) {
   asking_ = &prompt;
   for (;;) {
     const Event e = terminal_.pick(prompt.text.empty() ? "" : std::string(prompt.text) + " ");
     if (e.kind == Event::Kind::interrupt) throw Interrupted{};
-    if (e.kind == Event::Kind::pick) return DevicePoint{e.x, e.y};
+    if (e.kind == Event::Kind::pick) return PickedAddress{{e.x, e.y}, e.layout};
     if (e.kind == Event::Kind::end) throw EndOfInput{};
     if (e.kind == Event::Kind::line && !answer_help(split_words(e.text), prompt))
       return std::nullopt;

@@ -69,7 +69,7 @@ class Interpreter final : public Context {
   void document(std::string_view text) override;
   void report(std::string_view text) override;
   void show(const ImageRef& image) override;
-  std::optional<DevicePoint> pick(const Prompt& prompt) override;
+  std::optional<PickedAddress> pick(const Prompt& prompt) override;
   void erase() override;
   void send_to_terminal(std::string_view bytes) override;
   void end_session(bool apl) override;

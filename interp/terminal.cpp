@@ -247,7 +247,7 @@ Event Terminal::read_line(std::string_view prompt, std::string_view above) {
   return e;
 }
 
-Event Terminal::typed_pick(Event e) {
+Event Terminal::typed_pick(Event e, PickLayout layout) {
   if (e.kind != Event::Kind::line) return e;
   // X Y [KEY]: two whole numbers on the screen, and the key (a blank when none is given).
   int x = 0, y = 0;
@@ -258,6 +258,7 @@ Event Terminal::typed_pick(Event e) {
   Event picked{Event::Kind::pick, key};
   picked.x = x;
   picked.y = y;
+  picked.layout = layout;
   return picked;
 }
 
@@ -269,7 +270,8 @@ Event Terminal::pick(std::string_view prompt, std::string_view pick_keys) {
     ~Seen() { unseen = 0; }
   } seen{unseen_};
   if (mode_ == TermMode::tek && input_->gives_keys()) return cross_hair(prompt, pick_keys);
-  return typed_pick(read_line(prompt));
+  // A command file's X Y names a place on the page whatever the mode; a person's, on the screen.
+  return typed_pick(read_line(prompt), command_file() ? PickLayout::page : PickLayout::screen);
 }
 
 namespace {
@@ -373,7 +375,7 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
     }
     if (waiting.kind == Event::Kind::key) {
       input_->unread(waiting.text);
-      return typed_pick(edit_line({}));
+      return typed_pick(edit_line({}), PickLayout::screen);
     }
     DevicePoint at;
     std::string request = screen_->enquire(at);
@@ -414,7 +416,7 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
         return {left, {}};
       }
       input_->unread(std::move(typed));
-      return typed_pick(edit_line({}));
+      return typed_pick(edit_line({}), PickLayout::screen);
     }
     const GinReport report = *reader.report();
     input_->unread(std::string(reader.rest()));
@@ -428,7 +430,7 @@ Event Terminal::cross_hair(std::string_view prompt, std::string_view pick_keys) 
     if (!picks) {
       // The first key of a typed line: GIN mode is over, the rest comes as keys.
       typed_ahead_.insert(typed_ahead_.begin(), std::string(1, key));
-      return typed_pick(edit_line({}));
+      return typed_pick(edit_line({}), PickLayout::screen);
     }
     if (report.button) {
       last_click_ = report;

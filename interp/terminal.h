@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "devices/gin.h"
+#include "devices/layout.h"
 #include "devices/tek_screen.h"
 #include "devices/tek_stream.h"
 
@@ -26,7 +27,8 @@ struct Event {
   // line: the line, without its end; key: the key's bytes (one character); pick: the key that
   // made it.
   std::string text;
-  int x = 0, y = 0;  // pick: the position in 4013 addresses (0..1023, 0..779)
+  int x = 0, y = 0;                        // pick: the position in 4013 addresses (0..1023, 0..779)
+  PickLayout layout = PickLayout::screen;  // pick: the layout x y are in (devices/layout.h)
 };
 
 // Where input comes from: a command file or a pipe, the keyboard (lines through GNU Readline or
@@ -115,7 +117,8 @@ class Terminal {
   // do too); the second click of a double click is dropped. From a command file or a line
   // source, a line. A line `X Y [KEY]` is a pick there too; any other line comes back as
   // Event::line, an interrupt or the end of the input as themselves. A pick after a prompt is
-  // echoed after it as `X Y`.
+  // echoed after it as `X Y`. A command file's pick is on the page (PickLayout::page), any
+  // other on the screen as drawn.
   Event pick(std::string_view prompt, std::string_view pick_keys = {});
 
   // What the time is (the tests set their own).
@@ -155,8 +158,8 @@ class Terminal {
   // keys typed meanwhile kept. Event::Kind::key, or the end of the input, or an interrupt that
   // came meanwhile.
   Event::Kind leave_gin(std::string_view asked = {});
-  // A line typed at a cross-hair question: `X Y [KEY]` a pick, else the line.
-  static Event typed_pick(Event e);
+  // A line typed at a cross-hair question: `X Y [KEY]` a pick in `layout`, else the line.
+  static Event typed_pick(Event e, PickLayout layout);
 
   TermMode mode_;
   Output& out_;

@@ -75,7 +75,7 @@ class QuietContext final : public igds::Context {
   void document(std::string_view) override {}
   void report(std::string_view) override {}
   void show(const igds::ImageRef&) override {}
-  std::optional<igds::DevicePoint> pick(const igds::Prompt&) override { return std::nullopt; }
+  std::optional<igds::PickedAddress> pick(const igds::Prompt&) override { return std::nullopt; }
   igds::Journal& journal() override { return journal_; }
   void erase() override {}
   void send_to_terminal(std::string_view) override {}

@@ -312,10 +312,9 @@ TEST_CASE("ZOOM: a window by its corners, by a factor and a centre, by picks; ZO
 
 namespace {
 
-// The screen address (the full square of --term none and xterm) of image point p of the
-// current image.
-std::string address_of(FakeContext& ctx, Point2 p) {
-  const TekLayout l = full_layout();
+// The address of image point p of the current image in layout `l`: by default the page (the
+// full square of EXPORT TEK, of --term none and xterm, and of every command file's X Y).
+std::string address_of(FakeContext& ctx, Point2 p, const TekLayout& l = full_layout()) {
   const double m = tek_screen::image_margin;
   const Placement at =
       fit(picture_of(*ctx.ws.image).drawing,
@@ -356,6 +355,56 @@ TEST_CASE(
   ctx.run(change_command, "GRID");
   CHECK(report_of(ctx, pick_command, "") ==
         "THE CURRENT IMAGE SHOWS NO INPUT POINTS OF THE SURFACE (DISPLAY INPUT OR SURFACE FIRST)");
+}
+
+TEST_CASE(
+    "a pick on the page is read in the full square; on tek mode's screen, above the dialogue") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  build_saddle(ctx);
+  ctx.run(display_command, "INPUT", {"ORTHOGONAL", "XY"});
+  // Points 1 (0 0), 5 (10 10) and 6 (10 20) on the page and on tek mode's screen.
+  const std::vector<std::string> on_page{address_of(ctx, {0, 0}), address_of(ctx, {10, 10}),
+                                         address_of(ctx, {10, 20})};
+  const std::vector<std::string> on_screen{address_of(ctx, {0, 0}, dialogue_layout()),
+                                           address_of(ctx, {10, 10}, dialogue_layout()),
+                                           address_of(ctx, {10, 20}, dialogue_layout())};
+  // PICK at point 6, then ZOOM PICK from point 1 to point 5: what was named, and the window.
+  auto picked = [&](TermMode term, bool by_person, const std::vector<std::string>& address) {
+    ctx.opts.term = term;
+    ctx.picks_on_screen = by_person;
+    ctx.said.clear();
+    ctx.type({address[2]});
+    ctx.run(pick_command, "");
+    ctx.type({address[0], address[1]});
+    ctx.run(zoom_command, "", {"PICK"});
+    const auto window = ctx.ws.image->window;
+    ctx.run(zoom_command, "");  // the whole image again, for the next picks
+    REQUIRE(ctx.said.size() == 1);
+    REQUIRE(window);
+    return std::pair{ctx.said[0], *window};
+  };
+  const double point = 20.0 / 700;  // a screen point in image units, at most
+  auto near = [&](std::array<double, 4> w, std::array<double, 4> want) {
+    for (std::size_t k = 0; k < 4; ++k)
+      if (std::abs(w[k] - want[k]) > 1.5 * point) return false;
+    return true;
+  };
+  // A command file's addresses name the same point and window under every terminal mode.
+  const auto none = picked(TermMode::none, false, on_page);
+  CHECK(none.first == "POINT 6 AT 10 20 2");
+  CHECK(near(none.second, {0, 0, 10, 10}));
+  for (const TermMode term : {TermMode::tek, TermMode::xterm}) {
+    CAPTURE(int(term));
+    CHECK(picked(term, false, on_page) == none);
+  }
+  // A person's are on the screen they see: above the dialogue in tek mode, the full square in
+  // the Tek window of xterm.
+  const auto tek_screen = picked(TermMode::tek, true, on_screen);
+  CHECK(tek_screen.first == "POINT 6 AT 10 20 2");
+  CHECK(near(tek_screen.second, {0, 0, 10, 10}));
+  CHECK(!near(picked(TermMode::tek, true, on_page).second, {0, 0, 10, 10}));
+  CHECK(picked(TermMode::xterm, true, on_page) == none);
 }
 
 TEST_CASE(

@@ -263,55 +263,13 @@ EXPORT TEK ZOOMED
                     [](const TekText& t) { return t.text == "ZOOMED" && t.at.x == 780; }));
 }
 
-TEST_CASE("ZOOM PICK on the Tek screen: two cross-hair picks, from a command file as X Y") {
-  TempDir disk;
-  // Where tek mode draws the image (in the square above the dialogue): the border starts at
-  // point 1 (0 0) and goes to point 2 (0 10), point 3 (0 20), point 6 (10 20).
-  const RunResult shown = run_in(disk, "tek", seen_from_above);
-  REQUIRE(shown.status == 0);
-  const TekDrawing before = decode_tek(shown.out);
-  REQUIRE(!before.pages.empty());
-  const auto& border = before.pages.back().segments;
-  REQUIRE(border.size() > 3);
-  const TekPoint origin = border[0].a, ten_ten{border[2].b.x, border[0].b.y};
-  const double unit = (border[0].b.y - border[0].a.y) / 10;  // screen points per image unit
-  REQUIRE(unit > 20);
-  const std::string first = fmt::format("{} {}", std::lround(origin.x), std::lround(origin.y));
-  const std::string second = fmt::format("{} {}", std::lround(ten_ten.x), std::lround(ten_ten.y));
-
-  const RunResult r =
-      run_in(disk, "tek", "ZOOM PICK\n" + first + "\n" + second + "\nLIST IMAGES\nERASE\n");
-  REQUIRE(r.status == 0);
-  const TekDrawing d = decode_tek(r.out);
-  CHECK(d.errors.empty());
-  for (const auto& page : d.pages)
-    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
-  auto said = [&](std::string_view start) {
-    for (const auto& page : d.pages)
-      for (const auto& t : page.texts)
-        if (t.text.starts_with(start)) return t.text;
-    return std::string();
-  };
-  CHECK(said("FIRST CORNER?") == "FIRST CORNER? " + first);
-  CHECK(said("SECOND CORNER?") == "SECOND CORNER? " + second);
-  // The corners come back in image units, within a screen point of 0 0 and 10 10.
-  const std::string zoomed = said("               ZOOMED TO ");
-  REQUIRE(!zoomed.empty());
-  double x0 = 1, y0 = 1, x1 = 0, y1 = 0;
-  REQUIRE(std::sscanf(zoomed.c_str(), " ZOOMED TO %lf %lf %lf %lf", &x0, &y0, &x1, &y1) == 4);
-  CHECK(std::abs(x0) <= 1 / unit);
-  CHECK(std::abs(y0) <= 1 / unit);
-  CHECK(std::abs(x1 - 10) <= 1 / unit);
-  CHECK(std::abs(y1 - 10) <= 1 / unit);
-}
-
 namespace {
 
-// Where tek mode draws the saddle seen from above (in the square above the dialogue): the border
-// starts at point 1 (0 0) and goes to point 2 (0 10), point 3 (0 20), point 6 (10 20).
-struct SaddleOnScreen {
+// Where the saddle seen from above is drawn, from the first vector of its border: point 1 (0 0)
+// up to point 2 (0 10).
+struct SaddlePlaced {
   TekPoint origin;
-  double unit = 0;  // screen points per image unit
+  double unit = 0;  // points per image unit
   std::string at(double x, double y) const {
     return fmt::format("{} {}", std::lround(origin.x + unit * x), std::lround(origin.y + unit * y));
   }
@@ -320,16 +278,41 @@ struct SaddleOnScreen {
   }
 };
 
-SaddleOnScreen saddle_on_screen(const TempDir& disk) {
-  const RunResult shown = run_in(disk, "tek", seen_from_above);
-  REQUIRE(shown.status == 0);
-  const TekDrawing before = decode_tek(shown.out);
-  REQUIRE(!before.pages.empty());
-  const auto& border = before.pages.back().segments;
+SaddlePlaced placed_on(const TekDrawing& d) {
+  REQUIRE(!d.pages.empty());
+  const auto& border = d.pages.back().segments;
   REQUIRE(border.size() > 3);
-  SaddleOnScreen s{border[0].a, (border[0].b.y - border[0].a.y) / 10};
+  SaddlePlaced s{border[0].a, (border[0].b.y - border[0].a.y) / 10};
   REQUIRE(s.unit > 20);
   return s;
+}
+
+// On tek mode's screen, in the square above the dialogue: where a person sees it.
+SaddlePlaced saddle_on_screen(const TempDir& disk) {
+  const RunResult shown = run_in(disk, "tek", seen_from_above);
+  REQUIRE(shown.status == 0);
+  return placed_on(decode_tek(shown.out));
+}
+
+// On the page (EXPORT TEK's full square): where a command file's X Y are read in every mode.
+SaddlePlaced saddle_on_page() {
+  TempDir disk;
+  REQUIRE(run_in(disk, "none", seen_from_above + "EXPORT TEK PAGE\n").status == 0);
+  return placed_on(decode_tek(read_file(disk.path() / "PAGE.TEK")));
+}
+
+// The dialogue of a run under `mode`: the texts of the 4013 stream in tek mode (after checking
+// that nothing on a page is written over anything), else the output as it is.
+std::string dialogue_of(const std::string& mode, const RunResult& r) {
+  if (mode != "tek") return r.out;
+  const TekDrawing d = decode_tek(r.out);
+  CHECK(d.errors.empty());
+  std::string said;
+  for (const auto& page : d.pages) {
+    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
+    for (const auto& t : page.texts) said += t.text + "\n";
+  }
+  return said;
 }
 
 // The x y z of the first line `POINT k AT x y z` after `from` in `out`.
@@ -342,45 +325,82 @@ std::array<double, 3> point_at(const std::string& out, int k, std::size_t from =
   return p;
 }
 
+const char* const every_mode[] = {"none", "tek", "xterm"};
+
 }  // namespace
 
-TEST_CASE("PICK and CHANGE POINTS by pointing, from a command file as X Y") {
-  TempDir disk;
-  const SaddleOnScreen screen = saddle_on_screen(disk);
-  // A pick a little off point 5 (10 10) names it; at CHANGE POINTS, point 9 (20 20) is picked
-  // and put at 15 5 (z kept, the view is XY); point 4 is typed a new place.
-  const RunResult r =
-      run_in(disk, "tek",
-             "PICK\n" + screen.at(10.2, 9.7) + "\nCHANGE POINTS\nPICK\nNOT A PICK\n" +
-                 screen.at(19.8, 20) + "\nPICK\n" + screen.at(15, 5) + "\nPICK\n" +
-                 screen.at(10, 0) + "\n10 ¯1 2.5\n\nN\nN\nLIST POINTS\n");
-  REQUIRE(r.status == 0);
-  const TekDrawing d = decode_tek(r.out);
-  CHECK(d.errors.empty());
-  for (const auto& page : d.pages)
-    for (const auto& fault : screen_faults(page)) FAIL_CHECK(fault);
-  std::string said;
-  for (const auto& page : d.pages)
-    for (const auto& t : page.texts) said += t.text + "\n";
-  CHECK(has(said, "POINT 5 AT 10 10 0\n"));
-  CHECK(has(said, "INCORRECT ENTRY: A CROSS-HAIR PICK OR X Y (0..1023 0..779)"));
-  CHECK(has(said, "POINT 9 AT 20 20 0\n"));
-  // The new place within a screen point, rounded to what a pick can tell; z kept.
-  const auto moved = point_at(said, 9, said.find("NEW PLACE?"));
-  CHECK(std::abs(moved[0] - 15) <= 1 / screen.unit + 0.01);
-  CHECK(std::abs(moved[1] - 5) <= 1 / screen.unit + 0.01);
-  CHECK(moved[2] == 0);
-  CHECK(std::abs(moved[0] * 100 - std::round(moved[0] * 100)) < 1e-6);
-  CHECK(has(said, "POINT 4 AT 10 0 2\n"));
-  CHECK(has(said, "POINT 4 AT 10 -1 2.5\n"));
-  // LIST POINTS shows the surface changed.
-  CHECK(
-      has(said, fmt::format("    9     3     3 {:>13} {:>13}             0", moved[0], moved[1])));
+TEST_CASE("ZOOM PICK from a command file: the same window under --term none, tek and xterm") {
+  // The corners at points 1 (0 0) and 5 (10 10) of the page.
+  const SaddlePlaced page = saddle_on_page();
+  const std::string first = page.at(0, 0), second = page.at(10, 10);
+  std::string window_none;
+  for (const std::string mode : every_mode) {
+    CAPTURE(mode);
+    TempDir disk;
+    const RunResult r =
+        run_in(disk, mode,
+               seen_from_above + "ZOOM PICK\n" + first + "\n" + second + "\nLIST IMAGES\nERASE\n");
+    REQUIRE(r.status == 0);
+    const std::string said = dialogue_of(mode, r);
+    CHECK(has(said, "FIRST CORNER? " + first + "\n"));
+    CHECK(has(said, "SECOND CORNER? " + second + "\n"));
+    // The corners come back in image units, within a point of 0 0 and 10 10, the same in
+    // every mode.
+    const auto at = said.find(" ZOOMED TO ");
+    REQUIRE(at != std::string::npos);
+    const std::string window = said.substr(at, said.find('\n', at) - at);
+    double x0 = 1, y0 = 1, x1 = 0, y1 = 0;
+    REQUIRE(std::sscanf(window.c_str(), " ZOOMED TO %lf %lf %lf %lf", &x0, &y0, &x1, &y1) == 4);
+    CHECK(std::abs(x0) <= 1 / page.unit);
+    CHECK(std::abs(y0) <= 1 / page.unit);
+    CHECK(std::abs(x1 - 10) <= 1 / page.unit);
+    CHECK(std::abs(y1 - 10) <= 1 / page.unit);
+    if (window_none.empty()) window_none = window;
+    CHECK(window == window_none);
+  }
 }
 
-TEST_CASE("PICK and CHANGE POINTS by pointing through the pty: the cross-hair clicked") {
+TEST_CASE(
+    "PICK and CHANGE POINTS from a command file: the same points, moved alike, in every mode") {
+  // A pick a little off point 5 (10 10) names it; at CHANGE POINTS, point 9 (20 20) is picked
+  // and put at 15 5 (z kept, the view is XY); point 4 is typed a new place.
+  const SaddlePlaced page = saddle_on_page();
+  const std::string commands = seen_from_above + "PICK\n" + page.at(10.2, 9.7) +
+                               "\nCHANGE POINTS\nPICK\nNOT A PICK\n" + page.at(19.8, 20) +
+                               "\nPICK\n" + page.at(15, 5) + "\nPICK\n" + page.at(10, 0) +
+                               "\n10 ¯1 2.5\n\nN\nN\nLIST POINTS\nWRITE SADDLE\n";
+  std::string cards_none;
+  for (const std::string mode : every_mode) {
+    CAPTURE(mode);
+    TempDir disk;
+    const RunResult r = run_in(disk, mode, commands);
+    REQUIRE(r.status == 0);
+    const std::string said = dialogue_of(mode, r);
+    CHECK(has(said, "POINT 5 AT 10 10 0\n"));
+    CHECK(has(said, "INCORRECT ENTRY: A CROSS-HAIR PICK OR X Y (0..1023 0..779)"));
+    CHECK(has(said, "POINT 9 AT 20 20 0\n"));
+    // The new place within a point, rounded to what a pick can tell; z kept.
+    const auto moved = point_at(said, 9, said.find("NEW PLACE?"));
+    CHECK(std::abs(moved[0] - 15) <= 1 / page.unit + 0.01);
+    CHECK(std::abs(moved[1] - 5) <= 1 / page.unit + 0.01);
+    CHECK(moved[2] == 0);
+    CHECK(std::abs(moved[0] * 100 - std::round(moved[0] * 100)) < 1e-6);
+    CHECK(has(said, "POINT 4 AT 10 0 2\n"));
+    CHECK(has(said, "POINT 4 AT 10 -1 2.5\n"));
+    // LIST POINTS shows the surface changed.
+    CHECK(has(said,
+              fmt::format("    9     3     3 {:>13} {:>13}             0", moved[0], moved[1])));
+    // The surface after it, card for card, is the same in every mode.
+    const std::string cards = read_file(disk.path() / "SADDLE.IGDSCHAR");
+    REQUIRE(!cards.empty());
+    if (cards_none.empty()) cards_none = cards;
+    CHECK(cards == cards_none);
+  }
+}
+
+TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on the screen seen") {
   TempDir disk;
-  const SaddleOnScreen screen = saddle_on_screen(disk);
+  const SaddlePlaced screen = saddle_on_screen(disk);
   TempDir home;
   XtermPty term({igds_binary().string(), "--term", "tek", "--disk", disk.path().string()},
                 {{"TERM", "tek4014"},
@@ -429,6 +449,32 @@ TEST_CASE("PICK and CHANGE POINTS by pointing through the pty: the cross-hair cl
   CHECK(std::abs(moved[0] - 3) <= 1 / screen.unit + 0.01);
   CHECK(std::abs(moved[1] - 4) <= 1 / screen.unit + 0.01);
   CHECK(moved[2] == 0);
+
+  // X Y typed by the person at the cross-hair are read on the screen too, as a click would be:
+  // point 9 (20 20), which on the page would be nearer point 6, and its new place.
+  igds.send("CHANGE POINTS\r");
+  REQUIRE(term.expect("POINTS?"));
+  igds.send("PICK\r");
+  REQUIRE(term.expect_gin());
+  term.type(screen.at(20, 20) + "\r");
+  if (!term.expect("POINT 9 AT 20 20 0")) FAIL(term.transcript());
+  REQUIRE(term.expect("NEW X Y Z?"));
+  igds.send("PICK\r");
+  REQUIRE(term.expect("NEW PLACE?"));
+  REQUIRE(term.expect_gin());
+  term.type(screen.at(6, 8) + "\r");
+  REQUIRE(term.expect("POINT 9 AT "));
+  REQUIRE(term.expect("POINTS?"));
+  igds.send("\r");
+  REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
+  igds.send("N\r");
+  REQUIRE(term.expect("CHANGE GRID TOO?"));
+  igds.send("N\r");
+  REQUIRE(term.expect("READY"));
+  const auto typed = point_at(igds.output(), 9, igds.output().rfind("NEW PLACE?"));
+  CHECK(std::abs(typed[0] - 6) <= 1 / screen.unit + 0.01);
+  CHECK(std::abs(typed[1] - 8) <= 1 / screen.unit + 0.01);
+  CHECK(typed[2] == 0);
   igds.send("END CMS\r");
   CHECK(igds.wait(60) == 0);
 }

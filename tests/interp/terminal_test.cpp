@@ -92,6 +92,7 @@ TEST_CASE("tek mode: a pick is the cross-hair, read after the mark of the status
     CHECK(e.text == " ");
     CHECK(e.x == 500);
     CHECK(e.y == 300);
+    CHECK(e.layout == PickLayout::screen);  // where the person sees the picture
     // The status asked (ESC ENQ) before GIN mode (ESC SUB), the pick echoed after the prompt.
     CHECK(t.out.text.find("\x1B\x05\x1B\x1A") != std::string::npos);
     CHECK(t.rows() == std::vector<std::string>{"POINT? 500 300"});
@@ -120,6 +121,7 @@ TEST_CASE("tek mode: a line typed at a cross-hair question is a line, a number a
   REQUIRE(typed.kind == Event::Kind::pick);
   CHECK(typed.x == 512);
   CHECK(typed.y == 400);
+  CHECK(typed.layout == PickLayout::screen);  // typed by a person looking at the screen
   CHECK(t.rows() == std::vector<std::string>{"FIRST CORNER? HELP", "FIRST CORNER? 512 400"});
   // Typed while igds was busy, before the cross-hair was up: read as a line, and the next pick
   // is in step.
@@ -149,6 +151,7 @@ TEST_CASE("tek mode: keys sent with the cross-hair left up are a typed line, GIN
   REQUIRE(typed.kind == Event::Kind::pick);
   CHECK(typed.x == 512);
   CHECK(typed.y == 400);
+  CHECK(typed.layout == PickLayout::screen);  // typed by a person looking at the screen
   CHECK_FALSE(t.keys.terminal().gin());
   // An arrow sends no report: dropped; the click after it picks.
   t.keys.plain("\x1B[A");
@@ -203,19 +206,38 @@ TEST_CASE("tek mode: a double click picks once") {
   CHECK(t.keys.left() == 0);
 }
 
-TEST_CASE("command files: a pick is a line X Y [KEY]") {
-  StringOutput out;
-  ScriptedSource lines{false, true};
-  Terminal terminal{TermMode::none, {}, out};
-  terminal.use_input(&lines);
-  lines.lines({"500 300 A", "12 34", "500", "2000 1"});
-  Event e = terminal.pick("POINT? ");
-  CHECK((e.kind == Event::Kind::pick && e.x == 500 && e.y == 300 && e.text == "A"));
-  e = terminal.pick("POINT? ");
-  CHECK((e.kind == Event::Kind::pick && e.x == 12 && e.y == 34 && e.text == " "));
-  CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // not a position
-  CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // off the screen
-  CHECK(terminal.pick("POINT? ").kind == Event::Kind::end);
+TEST_CASE("command files: a pick is a line X Y [KEY], on the page in every terminal mode") {
+  for (const TermMode mode : {TermMode::none, TermMode::tek, TermMode::xterm}) {
+    CAPTURE(int(mode));
+    StringOutput out;
+    ScriptedSource lines{false, true};
+    Terminal terminal{mode, {}, out};
+    terminal.use_input(&lines);
+    lines.lines({"500 300 A", "12 34", "500", "2000 1"});
+    Event e = terminal.pick("POINT? ");
+    CHECK((e.kind == Event::Kind::pick && e.x == 500 && e.y == 300 && e.text == "A"));
+    CHECK(e.layout == PickLayout::page);
+    e = terminal.pick("POINT? ");
+    CHECK((e.kind == Event::Kind::pick && e.x == 12 && e.y == 34 && e.text == " "));
+    CHECK(e.layout == PickLayout::page);
+    CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // not a position
+    CHECK(terminal.pick("POINT? ").kind == Event::Kind::line);  // off the screen
+    CHECK(terminal.pick("POINT? ").kind == Event::Kind::end);
+  }
+}
+
+TEST_CASE("a person's X Y typed on lines is on the screen as drawn") {
+  for (const TermMode mode : {TermMode::none, TermMode::tek, TermMode::xterm}) {
+    CAPTURE(int(mode));
+    StringOutput out;
+    ScriptedSource lines{false, false};
+    Terminal terminal{mode, {}, out};
+    terminal.use_input(&lines);
+    lines.lines({"500 300"});
+    const Event e = terminal.pick("POINT? ");
+    CHECK((e.kind == Event::Kind::pick && e.x == 500 && e.y == 300));
+    CHECK(e.layout == PickLayout::screen);
+  }
 }
 
 TEST_CASE("tek mode: Ctrl-C and the end of the input are events of the wait") {

@@ -44,7 +44,8 @@ class FakeContext final : public Context {
   int reports = 0;
   int ends = -1;  // end_session: 1 APL, 0 CMS
   int erases = 0;
-  std::string terminal;      // bytes sent to the terminal as they are
+  std::string terminal;          // bytes sent to the terminal as they are
+  bool picks_on_screen = false;  // pick(): a person's X Y, not a command file's
   Journal undo_journal{ws};  // UNDO and REDO's; a test records steps in it as the interpreter does
 
   Workspace& workspace() override { return ws; }
@@ -80,9 +81,10 @@ class FakeContext final : public Context {
     ++reports;
   }
   void show(const ImageRef& image) override { shown.push_back(*image); }
-  // A typed line `X Y` is a pick, as from a command file (interp/terminal.h); any other line is
-  // not one.
-  std::optional<DevicePoint> pick(const Prompt& prompt) override {
+  // A typed line `X Y` is a pick, as from a command file (interp/terminal.h): on the page, or on
+  // the screen when `picks_on_screen` is set (a person at the terminal); any other line is not
+  // one.
+  std::optional<PickedAddress> pick(const Prompt& prompt) override {
     prompts.emplace_back(prompt.text);
     if (typed_.empty()) throw EndOfInput{};
     std::string line = typed_.front();
@@ -90,7 +92,7 @@ class FakeContext final : public Context {
     if (line == "^C") throw Interrupted{};
     int x = 0, y = 0;
     if (std::sscanf(line.c_str(), "%d %d", &x, &y) != 2) return std::nullopt;
-    return DevicePoint{x, y};
+    return PickedAddress{{x, y}, picks_on_screen ? PickLayout::screen : PickLayout::page};
   }
   void erase() override { ++erases; }
   void send_to_terminal(std::string_view bytes) override { terminal += bytes; }
