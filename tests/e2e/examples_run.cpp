@@ -140,13 +140,14 @@ TEST_CASE("the 4013 decoder reads shortened 10-bit and 12-bit addresses, text an
   CHECK(decode_tek("\x1d#d#D\x01").errors.size() == 1);
 }
 
-TEST_CASE("the eight examples are there, each with a picture page in its header") {
+TEST_CASE("the examples are there, each with a picture page in its header") {
   auto list = examples();
   std::vector<std::string> names;
   for (const auto& e : list) names.push_back(e.name);
   CHECK(names == std::vector<std::string>{"abbreviations", "fig3-tangents", "fig6-multipatch",
                                           "fig7-9-projections", "hidden-lines", "hull",
-                                          "marks-sphere", "quasi-sphere", "wave-combs"});
+                                          "marks-sphere", "pick-edit", "quasi-sphere",
+                                          "wave-combs"});
   for (const auto& e : list) {
     CAPTURE(e.name);
     CHECK(e.picture_page >= 0);
@@ -362,6 +363,51 @@ TEST_CASE("wave-combs: the combs drawn in SVG and HP-GL, the same after a restar
     return n;
   };
   CHECK(strokes(read_file(plots[0])) > strokes(read_file(plots[1])));
+}
+
+TEST_CASE("pick-edit: its picks raise the crest alike under --term none, tek and xterm") {
+  const Example& e = example_named("pick-edit");
+  std::string cards_none;
+  for (const std::string mode : {"none", "tek", "xterm"}) {
+    CAPTURE(mode);
+    TempDir disk;
+    write_file(disk.path() / "then.igds", "WRITE WAVE\nEND CMS\n");
+    const auto r = run_igds({"--disk", disk.path().string(), "--term", mode, e.file.string()});
+    REQUIRE(r.status == 0);
+    const auto then = run_igds(
+        {"--disk", disk.path().string(), "--term", "none", (disk.path() / "then.igds").string()});
+    REQUIRE(then.status == 0);
+    // What the dialogue says, the 4013's texts in tek mode.
+    std::string said = r.out;
+    if (mode == "tek") {
+      said.clear();
+      for (const auto& page : decode_tek(r.out).pages)
+        for (const auto& t : page.texts) said += t.text + "\n";
+    }
+    // PICK and CHANGE POINTS name the crest, and it goes 14 high (within a point), y kept.
+    std::size_t named = 0;
+    for (std::size_t at = 0; (at = said.find("POINT 3 AT 20 0 8\n", at)) != std::string::npos; ++at)
+      ++named;
+    // (A new page of tek mode begins with the last rows of the page before.)
+    CHECK((mode == "tek" ? named >= 2 : named == 2));
+    CHECK(said.find("POINT 3 AT 20 0 13.97\n") != std::string::npos);
+    const auto card = read_char(disk.path() / "WAVE.IGDSCHAR");
+    REQUIRE(card.inppn.size() == 60);
+    CHECK(card.inppn[6] == doctest::Approx(20));
+    CHECK(card.inppn[7] == 0);
+    CHECK(std::abs(card.inppn[8] - 14) < 0.07);
+    // The other points are where BUILD put them: 8 sin(pi x/40) cos(pi y/45) within 0.001.
+    for (std::size_t k = 0; k < 60; k += 3) {
+      if (k == 6) continue;
+      const double x = card.inppn[k], y = card.inppn[k + 1], z = card.inppn[k + 2];
+      CHECK(std::abs(z - 8 * std::sin(std::numbers::pi * x / 40) *
+                             std::cos(std::numbers::pi * y / 45)) < 0.001);
+    }
+    // Every mode leaves the same surface, card for card.
+    const std::string cards = read_file(disk.path() / "WAVE.IGDSCHAR");
+    if (cards_none.empty()) cards_none = cards;
+    CHECK(cards == cards_none);
+  }
 }
 
 TEST_CASE("quasi-sphere: every interpolated point lies near the sphere of radius 100") {
