@@ -16,7 +16,9 @@
 #include <string>
 
 #include "workspace/disk/frame.h"
+#include "workspace/disk/session_file.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/limits.h"
 #include "workspace/state.h"
 
 namespace igds::fuzz {
@@ -57,6 +59,27 @@ inline void fix_frame(std::uint8_t* data, std::size_t size) {
   const std::uint64_t sum =
       disk::checksum(std::string_view(reinterpret_cast<const char*>(data), end));
   for (int i = 0; i < 8; ++i) data[end + i] = static_cast<std::uint8_t>(sum >> (8 * i));
+}
+
+// The inputs run whole are those of surfaces of at most this many points: the checks are the
+// same at any size, and a surface of millions of points (a mutated INTCU) takes seconds under the
+// sanitizers, each load and each UNDO.
+inline constexpr double most_points = 1 << 15;
+
+inline bool small(int nocur, int nostr, int intcu, int intst) {
+  return grid_points(nocur, nostr, intcu, intst) <= most_points;
+}
+
+// True when the session payload `payload` (when it decodes) has only small surfaces in its
+// records; one that does not decode is small (its reader refuses it at once).
+inline bool small_session(std::string_view payload) {
+  try {
+    const disk::SessionTable t = disk::decode_session(payload);
+    for (const disk::Record& r : t.records)
+      if (!small(r.nocur, r.nostr, r.intcu, r.intst)) return false;
+  } catch (const disk::Damage&) {
+  }
+  return true;
 }
 
 // The same image in both, or none in either: an image that cannot be made (a recipe read from

@@ -3,7 +3,8 @@
 // RESTORE), an image (IGDSIMAG, DISPLAY FILE), a session (BINSAVE.IGDSCONT), or a session and
 // one variable file it may name (B0000001.IGDSVARS; the rest cut in two halves). Whatever the
 // bytes, the reader returns what the workspace accepts or throws an igds Error; a session read
-// is saved again and read back the same. The mutator makes the frames' lengths and checksums
+// is saved again and read back the same; a surface or session that asks for a big surface is
+// left at once (fuzz.h, small). The mutator makes the frames' lengths and checksums
 // hold again after most mutations, so that they reach the readers behind them. Seeds:
 // tests/fuzz/corpus/files.
 //   scripts/fuzz 300 files
@@ -33,6 +34,23 @@ void put(const fs::path& path, std::string_view bytes) {
   std::ofstream(path, std::ios::binary).write(bytes.data(), static_cast<long>(bytes.size()));
 }
 
+// The payload of the framed file `bytes` as its frame places it (empty when too short).
+std::string_view payload_of(std::string_view bytes) {
+  const std::size_t header = disk::frame_header_bytes, trailer = disk::frame_trailer_bytes;
+  return bytes.size() < header + trailer ? std::string_view{}
+                                         : bytes.substr(header, bytes.size() - header - trailer);
+}
+
+// True when the surface file `bytes` (IGDSDATA: NOCUR, NOSTR, INTCU, INTST first) asks for a
+// small surface (fuzz.h), or is too short to say.
+bool small_surface(std::string_view bytes) {
+  const std::string_view p = payload_of(bytes);
+  if (p.size() < 16) return true;
+  disk::Reader r(p);
+  const std::int32_t nocur = r.i32(), nostr = r.i32(), intcu = r.i32(), intst = r.i32();
+  return small(nocur, nostr, intcu, intst);
+}
+
 }  // namespace
 
 int files(const std::uint8_t* data, std::size_t size) {
@@ -43,6 +61,7 @@ int files(const std::uint8_t* data, std::size_t size) {
   Disk disk(dir);
   switch (data[0] % 4) {
     case 0: {
+      if (!small_surface(bytes)) return 0;
       put(dir / "F.IGDSDATA", bytes);
       Workspace ws;
       try {
@@ -66,7 +85,9 @@ int files(const std::uint8_t* data, std::size_t size) {
       return 0;
     }
     default: {
-      if (data[0] % 4 == 3) {
+      const bool vars = data[0] % 4 == 3;
+      if (!small_session(payload_of(vars ? bytes.substr(0, bytes.size() / 2) : bytes))) return 0;
+      if (vars) {
         put(dir / "BINSAVE.IGDSCONT", bytes.substr(0, bytes.size() / 2));
         put(dir / "B0000001.IGDSVARS", bytes.substr(bytes.size() / 2));
       } else {
