@@ -46,18 +46,14 @@ Array line_curvature(const SurfaceInput& in) {
   const std::size_t n_points = std::size_t(in.nocur) * std::size_t(in.nostr);
   require_shape("INPPN", in.inppn, {n_points, 3});
   require_shape("INPTG", in.inptg, {2 * (std::size_t(in.nocur) + std::size_t(in.nostr)), 4});
-  const bool curve = in.nocur == 1;
-  const std::size_t n = curve ? std::size_t(in.nostr) : std::size_t(in.nocur);
-  const std::size_t inserted = std::size_t(curve ? in.intst : in.intcu);
-  const std::size_t first_row = curve ? 0 : 2 * std::size_t(in.nocur);
-  const Vec3View points = as_vec3(*in.inppn);
-  std::vector<Vec3> tangents(n);
-  spline_tangents(points, border_tangent(*in.inptg, first_row),
-                  border_tangent(*in.inptg, first_row + 1), tangents);
-  const std::size_t count = n + inserted * (n - 1);
+  const LineSpline line = line_spline(in);
+  const bool curve = line.curve;
+  const std::size_t n = line.points.size(), count = line.count();
+  const Vec3View points = line.points;
+  const std::vector<Vec3>& tangents = line.tangents;
   Array out(curve ? std::vector<std::size_t>{1, count, 6} : std::vector<std::size_t>{count, 1, 6});
   for (std::size_t k = 0; k < count; ++k) {
-    const Place at = place(k, n, inserted);
+    const Place at = place(k, n, line.inserted);
     const Vec3 p0 = points[at.patch], p1 = points[at.patch + 1];
     const double length = chord_length(p0, p1);
     const Vec3 t0 = length * tangents[at.patch], t1 = length * tangents[at.patch + 1];

@@ -95,15 +95,11 @@ void check_patches(const SurfaceInput& in, const Array& patches) {
 // A single curve (NOCUR 1) or a single stringer (NOSTR 1): no patch; INTPN is the spline of its
 // points, clamped by its two end tangents, at the parameters a/(INT+1) of every arc.
 void interpolate_line(const SurfaceInput& in, Surface& out) {
-  const bool curve = in.nocur == 1;
-  const std::size_t n = curve ? std::size_t(in.nostr) : std::size_t(in.nocur);
-  const std::size_t inserted = std::size_t(curve ? in.intst : in.intcu);
-  const std::size_t first_row = curve ? 0 : 2 * std::size_t(in.nocur);
-  const Vec3View points = as_vec3(*in.inppn);
-  std::vector<Vec3> tangents(n);
-  spline_tangents(points, border_tangent(*in.inptg, first_row),
-                  border_tangent(*in.inptg, first_row + 1), tangents);
-  const std::size_t count = n + inserted * (n - 1);
+  const LineSpline line = line_spline(in);
+  const bool curve = line.curve;
+  const std::size_t n = line.points.size(), inserted = line.inserted, count = line.count();
+  const Vec3View points = line.points;
+  const std::vector<Vec3>& tangents = line.tangents;
   out.patches = Array({std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
   out.intpn =
       Array(curve ? std::vector<std::size_t>{1, count, 3} : std::vector<std::size_t>{count, 1, 3});
@@ -120,6 +116,18 @@ void interpolate_line(const SurfaceInput& in, Surface& out) {
 }
 
 }  // namespace
+
+LineSpline line_spline(const SurfaceInput& in) {
+  LineSpline line;
+  line.curve = in.nocur == 1;
+  line.inserted = std::size_t(line.curve ? in.intst : in.intcu);
+  line.points = as_vec3(*in.inppn);
+  const std::size_t first_row = line.curve ? 0 : 2 * std::size_t(in.nocur);
+  line.tangents.resize(line.points.size());
+  spline_tangents(line.points, border_tangent(*in.inptg, first_row),
+                  border_tangent(*in.inptg, first_row + 1), line.tangents);
+  return line;
+}
 
 Surface interpolate(const SurfaceInput& input) {
   Surface s;

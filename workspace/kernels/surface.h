@@ -1,10 +1,13 @@
 // The whole interpolation of a surface: COONS (tangents and patch matrices) then FIT (the grid).
 #pragma once
 
+#include <cstddef>
 #include <optional>
+#include <vector>
 
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/vec3.h"
 
 namespace igds {
 
@@ -22,6 +25,19 @@ struct Surface {
   Array intpn;    // INTPN: (NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3
   friend bool operator==(const Surface&, const Surface&) = default;
 };
+
+// A surface of a single curve (NOCUR 1) or stringer (NOSTR 1) as the spline of its points: the
+// points, their clamped spline tangents (docs/kernels.md) and the points inserted between two.
+// The caller checked the shapes of INPPN and INPTG.
+struct LineSpline {
+  bool curve = false;  // along the curve (NOCUR 1), else along the stringer
+  std::size_t inserted = 0;
+  Vec3View points;
+  std::vector<Vec3> tangents;
+  // The points of the interpolated line.
+  std::size_t count() const { return points.size() + inserted * (points.size() - 1); }
+};
+LineSpline line_spline(const SurfaceInput& in);
 
 // COONS then FIT; for a single curve (NOCUR 1) or stringer (NOSTR 1) the spline of its points,
 // and PATCHES empty ((NOCUR-1) x (NOSTR-1) x 3 x 4 x 4 with a 0). Throws DataError
