@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "workspace/drawing/flatten.h"
+#include "workspace/kernels/memory.h"
 #include "workspace/kernels/parallel.h"
 
 namespace igds {
@@ -588,9 +589,9 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
     Placed& to = part == 0 ? out : second;
     PathList& list = part == 0 ? out.paths : later;
     const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
-    // Room for every polyline point of the part at once: a large drawing's list is not copied
-    // as it grows.
-    list.points.reserve(before[until] - before[from]);
+    // Room for every polyline point at once, the second part's in the first's list too: a large
+    // drawing's list is not copied as it grows, nor when the second part is put after the first.
+    reserve_large(list.points, part == 0 ? before[items] : before[until] - before[from]);
     ListSink sink(to, list);
     place_lines(drawing, from, until, at, clip, rendering, sink);
     to.clipped = sink.clipped;

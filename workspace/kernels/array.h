@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "workspace/kernels/memory.h"
+
 namespace igds {
 
 struct Array {
@@ -14,7 +16,27 @@ struct Array {
 
   Array() = default;
   // A zero-filled array of the given shape.
-  explicit Array(std::vector<std::size_t> s) : shape(std::move(s)), ravel(count(shape), 0.0) {}
+  explicit Array(std::vector<std::size_t> s) : shape(std::move(s)) {
+    reserve_large(ravel, count(shape));
+    ravel.resize(count(shape));
+  }
+  // Copies are large arrays too (workspace/kernels/memory.h).
+  Array(const Array& other) : shape(other.shape) {
+    reserve_large(ravel, other.ravel.size());
+    ravel.assign(other.ravel.begin(), other.ravel.end());
+  }
+  Array& operator=(const Array& other) {
+    if (this == &other) return *this;
+    shape = other.shape;
+    if (ravel.capacity() < other.ravel.size()) {
+      ravel = std::vector<double>();
+      reserve_large(ravel, other.ravel.size());
+    }
+    ravel.assign(other.ravel.begin(), other.ravel.end());
+    return *this;
+  }
+  Array(Array&&) = default;
+  Array& operator=(Array&&) = default;
 
   static std::size_t count(const std::vector<std::size_t>& s) {
     std::size_t n = 1;
@@ -37,6 +59,7 @@ struct Array {
     // Freed first: two grids of the largest size at once may not fit.
     if (ravel.capacity() < n || ravel.capacity() / 2 > n) ravel = std::vector<double>();
     shape = std::move(s);
+    reserve_large(ravel, n);
     ravel.resize(n);
   }
 

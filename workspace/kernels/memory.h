@@ -1,0 +1,26 @@
+// The memory of large blocks (docs/decisions.md, "Memory"): glibc's, with the kernel asked to back
+// a large block with huge pages before it is first written, so that its pages are faulted in
+// 2 MB at a time instead of 4 KB.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace igds {
+
+// Blocks of at least this many bytes are advised (a huge page is 2 MB).
+inline constexpr std::size_t huge_page_advice_bytes = std::size_t(8) << 20;
+
+// Advises the kernel to back the whole pages of [p, p + bytes) with huge pages (madvise
+// MADV_HUGEPAGE) when the block is large. Advice only: where the kernel has no transparent huge
+// pages for the process, nothing changes.
+void advise_huge_pages(const void* p, std::size_t bytes);
+
+// Room for `n` elements in `v`, advised before anything is written in it.
+template <class T>
+void reserve_large(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  advise_huge_pages(v.data(), n * sizeof(T));
+}
+
+}  // namespace igds
