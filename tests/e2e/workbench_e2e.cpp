@@ -423,6 +423,16 @@ TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on 
   if (!term.expect("POINT 5 AT 10 10 0")) FAIL(term.transcript());
   REQUIRE(term.expect("READY"));
 
+  // The empty line that ends the points; the tangents and the grid left as they are.
+  auto end_changes = [&] {
+    REQUIRE(term.expect("POINTS?"));
+    igds.send("\r");
+    REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
+    igds.send("N\r");
+    REQUIRE(term.expect("CHANGE GRID TOO?"));
+    igds.send("N\r");
+    REQUIRE(term.expect("READY"));
+  };
   igds.send("CHANGE POINTS\r");
   REQUIRE(term.expect("POINTS?"));
   igds.send("PICK\r");
@@ -437,13 +447,7 @@ TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on 
   auto [xn, yn] = screen.address(3, 4);
   term.click('l', xn, yn);
   REQUIRE(term.expect("POINT 1 AT "));
-  REQUIRE(term.expect("POINTS?"));
-  igds.send("\r");
-  REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
-  igds.send("N\r");
-  REQUIRE(term.expect("CHANGE GRID TOO?"));
-  igds.send("N\r");
-  REQUIRE(term.expect("READY"));
+  end_changes();
   // The last NEW PLACE? (the screen may start a new page and write the dialogue's end again).
   const auto moved = point_at(igds.output(), 1, igds.output().rfind("NEW PLACE?"));
   CHECK(std::abs(moved[0] - 3) <= 1 / screen.unit + 0.01);
@@ -464,13 +468,7 @@ TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on 
   REQUIRE(term.expect_gin());
   term.type(screen.at(6, 8) + "\r");
   REQUIRE(term.expect("POINT 9 AT "));
-  REQUIRE(term.expect("POINTS?"));
-  igds.send("\r");
-  REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
-  igds.send("N\r");
-  REQUIRE(term.expect("CHANGE GRID TOO?"));
-  igds.send("N\r");
-  REQUIRE(term.expect("READY"));
+  end_changes();
   const auto typed = point_at(igds.output(), 9, igds.output().rfind("NEW PLACE?"));
   CHECK(std::abs(typed[0] - 6) <= 1 / screen.unit + 0.01);
   CHECK(std::abs(typed[1] - 8) <= 1 / screen.unit + 0.01);
