@@ -423,8 +423,24 @@ TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on 
   if (!term.expect("POINT 5 AT 10 10 0")) FAIL(term.transcript());
   REQUIRE(term.expect("READY"));
 
-  // The empty line that ends the points; the tangents and the grid left as they are.
-  auto end_changes = [&] {
+  // CHANGE POINTS with the point picked at image (x, y) by `pick` (a click, or X Y typed at the
+  // cross-hair), named as `named`, and its new place picked at `to`; the empty line then ends the
+  // points, the tangents and the grid left as they are. Point `number` as the last NEW PLACE?
+  // lists it (the screen may start a new page and write the dialogue's end again).
+  auto change_by_picks = [&](auto pick, std::array<double, 2> from, const std::string& named,
+                             int number, std::array<double, 2> to) {
+    igds.send("CHANGE POINTS\r");
+    REQUIRE(term.expect("POINTS?"));
+    igds.send("PICK\r");
+    REQUIRE(term.expect_gin());
+    pick(from);
+    REQUIRE_MESSAGE(term.expect(named), term.transcript());
+    REQUIRE(term.expect("NEW X Y Z?"));
+    igds.send("PICK\r");
+    REQUIRE(term.expect("NEW PLACE?"));
+    REQUIRE(term.expect_gin());
+    pick(to);
+    REQUIRE(term.expect(fmt::format("POINT {} AT ", number)));
     REQUIRE(term.expect("POINTS?"));
     igds.send("\r");
     REQUIRE(term.expect("CHANGE TANGENTS TOO?"));
@@ -432,44 +448,21 @@ TEST_CASE("PICK and CHANGE POINTS through the pty: clicked, or typed as X Y, on 
     REQUIRE(term.expect("CHANGE GRID TOO?"));
     igds.send("N\r");
     REQUIRE(term.expect("READY"));
+    return point_at(igds.output(), number, igds.output().rfind("NEW PLACE?"));
   };
-  igds.send("CHANGE POINTS\r");
-  REQUIRE(term.expect("POINTS?"));
-  igds.send("PICK\r");
-  REQUIRE(term.expect_gin());
-  auto [x1, y1] = screen.address(0.2, 0.3);
-  term.click('l', x1, y1);
-  REQUIRE(term.expect("POINT 1 AT 0 0 0"));
-  REQUIRE(term.expect("NEW X Y Z?"));
-  igds.send("PICK\r");
-  REQUIRE(term.expect("NEW PLACE?"));
-  REQUIRE(term.expect_gin());
-  auto [xn, yn] = screen.address(3, 4);
-  term.click('l', xn, yn);
-  REQUIRE(term.expect("POINT 1 AT "));
-  end_changes();
-  // The last NEW PLACE? (the screen may start a new page and write the dialogue's end again).
-  const auto moved = point_at(igds.output(), 1, igds.output().rfind("NEW PLACE?"));
+  auto click = [&](std::array<double, 2> at) {
+    const auto [x, y] = screen.address(at[0], at[1]);
+    term.click('l', x, y);
+  };
+  const auto moved = change_by_picks(click, {0.2, 0.3}, "POINT 1 AT 0 0 0", 1, {3, 4});
   CHECK(std::abs(moved[0] - 3) <= 1 / screen.unit + 0.01);
   CHECK(std::abs(moved[1] - 4) <= 1 / screen.unit + 0.01);
   CHECK(moved[2] == 0);
 
   // X Y typed by the person at the cross-hair are read on the screen too, as a click would be:
   // point 9 (20 20), which on the page would be nearer point 6, and its new place.
-  igds.send("CHANGE POINTS\r");
-  REQUIRE(term.expect("POINTS?"));
-  igds.send("PICK\r");
-  REQUIRE(term.expect_gin());
-  term.type(screen.at(20, 20) + "\r");
-  if (!term.expect("POINT 9 AT 20 20 0")) FAIL(term.transcript());
-  REQUIRE(term.expect("NEW X Y Z?"));
-  igds.send("PICK\r");
-  REQUIRE(term.expect("NEW PLACE?"));
-  REQUIRE(term.expect_gin());
-  term.type(screen.at(6, 8) + "\r");
-  REQUIRE(term.expect("POINT 9 AT "));
-  end_changes();
-  const auto typed = point_at(igds.output(), 9, igds.output().rfind("NEW PLACE?"));
+  auto type = [&](std::array<double, 2> at) { term.type(screen.at(at[0], at[1]) + "\r"); };
+  const auto typed = change_by_picks(type, {20, 20}, "POINT 9 AT 20 20 0", 9, {6, 8});
   CHECK(std::abs(typed[0] - 6) <= 1 / screen.unit + 0.01);
   CHECK(std::abs(typed[1] - 8) <= 1 / screen.unit + 0.01);
   CHECK(typed[2] == 0);
