@@ -36,7 +36,7 @@ Array scalar(double v) {
   return a;
 }
 
-Array vector(std::vector<double> values) {
+Array vector(Ravel values) {
   Array a;
   a.shape = {values.size()};
   a.ravel = std::move(values);
@@ -148,7 +148,7 @@ std::optional<Array> workspace_variable(const Workspace& ws, std::string_view ty
     case Variable::intpn:
       return ws.intpn;
     case Variable::status:
-      return vector(std::vector<double>(ws.status.begin(), ws.status.end()));
+      return vector(Ravel(ws.status.begin(), ws.status.end()));
     default:
       break;
   }

@@ -65,7 +65,7 @@ Image input_image(const Workspace& ws, const View& view) {
   }
   const double size = std::max(norm(high - low), 1e-9);
 
-  std::vector<double> arrows;
+  Ravel arrows;
   const std::size_t rows = ws.inptg.shape.empty() ? 0 : ws.inptg.shape[0];
   const std::size_t curve_rows = 2 * static_cast<std::size_t>(ws.nocur);
   for (std::size_t r = 0; r < rows; ++r) {

@@ -40,7 +40,7 @@ struct ArrayChange {
   // `after`, one range after the other.
   bool whole = false;
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
-  std::vector<double> before, after;
+  Ravel before, after;
 
   bool unchanged() const { return !whole && ranges.empty(); }
   std::size_t bytes() const;

@@ -89,7 +89,7 @@ TEST_CASE("BUILD: incorrect entries are reported, ignored, and the next one awai
   CHECK(ctx.said[3] == "INCORRECT ENTRY: THE POINT NUMBER MUST BE 1 TO 4");
   CHECK(ctx.said[4] == "INCORRECT ENTRY: A POINT ENTRY IS K X Y Z [X Y Z ...]");
   CHECK(ctx.ws.nocur == 2);
-  CHECK(ctx.ws.inppn.ravel == std::vector<double>{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3});
+  CHECK(ctx.ws.inppn.ravel == Ravel{0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 2, 3});
   CHECK(ctx.ws.inptg.ravel[6 * 4 + 0] == 1);  // point 2, f = 0: along stringer 2 at curve 1
   CHECK(ctx.ws.intpn.shape == std::vector<std::size_t>{3, 3, 3});
 }

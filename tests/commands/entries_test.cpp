@@ -34,7 +34,7 @@ std::string refusal(F f) {
 TEST_CASE("a point entry sets point k and the ones after it") {
   Array inppn({6, 3});
   apply_point_entry(words({"2", "1", "2", "3", "4", "5", "¯6"}), inppn);
-  CHECK(inppn.ravel == std::vector<double>{0, 0, 0, 1, 2, 3, 4, 5, -6, 0, 0, 0, 0, 0, 0, 0, 0, 0});
+  CHECK(inppn.ravel == Ravel{0, 0, 0, 1, 2, 3, 4, 5, -6, 0, 0, 0, 0, 0, 0, 0, 0, 0});
   apply_point_entry(words({"6", "1E2", "2.5e-1", "-1.5E+03"}), inppn);
   CHECK(inppn.ravel[15] == 100);
   CHECK(inppn.ravel[16] == 0.25);

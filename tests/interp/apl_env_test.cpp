@@ -292,7 +292,7 @@ TEST_CASE("a combs image in END APL: DESIM[1] is 3; IMAGE or DESIM assigned drop
 
 TEST_CASE("workspace_variable and defined_variables") {
   Workspace ws = surface(2, 2, 0, 0);
-  CHECK(workspace_variable(ws, "nocur")->ravel == std::vector<double>{2});
+  CHECK(workspace_variable(ws, "nocur")->ravel == Ravel{2});
   CHECK_FALSE(workspace_variable(ws, "IMAGE"));
   CHECK_FALSE(workspace_variable(ws, "FOO"));
   CHECK(defined_variables(ws) ==

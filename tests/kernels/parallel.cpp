@@ -4,7 +4,9 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <numeric>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -60,6 +62,24 @@ TEST_CASE("threads_for: one thread below a quarter of a million numbers") {
   CHECK(threads_for((std::size_t(1) << 18) - 1) == 1);
   CHECK(threads_for(std::size_t(1) << 24) >= 1);
   CHECK(threads_for(std::size_t(1) << 24) <= 8);
+}
+
+TEST_CASE("an array of a shape is zeros; an output's numbers are the ones written") {
+  // Memory freed with other numbers in it is what the allocator hands out next.
+  for (int round = 0; round < 2; ++round) {
+    {
+      Array used({4096});
+      std::fill(used.ravel.begin(), used.ravel.end(), 7.0);
+    }
+    Array a({4096});
+    CHECK(std::count(a.ravel.begin(), a.ravel.end(), 0.0) == 4096);
+  }
+  Array out;
+  out.reshape_for_output({4096});
+  std::iota(out.ravel.begin(), out.ravel.end(), 1.0);
+  CHECK(out.ravel[4095] == 4096.0);
+  out.reshape_for_output({3000});  // the memory is kept, the numbers before stay
+  CHECK(out.ravel[2999] == 3000.0);
 }
 
 TEST_CASE("reshape_for_output keeps memory of a fitting size and replaces the rest") {

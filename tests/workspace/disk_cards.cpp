@@ -34,7 +34,7 @@ std::string i5(long long v) {
   return std::string(field, 5);
 }
 
-Array array_of(std::vector<std::size_t> shape, std::vector<double> values) {
+Array array_of(std::vector<std::size_t> shape, Ravel values) {
   Array a(std::move(shape));
   REQUIRE(a.ravel.size() == values.size());
   a.ravel = std::move(values);

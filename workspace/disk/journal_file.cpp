@@ -51,15 +51,15 @@ std::vector<std::size_t> read_shape(Reader& r) {
   return shape;
 }
 
-void write_values(Writer& w, const std::vector<double>& values) {
+void write_values(Writer& w, const Ravel& values) {
   w.u64(values.size());
   for (double v : values) w.f64(v);
 }
 
-std::vector<double> read_values(Reader& r) {
+Ravel read_values(Reader& r) {
   const std::uint64_t n = r.u64();
   if (n > r.left() / sizeof(double)) throw Damage("FORMAT");
-  std::vector<double> values(static_cast<std::size_t>(n));
+  Ravel values(static_cast<std::size_t>(n));
   for (double& v : values) v = r.f64();
   return values;
 }

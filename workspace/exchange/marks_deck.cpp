@@ -151,7 +151,7 @@ MarksDeck read_deck(std::string_view text) {
     deck.keys.push_back(int(key));
   }
   // (9F7.1) each point on a new card: x y z, then the given vectors H, V, T in that order.
-  std::vector<double> points, given[3];
+  Ravel points, given[3];
   FieldReader values(cards, values_per_card, value_width, value_decimals);
   for (std::size_t k = 0; k < n; ++k) {
     values.restart();
@@ -166,7 +166,7 @@ MarksDeck read_deck(std::string_view text) {
     if (card.find_first_not_of(' ') != std::string_view::npos)
       throw at(DeckError::Problem::extra_cards, cards.line());
   }
-  auto array = [n](std::vector<double>&& v) {
+  auto array = [n](Ravel&& v) {
     Array a;
     a.shape = {n, 3};
     a.ravel = std::move(v);

@@ -10,15 +10,39 @@
 
 namespace igds {
 
+// An allocator whose resize() leaves new doubles unwritten: an output that overwrites every
+// number is not written twice, and its pages are first touched by the threads that make it.
+template <class T>
+struct UnwrittenAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UnwrittenAllocator<U>;
+  };
+  UnwrittenAllocator() = default;
+  template <class U>
+  UnwrittenAllocator(const UnwrittenAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+// The numbers of an array.
+using Ravel = std::vector<double, UnwrittenAllocator<double>>;
+
 struct Array {
   std::vector<std::size_t> shape;
-  std::vector<double> ravel;
+  Ravel ravel;
 
   Array() = default;
   // A zero-filled array of the given shape.
   explicit Array(std::vector<std::size_t> s) : shape(std::move(s)) {
     reserve_large(ravel, count(shape));
-    ravel.resize(count(shape));
+    ravel.resize(count(shape), 0.0);
   }
   // Copies are large arrays too (workspace/kernels/memory.h).
   Array(const Array& other) : shape(other.shape) {
@@ -29,7 +53,7 @@ struct Array {
     if (this == &other) return *this;
     shape = other.shape;
     if (ravel.capacity() < other.ravel.size()) {
-      ravel = std::vector<double>();
+      ravel = Ravel();
       reserve_large(ravel, other.ravel.size());
     }
     ravel.assign(other.ravel.begin(), other.ravel.end());
@@ -57,7 +81,7 @@ struct Array {
   void reshape_for_output(std::vector<std::size_t> s) {
     const std::size_t n = count(s);
     // Freed first: two grids of the largest size at once may not fit.
-    if (ravel.capacity() < n || ravel.capacity() / 2 > n) ravel = std::vector<double>();
+    if (ravel.capacity() < n || ravel.capacity() / 2 > n) ravel = Ravel();
     shape = std::move(s);
     reserve_large(ravel, n);
     ravel.resize(n);

@@ -17,8 +17,8 @@ inline constexpr std::size_t huge_page_advice_bytes = std::size_t(8) << 20;
 void advise_huge_pages(const void* p, std::size_t bytes);
 
 // Room for `n` elements in `v`, advised before anything is written in it.
-template <class T>
-void reserve_large(std::vector<T>& v, std::size_t n) {
+template <class T, class A>
+void reserve_large(std::vector<T, A>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), n * sizeof(T));
 }
