@@ -98,10 +98,17 @@ class BoxBuilder {
   // rounding, and so does the span of its written controls: such a span adds nothing. What is
   // known only grows, so a span held now is held later. After settle().
   bool held(const Vec3 (&controls)[4]) const {
+    // Every control less and plus its margin inside: the least and the greatest decide, as
+    // rounding keeps the order of values (and a control less its margin is below it plus it).
     const Vec3 margin = rounding(controls);
-    bool in = true;
-    for (Vec3 p : controls) in = in && inside(p - margin) && inside(p + margin);
-    return in;
+    Vec3 least = controls[0], most = controls[0];
+    for (Vec3 c : controls) {
+      least = {std::min(least.x, c.x), std::min(least.y, c.y), std::min(least.z, c.z)};
+      most = {std::max(most.x, c.x), std::max(most.y, c.y), std::max(most.z, c.z)};
+    }
+    const Vec3 low = least - margin, high = most + margin;
+    return low.x >= lo_.x && low.y >= lo_.y && low.z >= lo_.z && high.x <= hi_.x &&
+           high.y <= hi_.y && high.z <= hi_.z;
   }
   // A conic span P0 M P1 with shape factor s, drawn as read_duct's reader draws it from the
   // written numbers.
