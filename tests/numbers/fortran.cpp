@@ -323,6 +323,29 @@ TEST_CASE("Ew.d: exactly the digits printf rounds to" * doctest::test_suite("slo
   CHECK(exponent_of(0.09999996, 7) == "0.9999996E-01");
 }
 
+TEST_CASE("Ew.d in fields of any width: right-justified, or the whole text after a blank") {
+  // The text written in place (its sign's column a blank or a minus) is the bare text padded.
+  std::size_t checked = 0;
+  const std::vector<double> values = test::varied_values(5000);
+  for (double v : values) {
+    for (int digits : {1, 4, 7, 9, 12}) {
+      const std::string text = exponent_of(v, digits);
+      for (int width : {1, 8, 12, 13, 14, 15, 20}) {
+        const std::string expected =
+            int(text.size()) > width ? " " + text : std::string(width - text.size(), ' ') + text;
+        char buffer[64];
+        const std::string got(buffer, put_e_whole(buffer, v, width, digits));
+        if (got != expected) {
+          CHECK_MESSAGE(got == expected, std::bit_cast<std::uint64_t>(v), " E", width, ".", digits);
+          return;
+        }
+        ++checked;
+      }
+    }
+  }
+  CHECK(checked == values.size() * 5 * 7);
+}
+
 TEST_CASE("fields that keep the whole value: widths, exponents, overflow") {
   std::string s;
   char buffer[64];

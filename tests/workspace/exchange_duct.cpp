@@ -202,9 +202,8 @@ DuctPicture read_columns(const std::string& text) {
   return p;
 }
 
-// `d` scaled by `scale` about the origin, then moved by `by`.
-Drawing3 moved(const Drawing3& d, double scale, Vec3 by) {
-  Drawing3 out;
+// The items of `d` scaled by `scale` about the origin, then moved by `by`, added to `out`.
+void add_moved(Drawing3& out, const Drawing3& d, double scale, Vec3 by) {
   std::vector<double> xyz;
   for (const auto& item : d.items()) {
     xyz.clear();
@@ -228,6 +227,12 @@ Drawing3 moved(const Drawing3& d, double scale, Vec3 by) {
         break;
     }
   }
+}
+
+// `d` scaled by `scale` about the origin, then moved by `by`.
+Drawing3 moved(const Drawing3& d, double scale, Vec3 by) {
+  Drawing3 out;
+  add_moved(out, d, scale, by);
   return out;
 }
 
@@ -1098,6 +1103,109 @@ TEST_CASE("mutated pictures are read or refused, never more; what is read writes
   }
   CHECK(accepted > 100);
   CHECK(refused > 100);
+}
+
+namespace {
+
+// Cubic chains, lines and marks, 110000 points in all, inside the box [0.4, 0.8] x [0.4, 0.8] x
+// [0.45, 0.55] (well inside every_kind()'s): enough for a picture to be laid out and written on
+// every core (kernels/parallel.h, text_out.h's put_each).
+void add_filler(Drawing3& d) {
+  std::vector<double> xyz;
+  for (int c = 0; c < 300; ++c) {
+    xyz.clear();
+    for (int i = 0; i <= 300; ++i)
+      xyz.insert(xyz.end(), {0.4 + 0.4 * i / 300, 0.4 + 0.4 * c / 300, 0.5 + 0.05 * std::sin(i)});
+    d.add_curve(3, Vec3View(xyz.data(), xyz.size() / 3), {}, {.pen = 1 + c % 3});
+  }
+  for (int m = 0; m < 19000; ++m)
+    d.add_mark({0.4 + 0.4 * (m % 137) / 137, 0.4 + 0.4 * m / 19000, 0.5}, MarkShape::dot, 1,
+               {.pen = 2 + m / 5000});
+  const double line[] = {0.45, 0.45, 0.5, 0.75, 0.5, 0.52, 0.7, 0.75, 0.48};
+  for (int l = 0; l < 300; ++l) d.add_polyline(Vec3View(line, 3), {}, {}, l % 2 == 1);
+}
+
+// The pixels a drawing of polylines, polynomial cubics, conic arcs (of 3 controls), marks and
+// texts has, in order, as its picture's lines give them: x y z and T of each.
+std::vector<double> pixels_of(const Drawing3& d) {
+  std::vector<double> out;
+  auto put = [&](Vec3 v, double t) {
+    for (double x : {v.x, v.y, v.z}) {
+      char field[40];
+      fortran::put_e_whole(field, x, 14, 7);
+      out.push_back(*fortran::read_f({field, 14}, 0, 14, 7));
+    }
+    out.push_back(t);
+  };
+  for (const auto& item : d.items()) {
+    const auto points = d.points(item);
+    if (item.kind == Drawing3::Kind::curve && item.degree == 2) {
+      const auto w = d.weights(item);
+      REQUIRE(points.size() == 3);
+      const ConicShape cs = conic_shape(points[0], points[1], points[2], w[0], w[1], w[2]);
+      put(points[0], 0);
+      put(cs.mid, cs.shape);
+      put(points[2], 0);
+      continue;
+    }
+    for (Vec3 v : points) put(v, 0);
+    if (item.closed) put(points[0], 0);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("a picture laid out and written on every core is the picture of its parts") {
+  // Every kind of item at two corners, each with a span whose inside reaches below or above all
+  // else, and between them more than a core's worth of items well inside: the limits are those
+  // of the corners alone, wherever the items are cut between cores.
+  Drawing3 base = every_kind();
+  const double bulge[] = {0.2, 0.2, 0, 0.3, 0.3, -2, 0.4, 0.3, -2, 0.5, 0.2, 0};
+  base.add_curve(3, Vec3View(bulge, 4));
+  Drawing3 corners, d;
+  add_moved(corners, base, 1, {0, 0, 0});
+  add_moved(corners, base, -1, {1.5, 1.5, 0.5});
+  add_moved(d, base, 1, {0, 0, 0});
+  add_filler(d);
+  add_moved(d, base, -1, {1.5, 1.5, 0.5});
+  const DuctHeader header{"CORES", "22 SEP 1987 09:55:50", ""};
+  const DuctPicture p = duct_picture(d, header);
+  CHECK(p.reals == duct_picture(corners, header).reals);
+  // The text written from the drawing is the picture kept, and its pixels are the items' points.
+  const std::string text = write_duct(p);
+  CHECK(streamed(d, header, DuctView{}) == text);
+  const DuctPicture back = read_duct(text);
+  std::vector<double> read;
+  for (std::size_t k = 0; k < back.pixel_count(); ++k)
+    read.insert(read.end(),
+                {back.xyz[3 * k], back.xyz[3 * k + 1], back.xyz[3 * k + 2], back.tu[2 * k]});
+  const std::vector<double> expected = pixels_of(d);
+  REQUIRE(read.size() == expected.size());
+  std::size_t differ = 0;
+  for (std::size_t k = 0; k < read.size(); ++k)
+    differ +=
+        read[k] == expected[k] || (k % 4 == 3 && std::abs(read[k] - expected[k]) < 1e-4) ? 0 : 1;
+  CHECK(differ == 0);
+  // In the plane too.
+  const Drawing2 plane =
+      project(d, {Projection::assonometric, {110, 130, 120}}, bounding_box(d).centre());
+  CHECK(streamed(plane, header, Projection::assonometric) ==
+        write_duct(duct_picture(plane, header, Projection::assonometric)));
+  // The first item that is not finite is refused, whichever core looks at it.
+  const double bad[] = {0.5, 0.5, NAN, 0.5, 0.6, 0.5};
+  for (bool both : {false, true}) {
+    Drawing3 refused;
+    if (both) refused.add_polyline(Vec3View(bad, 2));
+    add_filler(refused);
+    refused.add_polyline(Vec3View(bad, 2));
+    try {
+      streamed(refused, header, DuctView{});
+      FAIL("no refusal");
+    } catch (const DataError& e) {
+      CHECK(e.number == (both ? 1 : refused.size()));
+    }
+  }
 }
 
 TEST_CASE("golden: the pictures of a small surface") {

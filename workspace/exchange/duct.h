@@ -226,9 +226,9 @@ std::string write_duct(const DuctPicture& picture);
 // The same into `out`, made while it is written (a picture may be hundreds of megabytes).
 void write_duct(const DuctPicture& picture, TextOut& out);
 // write_duct(duct_picture(drawing, header, ...)) into `out`, byte for byte, without the picture
-// being kept: its pixels are written straight from the drawing (a second walk over it, after the
-// first has laid out the counts, limits and instructions written before them). Throws DataError
-// as duct_picture does, before writing anything. Returns duct_counts_fit of what it wrote.
+// being kept: once the counts, limits and instructions are laid out and written, its pixels are
+// written straight from the drawing's points, on every core. Throws DataError as duct_picture
+// does, before writing anything. Returns duct_counts_fit of what it wrote.
 bool write_duct(const Drawing3& drawing, const DuctHeader& header, const DuctView& view,
                 TextOut& out);
 bool write_duct(const Drawing2& drawing, const DuctHeader& header, Projection projection,

@@ -1,6 +1,7 @@
 // A drawing laid out as a DUCT picture (docs/exchange.md, "Writing"): its instructions,
 // counters, limits and pixels.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <optional>
 
@@ -10,6 +11,7 @@
 #include "workspace/drawing/project.h"
 #include "workspace/exchange/duct_parts.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/numbers/fortran.h"
 
 namespace igds {
@@ -62,30 +64,51 @@ bool is_rational(std::span<const double> w) {
 class BoxBuilder {
  public:
   // A pixel on what is drawn.
-  void add(Vec3 p) { pixels_.add(p); }
+  void add(Vec3 p) {
+    pixels_.add(p);
+    stale_ = true;
+  }
+  // Pixels boxed elsewhere.
+  void add(const Box& pixels) {
+    if (pixels.empty()) return;
+    add(pixels.lo);
+    add(pixels.hi);
+  }
   // A Bézier span, once every pixel is in: its inside is the span of the written controls,
   // worked out only when the span could reach past the box (near a flat end the written span can
   // pass its end pixel).
-  void add_bezier(std::span<const Vec3> controls) {
-    Vec3 most{0, 0, 0};
-    for (Vec3 c : controls)
-      most = {std::max(most.x, std::abs(c.x)), std::max(most.y, std::abs(c.y)),
-              std::max(most.z, std::abs(c.z))};
-    const Vec3 margin = 5e-7 * most;
-    auto holds = [&](std::span<const Vec3> points) {
-      return std::all_of(points.begin(), points.end(),
-                         [&](Vec3 p) { return inside(p - margin) && inside(p + margin); });
-    };
-    if (holds(controls)) return;  // the span lies in its controls' hull
+  void add_bezier(const Vec3 (&controls)[4]) {
+    settle();
+    if (held(controls)) return;  // the span lies in its controls' hull
+    const Vec3 margin = rounding(controls);
     Vec3 extremes[8];
     std::size_t n = span_extremes(3, controls, {}, extremes);
-    extremes[n++] = controls.front();
-    extremes[n++] = controls.back();
-    if (holds({extremes, n})) return;
+    extremes[n++] = controls[0];
+    extremes[n++] = controls[3];
+    if (std::all_of(extremes, extremes + n,
+                    [&](Vec3 p) { return inside(p - margin) && inside(p + margin); }))
+      return;
     Vec3 written[4];
     for (std::size_t k = 0; k < 4; ++k) written[k] = as_written(controls[k]);
     const std::size_t m = span_extremes(3, written, {}, extremes);
     for (std::size_t k = 0; k < m; ++k) inner_.add(extremes[k]);
+    stale_ = true;
+  }
+  // Whether the controls of a Bézier span lie inside what is known of the box by more than their
+  // rounding, and so does the span of its written controls: such a span adds nothing. What is
+  // known only grows, so a span held now is held later. After settle().
+  bool held(const Vec3 (&controls)[4]) const {
+    // Every control less and plus its margin inside: the least and the greatest decide, as
+    // rounding keeps the order of values (and a control less its margin is below it plus it).
+    const Vec3 margin = rounding(controls);
+    Vec3 least = controls[0], most = controls[0];
+    for (Vec3 c : controls) {
+      least = {std::min(least.x, c.x), std::min(least.y, c.y), std::min(least.z, c.z)};
+      most = {std::max(most.x, c.x), std::max(most.y, c.y), std::max(most.z, c.z)};
+    }
+    const Vec3 low = least - margin, high = most + margin;
+    return low.x >= lo_.x && low.y >= lo_.y && low.z >= lo_.z && high.x <= hi_.x &&
+           high.y <= hi_.y && high.z <= hi_.z;
   }
   // A conic span P0 M P1 with shape factor s, drawn as read_duct's reader draws it from the
   // written numbers.
@@ -105,6 +128,11 @@ class BoxBuilder {
     }
   }
   bool empty() const { return pixels_.empty(); }
+  // The sides of what is known of the box worked out, for held(), once pixels or spans were
+  // added.
+  void settle() {
+    if (stale_) find_sides();
+  }
   // The box of both: the extreme pixels as written.
   Box box() const {
     Box b = inner_;
@@ -114,19 +142,37 @@ class BoxBuilder {
   }
 
  private:
-  // Whether `p` is inside what is known of the box: the pixels' box less their rounding, and
-  // the written spans' extremes.
-  bool inside(Vec3 p) const {
-    auto in = [](double v, double pixel_lo, double pixel_hi, double lo, double hi) {
-      return v >= std::min(pixel_lo + 5e-7 * std::abs(pixel_lo), lo) &&
-             v <= std::max(pixel_hi - 5e-7 * std::abs(pixel_hi), hi);
+  // The sides of what is known of the box: the pixels' box less their rounding, or the written
+  // spans' extremes beyond it. Worked out again only when either has grown.
+  void find_sides() {
+    auto low = [](double pixel, double inner) {
+      return std::min(pixel + 5e-7 * std::abs(pixel), inner);
+    };
+    auto high = [](double pixel, double inner) {
+      return std::max(pixel - 5e-7 * std::abs(pixel), inner);
     };
     const Box& b = pixels_;
     const Box& i = inner_;
-    return in(p.x, b.lo.x, b.hi.x, i.lo.x, i.hi.x) && in(p.y, b.lo.y, b.hi.y, i.lo.y, i.hi.y) &&
-           in(p.z, b.lo.z, b.hi.z, i.lo.z, i.hi.z);
+    lo_ = {low(b.lo.x, i.lo.x), low(b.lo.y, i.lo.y), low(b.lo.z, i.lo.z)};
+    hi_ = {high(b.hi.x, i.hi.x), high(b.hi.y, i.hi.y), high(b.hi.z, i.hi.z)};
+    stale_ = false;
+  }
+  // How far the written controls of a span can be from the exact ones, along each axis.
+  static Vec3 rounding(const Vec3 (&controls)[4]) {
+    Vec3 most{0, 0, 0};
+    for (Vec3 c : controls)
+      most = {std::max(most.x, std::abs(c.x)), std::max(most.y, std::abs(c.y)),
+              std::max(most.z, std::abs(c.z))};
+    return 5e-7 * most;
+  }
+  // Whether `p` is inside what is known of the box.
+  bool inside(Vec3 p) const {
+    return p.x >= lo_.x && p.x <= hi_.x && p.y >= lo_.y && p.y <= hi_.y && p.z >= lo_.z &&
+           p.z <= hi_.z;
   }
   Box pixels_, inner_;
+  Vec3 lo_, hi_;  // find_sides()
+  bool stale_ = true;
 };
 
 DuctMark duct_mark(MarkShape shape) {
@@ -209,13 +255,57 @@ double extent_of(const Drawing<P>& drawing) {
              : 0.0;
 }
 
+// Whether every point and weight of an item is finite (and every weight positive).
+template <class P>
+bool finite_item(const Drawing<P>& drawing, const typename Drawing<P>::Item& item) {
+  const auto points = drawing.points(item);
+  bool finite = true;
+  // Every coordinate, without a branch per point: a number is finite when its exponent bits
+  // are not all ones.
+  constexpr std::uint64_t exponent = 0x7FF0000000000000;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double* d = points.data() + points.stride() * k;
+    for (std::size_t c = 0; c < P::dimension; ++c)
+      finite &= (std::bit_cast<std::uint64_t>(d[c]) & exponent) != exponent;
+  }
+  const auto w = drawing.weights(item);
+  return finite &&
+         std::all_of(w.begin(), w.end(), [](double x) { return std::isfinite(x) && x > 0; });
+}
+
+// A Bézier span of a drawing's polynomial cubic: controls k .. k + 3.
+template <class P>
+void load_span(typename Drawing<P>::View points, std::size_t k, Vec3 (&span)[4]) {
+  for (std::size_t c = 0; c < 4; ++c) span[c] = in_space(P(points[k + c]));
+}
+
+// The items of a drawing cut into one part per core (parallel.h) of about as many points each:
+// part t is items [cuts[t], cuts[t + 1]).
+template <class P>
+std::vector<std::size_t> item_parts(const Drawing<P>& drawing) {
+  const auto items = drawing.items();
+  std::size_t total = 0;
+  for (const auto& item : items) total += item.count;
+  const unsigned parts = threads_for(P::dimension * total);
+  std::vector<std::size_t> cuts(parts + 1, items.size());
+  cuts[0] = 0;
+  std::size_t before = 0;  // the points of the items before item n
+  unsigned t = 1;
+  for (std::size_t n = 0; n < items.size() && t < parts; ++n) {
+    while (t < parts && before * parts >= total * t) cuts[t++] = n;
+    before += items[n].count;
+  }
+  return cuts;
+}
+
 }  // namespace
 
 template <class P>
-DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
-                    PixelSink* sink, bool measure) {
+Layout lay_out(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view) {
   using Kind = typename Drawing<P>::Kind;
-  DuctPicture p;
+  Layout laid{{}, PixelRuns(P::dimension)};
+  DuctPicture& p = laid.picture;
+  PixelRuns& pixels = laid.pixels;
   std::string first = printable(fmt::format("IGDS PICTURE FILE {} {}", header.name, header.date));
   p.header.push_back(first);
   if (!header.title.empty()) {
@@ -224,14 +314,47 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
     p.header.push_back(title);
   }
 
-  p.instructions.reserve(drawing.size());
-
-  BoxBuilder box;
-  std::size_t count = 0;  // pixels so far
-  auto add_pixel = [&](Vec3 v) {
-    if (sink) sink->pixel(v);
-    ++count;
+  const auto items = drawing.items();
+  const auto is_bezier = [&](const typename Drawing<P>::Item& item) {
+    return item.kind == Kind::curve && item.degree == 3 && !is_rational(drawing.weights(item));
   };
+  // The two walks over every point (checked and boxed, then the Bézier spans near the box's
+  // sides found) run on every core, each on a part of the items; what they find is the same
+  // however the items are cut.
+  const std::vector<std::size_t> cuts = item_parts(drawing);
+  const auto parts = unsigned(cuts.size() - 1);
+
+  // Every point is checked before anything is laid out (the first item that is not finite is
+  // refused), and the pixels on what is drawn among the drawing's points are boxed (the conic
+  // arcs' and the flattened rational cubics', made below, as they are made).
+  constexpr std::size_t none = std::size_t(-1);
+  std::vector<Box> boxes(parts);
+  std::vector<std::size_t> refused(parts, none);
+  in_parallel(parts, [&](unsigned t) {
+    for (std::size_t n = cuts[t]; n < cuts[t + 1]; ++n) {
+      const auto& item = items[n];
+      if (!finite_item(drawing, item)) {
+        refused[t] = n;
+        return;
+      }
+      const auto points = drawing.points(item);
+      if (item.kind != Kind::curve) {
+        for (P point : points) boxes[t].add(in_space(point));
+      } else if (is_bezier(item)) {
+        for (std::size_t k = 0; k < points.size(); k += 3) boxes[t].add(in_space(points[k]));
+      }
+    }
+  });
+  for (std::size_t n : refused) {
+    if (n == none) continue;
+    DataError e(DataError::Problem::point_not_finite);
+    e.number = n + 1;
+    throw e;
+  }
+  BoxBuilder box;
+  for (const Box& b : boxes) box.add(b);
+
+  p.instructions.reserve(drawing.size());
   bool shapes = false;  // a conic arc's shape factor was given
   bool all_lines = true;
   // Runs of marks (or texts) of one style and shape share an invisible instruction.
@@ -239,9 +362,6 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   Style run_style;
   MarkShape run_shape = MarkShape::square;
 
-  auto bound = [&](Vec3 v) {
-    if (measure) box.add(v);
-  };
   auto start = [&](const Style& style, DuctArc arc, DuctMark mark, DuctPen pen) {
     DuctInstruction in;
     in.colour = std::clamp(style.pen, 1, 999999);
@@ -254,79 +374,65 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   };
 
   std::optional<double> extent;  // of the whole drawing, for the first rational cubic
-  std::vector<Vec3> flat, points;
-  const auto items = drawing.items();
-  for (std::size_t n = 0; n < items.size(); ++n) {
-    const auto& item = items[n];
-    points.clear();
-    for (P point : drawing.points(item)) points.push_back(in_space(point));
+  std::vector<Vec3> flat, controls;
+  for (const auto& item : items) {
+    const auto points = drawing.points(item);
     const auto w = drawing.weights(item);
-    if (measure) {
-      const bool bad =
-          std::any_of(points.begin(), points.end(), [](Vec3 v) { return !finite(v); }) ||
-          std::any_of(w.begin(), w.end(), [](double x) { return !(std::isfinite(x) && x > 0); });
-      if (bad) {
-        DataError e(DataError::Problem::point_not_finite);
-        e.number = n + 1;
-        throw e;
-      }
-    }
+    // The item's points as they are, one run of pixels.
+    auto add_points = [&] { pixels.add(points.data(), points.size(), points.stride()); };
     if (item.kind != Kind::mark && item.kind != Kind::text) run = Run::none;
     switch (item.kind) {
       case Kind::polyline: {
         if (points.empty()) break;
         DuctInstruction* in = start(item.style, DuctArc::line, DuctMark::none, DuctPen::move);
-        for (Vec3 v : points) {
-          add_pixel(v);
-          bound(v);
-        }
-        if (item.closed) add_pixel(points[0]);
+        add_points();
+        if (item.closed) pixels.add(points.data(), 1, points.stride());
         in->pixels = points.size() + (item.closed ? 1 : 0);
         break;
       }
       case Kind::curve: {
-        const bool rational = is_rational(w);
-        if (item.degree == 3 && !rational) {
+        if (item.degree == 3 && !is_rational(w)) {
           DuctInstruction* in = start(item.style, DuctArc::bezier, DuctMark::none, DuctPen::move);
           all_lines = false;
-          for (Vec3 v : points) add_pixel(v);
-          if (measure)
-            for (std::size_t k = 0; k < points.size(); k += 3) box.add(points[k]);
+          add_points();
           in->pixels = points.size();
-        } else if (item.degree == 3) {
+          break;
+        }
+        // The pixels the layout makes, from the controls.
+        controls.clear();
+        for (P point : points) controls.push_back(in_space(point));
+        if (item.degree == 3) {
           // A rational cubic has no DUCT form: straight lines close to it.
           if (!extent) extent = extent_of(drawing);
-          flat.assign(1, points[0]);
-          for (std::size_t k = 0; k + 3 < points.size(); k += 3)
-            flatten_span(3, std::span(points).subspan(k, 4), w.subspan(k, 4), 1e-5 * *extent, flat);
+          flat.assign(1, controls[0]);
+          for (std::size_t k = 0; k + 3 < controls.size(); k += 3)
+            flatten_span(3, std::span(controls).subspan(k, 4), w.subspan(k, 4), 1e-5 * *extent,
+                         flat);
           DuctInstruction* in = start(item.style, DuctArc::line, DuctMark::none, DuctPen::move);
           for (Vec3 v : flat) {
-            add_pixel(v);
-            bound(v);
+            pixels.add_made(v, 0);
+            box.add(v);
           }
           in->pixels = flat.size();
         } else {
           DuctInstruction* in = start(item.style, DuctArc::conic, DuctMark::none, DuctPen::move);
           all_lines = false;
-          add_pixel(points[0]);
-          for (std::size_t k = 0; k + 2 < points.size(); k += 2) {
+          pixels.add_made(controls[0], 0);
+          for (std::size_t k = 0; k + 2 < controls.size(); k += 2) {
             const double ws[3] = {w.empty() ? 1 : w[k], w.empty() ? 1 : w[k + 1],
                                   w.empty() ? 1 : w[k + 2]};
             const ConicShape cs =
-                conic_shape(points[k], points[k + 1], points[k + 2], ws[0], ws[1], ws[2]);
-            if (sink) sink->shape(cs.shape);
+                conic_shape(controls[k], controls[k + 1], controls[k + 2], ws[0], ws[1], ws[2]);
             shapes = true;
-            add_pixel(cs.mid);
-            add_pixel(points[k + 2]);
-            if (measure) box.add_conic(points[k], cs.mid, points[k + 2], cs.shape);
+            pixels.add_made(cs.mid, cs.shape);
+            pixels.add_made(controls[k + 2], 0);
+            box.add_conic(controls[k], cs.mid, controls[k + 2], cs.shape);
           }
-          in->pixels = points.size();
+          in->pixels = controls.size();
         }
         break;
       }
       case Kind::mark: {
-        const Vec3 v = points[0];
-        bound(v);
         if (run == Run::marks && item.style == run_style && item.shape == run_shape) {
           p.instructions.back().pixels += 1;
           p.instructions.back().mark_all = true;
@@ -336,21 +442,19 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
           run_style = item.style;
           run_shape = item.shape;
         }
-        add_pixel(v);
+        add_points();
         break;
       }
       case Kind::text: {
-        const Vec3 v = points[0];
-        bound(v);
         if (run == Run::texts) {
           p.instructions.back().pixels += 1;
         } else {
           start(item.style, DuctArc::line, DuctMark::none, DuctPen::invisible)->pixels = 1;
           run = Run::texts;
         }
-        add_pixel(v);
+        add_points();
         DuctText text;
-        text.pixel = count;
+        text.pixel = pixels.size();
         text.colour = std::clamp(item.style.pen, 1, 999);
         text.units = 1;
         text.angle = 0;
@@ -362,26 +466,37 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
     }
   }
   // The insides of the Bézier spans, against the box of every pixel: few come near its sides.
-  if (measure) {
-    for (const auto& item : items) {
-      if (item.kind != Kind::curve || item.degree != 3 || is_rational(drawing.weights(item)))
-        continue;
-      points.clear();
-      for (P point : drawing.points(item)) points.push_back(in_space(point));
-      for (std::size_t k = 0; k + 3 < points.size(); k += 3)
-        box.add_bezier(std::span(points).subspan(k, 4));
+  // Those that are not held by what is known now are looked at in order, as if every span were.
+  box.settle();
+  std::vector<std::vector<std::pair<std::size_t, std::size_t>>> near(parts);  // item, span
+  in_parallel(parts, [&](unsigned t) {
+    for (std::size_t n = cuts[t]; n < cuts[t + 1]; ++n) {
+      if (!is_bezier(items[n])) continue;
+      const auto points = drawing.points(items[n]);
+      Vec3 span[4];
+      for (std::size_t k = 0; k + 3 < points.size(); k += 3) {
+        load_span<P>(points, k, span);
+        if (!box.held(span)) near[t].emplace_back(n, k);
+      }
+    }
+  });
+  for (const auto& spans : near) {
+    for (const auto& [n, k] : spans) {
+      Vec3 span[4];
+      load_span<P>(drawing.points(items[n]), k, span);
+      box.add_bezier(span);
     }
   }
   if (p.instructions.empty()) {
     start(Style{}, DuctArc::line, DuctMark::none, DuctPen::invisible)->pixels = 1;
-    add_pixel({0, 0, 0});
+    pixels.add_made({0, 0, 0}, 0);
   }
   auto& c = p.counters;
   c[0] = 4 + (p.texts.empty() ? 0 : 2) + (shapes ? 1 : 0);
   c[1] = view.axis;
   c[2] = -1;
   c[3] = std::int64_t(p.instructions.size());
-  c[4] = std::int64_t(count);
+  c[4] = std::int64_t(pixels.size());
   c[5] = all_lines ? -2 : 0;
   c[6] = view.dimensions;
   c[7] = view.projected[0];
@@ -399,11 +514,11 @@ DuctPicture lay_out(const Drawing<P>& drawing, const DuctHeader& header, const D
   } else {
     p.reals = {0, 0, 0, 0, 0, 0, view.height};
   }
-  return p;
+  return laid;
 }
 
-template DuctPicture lay_out(const Drawing2&, const DuctHeader&, const DuctView&, PixelSink*, bool);
-template DuctPicture lay_out(const Drawing3&, const DuctHeader&, const DuctView&, PixelSink*, bool);
+template Layout lay_out(const Drawing2&, const DuctHeader&, const DuctView&);
+template Layout lay_out(const Drawing3&, const DuctHeader&, const DuctView&);
 
 DuctView image_view(Projection projection) {
   DuctView view;
@@ -415,35 +530,20 @@ DuctView image_view(Projection projection) {
 
 namespace {
 
-// The pixels of a picture kept in it.
-class KeptPixels final : public PixelSink {
- public:
-  explicit KeptPixels(DuctPicture& p) : p_(p) {}
-  void shape(double s) override { shapes_.emplace_back(p_.pixel_count(), s); }
-  void pixel(Vec3 v) override { p_.xyz.insert(p_.xyz.end(), {v.x, v.y, v.z}); }
-  // T U of `count` pixels, T the shape factors given.
-  void put_shapes(std::vector<double>& tu, std::size_t count) const {
-    tu.assign(2 * count, 0.0);
-    for (const auto& [pixel, s] : shapes_) tu[2 * pixel] = s;
-  }
-
- private:
-  DuctPicture& p_;
-  std::vector<std::pair<std::size_t, double>> shapes_;  // pixel, shape factor
-};
-
+// A drawing's picture with its pixels.
 template <class P>
 DuctPicture kept(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view) {
-  DuctPicture pixels;
-  // Room for every pixel at once: a picture of millions of them is not copied as it grows.
-  std::size_t count = 0;
-  for (const auto& item : drawing.items()) count += item.count + (item.closed ? 1 : 0);
-  pixels.xyz.reserve(3 * count);
-  KeptPixels out(pixels);
-  DuctPicture laid = lay_out(drawing, header, view, &out, true);
-  laid.xyz = std::move(pixels.xyz);
-  if (laid.has_tu()) out.put_shapes(laid.tu, laid.pixel_count());
-  return laid;
+  Layout laid = lay_out(drawing, header, view);
+  DuctPicture& p = laid.picture;
+  const std::size_t count = laid.pixels.size();
+  const bool tu = p.has_tu();
+  p.xyz.reserve(3 * count);
+  if (tu) p.tu.reserve(2 * count);
+  laid.pixels.each(0, count, [&](const double xyz[3], double shape) {
+    p.xyz.insert(p.xyz.end(), xyz, xyz + 3);
+    if (tu) p.tu.insert(p.tu.end(), {shape, 0.0});
+  });
+  return std::move(p);
 }
 
 }  // namespace

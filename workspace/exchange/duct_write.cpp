@@ -1,7 +1,6 @@
 // A DUCT picture as text, in the fixed formats of the file (docs/exchange.md, "Writing"): a
 // picture kept, or a drawing's picture written as it is laid out.
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "workspace/exchange/duct_parts.h"
@@ -83,8 +82,9 @@ void write_head(const DuctPicture& p, TextOut& out) {
 }
 
 // A pixel line, the bulk of a picture, at w: (3(1X,E14.7)), then 2(1X,F10.4) with T U when `tu`.
-// Where it ends.
-constexpr std::size_t pixel_line_most = 3 * 15 + 2 * 27 + 1;
+// Where it ends; at most pixel_line_most characters, xyz_line_most without T U.
+constexpr std::size_t xyz_line_most = 3 * 15 + 1;
+constexpr std::size_t pixel_line_most = xyz_line_most + 2 * 27;
 char* pixel_line(char* w, const double xyz[3], const double* tu) {
   for (int i = 0; i < 3; ++i) {
     *w++ = ' ';
@@ -145,44 +145,27 @@ void write_tail(const DuctPicture& p, TextOut& out) {
   out.put(tail);
 }
 
-// The pixels of a picture written as the layout hands them on, with T U when the picture has
-// them: gathered in blocks, each block's lines made on two threads.
-class WrittenPixels final : public duct::PixelSink {
- public:
-  WrittenPixels(TextOut& out, bool tu) : out_(out), tu_(tu) { block_.reserve(block); }
-  void shape(double s) override { t_ = s; }
-  void pixel(Vec3 v) override {
-    block_.push_back({v.x, v.y, v.z, t_});
-    t_ = 0;
-    if (block_.size() == block) flush();
-  }
-  void flush() {
-    put_each(out_, block_.size(), pixel_line_most, [&](char* w, std::size_t k) {
-      const double tu[2] = {block_[k][3], 0};
-      return pixel_line(w, block_[k].data(), tu_ ? tu : nullptr);
-    });
-    block_.clear();
-  }
-
- private:
-  // Pixels at a time: about ten megabytes of text.
-  static constexpr std::size_t block = std::size_t{1} << 18;
-  TextOut& out_;
-  bool tu_;
-  double t_ = 0;                              // the shape factor of the next pixel
-  std::vector<std::array<double, 4>> block_;  // x y z T
-};
-
-// A drawing's picture written without being kept: laid out once for the counts, limits and
-// instructions that come first, then walked again for its pixels.
+// A drawing's picture written without being kept: its counts, limits and instructions, then its
+// pixels straight from the drawing's points, lines made on every core (put_each) a group of
+// pixels at a time, as many as a TextOut's room holds.
 template <class P>
 bool write_picture(const Drawing<P>& drawing, const DuctHeader& header, const DuctView& view,
                    TextOut& out) {
-  const DuctPicture p = duct::lay_out(drawing, header, view, nullptr, true);
+  const duct::Layout laid = duct::lay_out(drawing, header, view);
+  const DuctPicture& p = laid.picture;
   write_head(p, out);
-  WrittenPixels pixels(out, p.has_tu());
-  duct::lay_out(drawing, header, view, &pixels, false);
-  pixels.flush();
+  const bool tu = p.has_tu();
+  const std::size_t most = tu ? pixel_line_most : xyz_line_most;
+  const std::size_t group = TextOut::max_room / most;
+  const std::size_t count = laid.pixels.size();
+  put_each(out, (count + group - 1) / group, group * most, [&](char* w, std::size_t k) {
+    laid.pixels.each(k * group, std::min(count, (k + 1) * group),
+                     [&](const double xyz[3], double shape) {
+                       const double t[2] = {shape, 0};
+                       w = pixel_line(w, xyz, tu ? t : nullptr);
+                     });
+    return w;
+  });
   write_tail(p, out);
   return duct_counts_fit(p);
 }

@@ -231,13 +231,14 @@ char* put_e_exponent(char* p, int exponent) {
   return p + 2;
 }
 
-// The digits and exponent of Ew.d by double arithmetic, for the values (nearly all) where that
-// is provably what the exact value rounds to: |value| * 10^(digits - E) is made by one rounded
-// multiplication or division by an exact power of ten, so it is within 2^-52 of itself,
-// relatively; when it is farther than that from a half-integer and from the ends of
-// [10^(digits-1), 10^digits), its nearest integer is the correctly rounded significand.
-// Otherwise (and for digits above 9, subnormals, huge or tiny values) false: the library does it.
-bool fast_exponent(char*& p, double value, int digits) {
+// The significand r (`digits` digits) and exponent e of Ew.d (|value| is 0.r x 10^e) by double
+// arithmetic, for the values (nearly all) where that is provably what the exact value rounds
+// to: |value| * 10^(digits - e) is made by one rounded multiplication or division by an exact
+// power of ten, so it is within 2^-52 of itself, relatively; when it is farther than that from a
+// half-integer and from the ends of [10^(digits-1), 10^digits), its nearest integer is the
+// correctly rounded significand. Otherwise (and for digits above 9, zero, subnormals, huge or
+// tiny values, NaN and the infinities) false: the library does it.
+bool fast_significand(double value, int digits, std::uint64_t& r, int& e) {
   if (digits < 1 || digits > 9) return false;
   const double magnitude = std::abs(value);
   const auto bits = std::bit_cast<std::uint64_t>(magnitude);
@@ -245,7 +246,7 @@ bool fast_exponent(char*& p, double value, int digits) {
   if (binary < -60 || binary > 90) return false;
   // 0.d1d2... x 10^e: e = floor(log10(magnitude)) + 1, estimated within one from the binary
   // exponent (78913 / 2^18 is log10(2) to 1e-6).
-  int e = ((binary * 78913) >> 18) + 1;
+  e = ((binary * 78913) >> 18) + 1;
   const double low = exact_power[digits - 1], high = exact_power[digits];
   double s = scaled_by_ten(magnitude, digits - e);
   if (s >= high)
@@ -254,27 +255,22 @@ bool fast_exponent(char*& p, double value, int digits) {
     s = scaled_by_ten(magnitude, digits - --e);
   const double margin = high * 1e-15;  // above the rounding error of s (2^-52 s)
   if (!(s - low > margin && high - s > margin)) return false;
-  auto r = static_cast<std::uint64_t>(s);  // s > 0: its integer part
+  r = static_cast<std::uint64_t>(s);  // s > 0: its integer part
   const double fraction = s - static_cast<double>(r);
   if (std::abs(fraction - 0.5) < margin) return false;
-  if (fraction > 0.5) ++r;
+  r += fraction > 0.5 ? 1 : 0;  // (no branch: it goes either way at random)
   if (r == static_cast<std::uint64_t>(high)) {
     r = static_cast<std::uint64_t>(low);
     ++e;
   }
-  if (value < 0) *p++ = '-';
-  *p++ = '0';
-  *p++ = '.';
-  p = numbers::put_digits(p, r, digits);
-  p = put_e_exponent(p, e);
   return true;
 }
 
-// Ew.d into `buffer` (at least 40 characters, for digits up to 16), unpadded; returns the length.
+// Ew.d into `buffer` (at least 40 characters, for digits up to 16), unpadded, where
+// fast_significand does not reach; returns the length.
 std::size_t exponent_text(char* buffer, double value, int digits) {
   char* p = buffer;
   if (!std::isfinite(value)) return not_finite_text(buffer, value, 9);
-  if (value != 0 && fast_exponent(p, value, digits)) return static_cast<std::size_t>(p - buffer);
   if (value == 0) {
     *p++ = '0';
     *p++ = '.';
@@ -305,8 +301,27 @@ std::size_t exponent_text(char* buffer, double value, int digits) {
 }  // namespace
 
 char* put_e_whole(char* out, double value, int width, int digits) {
-  char buffer[64];
-  return whole_field(out, buffer, exponent_text(buffer, value, digits), width);
+  std::uint64_t r = 0;
+  int e = 0;
+  if (!fast_significand(value, digits, r, e)) {
+    char buffer[64];
+    return whole_field(out, buffer, exponent_text(buffer, value, digits), width);
+  }
+  // Written where it goes (the bulk of a DUCT picture): [-]0.r then E+ee (|e| < 100 here),
+  // right-justified, or after one blank when wider than the field.
+  const bool negative = value < 0;
+  const int bare = 2 + digits + 4;  // the text without its sign
+  if (width > bare) {
+    // Blanks, then the sign's column: a minus or a blank (no branch: signs come at random).
+    for (int k = bare + 1; k < width; ++k) *out++ = ' ';
+    *out++ = negative ? '-' : ' ';
+  } else {
+    if (negative || bare > width) *out++ = ' ';
+    if (negative) *out++ = '-';
+  }
+  out[0] = '0';
+  out[1] = '.';
+  return put_e_exponent(numbers::put_digits(out + 2, r, digits), e);
 }
 
 std::string input_text(double value, int digits) {
