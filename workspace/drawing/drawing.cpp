@@ -21,15 +21,31 @@ std::size_t Drawing<P>::own_point(P p) {
 }
 
 template <class P>
+std::size_t Drawing<P>::own_points(View points) {
+  const std::size_t at = own_.size(), need = at + n * points.size();
+  // Room grown by half at least: many small items (the pieces of a zoomed grid) must not each
+  // move all the points before them.
+  if (need > own_.capacity()) own_.reserve(std::max(need, own_.capacity() + own_.capacity() / 2));
+  own_.resize(need);
+  double* w = own_.data() + at;
+  for (P p : points) {
+    p.store(w);
+    w += n;
+  }
+  return at;
+}
+
+template <class P>
+void Drawing<P>::reserve(std::size_t items, std::size_t points) {
+  items_.reserve(items_.size() + items);
+  reserve_large(own_, own_.size() + n * points);
+}
+
+template <class P>
 void Drawing<P>::add_polyline(View points, Style style, Identity id, bool closed) {
   Item item{.kind = Kind::polyline, .style = style, .id = id, .closed = closed};
-  item.first = own_.size();
+  item.first = own_points(points);
   item.count = points.size();
-  // Room grown by half at least: many small polylines (the pieces of a zoomed grid) must not
-  // each move all the points before them.
-  const std::size_t need = own_.size() + n * points.size();
-  if (need > own_.capacity()) own_.reserve(std::max(need, own_.capacity() + own_.capacity() / 2));
-  for (P p : points) own_point(p);
   items_.push_back(item);
 }
 
@@ -61,9 +77,8 @@ void Drawing<P>::add_curve(int degree, View controls, std::span<const double> we
     throw std::invalid_argument("drawing: one weight per control point");
   Item item{.kind = Kind::curve, .style = style, .id = id};
   item.degree = static_cast<std::uint8_t>(degree);
-  item.first = own_.size();
+  item.first = own_points(controls);
   item.count = controls.size();
-  for (P p : controls) own_point(p);
   if (!weights.empty()) {
     item.weights = weights_.size();
     weights_.insert(weights_.end(), weights.begin(), weights.end());

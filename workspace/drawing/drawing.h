@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "workspace/kernels/memory.h"
 #include "workspace/kernels/vec3.h"
 
 namespace igds {
@@ -96,6 +97,9 @@ class Drawing {
                  Identity id = {});
   void add_mark(P at, MarkShape shape, double size, Style style = {}, Identity id = {});
   void add_text(P at, std::string_view text, double size = 1, Style style = {}, Identity id = {});
+  // Room for `items` more items and `points` more points of the drawing's own, made at once
+  // before a drawing of millions of points is added item by item.
+  void reserve(std::size_t items, std::size_t points);
 
   std::span<const Item> items() const { return items_; }
   std::size_t size() const { return items_.size(); }
@@ -121,9 +125,10 @@ class Drawing {
     return pool == 0 ? own_.data() : pools_[pool - 1].data;
   }
   std::size_t own_point(P p);
+  std::size_t own_points(View points);  // copies at the end of own_; where they start
 
   std::vector<Item> items_;
-  std::vector<double> own_;  // the points the drawing holds itself
+  std::vector<double, UnwrittenAllocator<double>> own_;  // the points the drawing holds itself
   std::vector<double> weights_;
   std::vector<std::string> texts_;
   std::vector<Pool> pools_;  // shared points, pool k at pools_[k - 1]

@@ -10,27 +10,6 @@
 
 namespace igds {
 
-// An allocator whose resize() leaves new doubles unwritten: an output that overwrites every
-// number is not written twice, and its pages are first touched by the threads that make it.
-template <class T>
-struct UnwrittenAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = UnwrittenAllocator<U>;
-  };
-  UnwrittenAllocator() = default;
-  template <class U>
-  UnwrittenAllocator(const UnwrittenAllocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* p) noexcept {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
 // The numbers of an array.
 using Ravel = std::vector<double, UnwrittenAllocator<double>>;
 

@@ -1,12 +1,35 @@
 // The memory of large blocks (docs/decisions.md, "Memory"): glibc's, with the kernel asked to back
 // a large block with huge pages before it is first written, so that its pages are faulted in
-// 2 MB at a time instead of 4 KB.
+// 2 MB at a time instead of 4 KB, and written once, by what makes its numbers.
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <utility>
 #include <vector>
 
 namespace igds {
+
+// An allocator whose resize() leaves new elements unwritten: an output that overwrites every
+// number is not written twice, and its pages are first touched by the threads that make it.
+template <class T>
+struct UnwrittenAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UnwrittenAllocator<U>;
+  };
+  UnwrittenAllocator() = default;
+  template <class U>
+  UnwrittenAllocator(const UnwrittenAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* p) noexcept {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
 
 // Blocks of at least this many bytes are advised (a huge page is 2 MB).
 inline constexpr std::size_t huge_page_advice_bytes = std::size_t(8) << 20;
