@@ -163,12 +163,13 @@ char* surface_line(char* w, std::size_t id, std::string_view name, const Surface
   return surface_tail(w, f, reals);
 }
 
-// A list of references, a few to a line.
-void references(Instances& s, const std::vector<std::size_t>& ids) {
+// A list of `count` references, id(k) the k-th, eight to a line.
+template <class Id>
+void references(Instances& s, std::size_t count, const Id& id) {
   s.out() += '(';
-  for (std::size_t k = 0; k < ids.size(); ++k) {
+  for (std::size_t k = 0; k < count; ++k) {
     if (k > 0) s.out() += k % 8 == 0 ? ",\n  " : ",";
-    s.ref(ids[k]);
+    s.ref(id(k));
   }
   s.out() += ')';
 }
@@ -412,16 +413,16 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
            [&](char* w, std::size_t k) { return point_line(w, first_point + k, &net.xyz[3 * k]); });
   s.skip(points);
 
-  std::vector<std::size_t> items, faces;  // the surface, or the patches and their faces
+  std::size_t surface = 0, first_face = 0, faces = 0;  // the one surface, or the faces
   const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
     // One instance of millions of references, made like the points, eight references an item.
     const SurfaceOf whole{0, net.rows, 0, net.cols};
-    items.push_back(s.next());
+    surface = s.next();
     s.skip(1);
     std::size_t size = out.size();
     out.resize(size + surface_head_most("SURFACE"));
-    out.resize(std::size_t(surface_head(out.data() + size, items.back(), "SURFACE") - out.data()));
+    out.resize(std::size_t(surface_head(out.data() + size, surface, "SURFACE") - out.data()));
     s.flush();
     const std::size_t per_column = (net.rows + 7) / 8;
     put_each(text, net.cols * per_column, 8 * surface_reference_most, [&](char* w, std::size_t k) {
@@ -445,8 +446,6 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
                           reals);
     });
     s.skip(count);
-    items.resize(count);
-    for (std::size_t k = 0; k < count; ++k) items[k] = first_patch + k;
 
     // The shell: vertices, edges (a curve and an EDGE_CURVE each, along the curves then along
     // the stringers), faces (four ORIENTED_EDGEs, a loop, a bound, the face each), made like
@@ -495,7 +494,8 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     // Patch (i, j): along its first curve (forward), up its last stringer (forward), back along
     // its last curve and down its first stringer (reversed): counterclockwise in (u, v), so the
     // face's normal is the surface's, and each inner edge is used once each way.
-    const std::size_t first_face = s.next();
+    first_face = s.next();
+    faces = count;
     put_each(text, count, 7 * 96 + 64, [&](char* w, std::size_t k) {
       const std::size_t i = k / (ns - 1), j = k % (ns - 1), id = first_face + 7 * k;
       const struct {
@@ -536,8 +536,6 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
       return put_text(w, ",.T.);\n");
     });
     s.skip(7 * count);
-    faces.resize(count);
-    for (std::size_t k = 0; k < count; ++k) faces[k] = first_face + 7 * k + 6;
   }
 
   // The curves and stringers: their instances numbered ahead (the list of items needs their
@@ -571,7 +569,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   out += ',';
   s.ref(x);
   out += ");\n";
-  // A representation of `items` (and the placement) for the product's shape.
+  // A representation of `parts` (and the placement) for the product's shape.
   auto representation = [&](std::string_view type, const std::vector<std::size_t>& parts) {
     const std::size_t id = s.begin();
     out += type;
@@ -593,16 +591,16 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     s.ref(id);
     out += ");\n";
   };
-  if (faces.empty()) {
+  if (faces == 0) {
     const std::size_t set = s.begin();
     out += "GEOMETRIC_SET('surface',";
-    references(s, items);
+    references(s, 1, [&](std::size_t) { return surface; });
     out += ");\n";
     representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {set});
   } else {
     const std::size_t shell = s.begin();
     out += "OPEN_SHELL('surface',";
-    references(s, faces);
+    references(s, faces, [&](std::size_t k) { return first_face + 7 * k + 6; });
     out += ");\n";
     const std::size_t model = s.begin();
     out += "SHELL_BASED_SURFACE_MODEL('surface',(";
@@ -614,7 +612,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   if (!curve_items.empty()) {
     const std::size_t curve_set = s.begin();
     out += "GEOMETRIC_CURVE_SET('input curves',";
-    references(s, curve_items);
+    references(s, curve_items.size(), [&](std::size_t k) { return curve_items[k]; });
     out += ");\n";
     representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {curve_set});
   }
