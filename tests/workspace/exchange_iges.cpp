@@ -444,6 +444,62 @@ TEST_CASE("STEP: every reference defined once, numbers exact, one part") {
         std::string::npos);
 }
 
+TEST_CASE("STEP: a surface large enough to be made on the cores, its references and curves") {
+  // 447 x 447 references in the surface and 300 curves of 152 controls: each far more text than
+  // put_each (text_out.h) makes on one thread. Their text, made here one after the other.
+  const TestSurface t = test_surface(150, 150, 0, 0);
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  const std::string text = write_step(t.input, t.surface.patches, header);
+  auto ref = [](std::size_t id) { return "#" + std::to_string(id); };
+  auto real_text = [](double v) {
+    char buffer[32];
+    return std::string(buffer, format_real(buffer, v));
+  };
+  const std::size_t first_point =
+      std::stoul(text.substr(text.find("\n#", text.find("REPRESENTATION_CONTEXT")) + 2));
+  std::size_t id = first_point + net.rows * net.cols;
+  std::string expected = ref(id++) + "=B_SPLINE_SURFACE_WITH_KNOTS('SURFACE',3,3,(";
+  for (std::size_t c = 0; c < net.cols; ++c) {
+    expected += c > 0 ? ",\n  (" : "(";
+    for (std::size_t r = 0; r < net.rows; ++r)
+      expected += (r > 0 ? "," : "") + ref(first_point + r * net.cols + c);
+    expected += ')';
+  }
+  expected += "),.UNSPECIFIED.,.F.,.F.,.F.,";
+  std::string multiplicities = "(4", knots = "(0.";
+  for (int k = 1; k < 149; ++k) multiplicities += ",3", knots += "," + real_text(k);
+  multiplicities += ",4)", knots += ",149.)";
+  expected += multiplicities + ',' + multiplicities + ',' + knots + ',' + knots;
+  expected += ",.UNSPECIFIED.);\n";
+  for (std::size_t k = 0; k < 300; ++k) {
+    const auto c = k < 150 ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - 150);
+    REQUIRE(c);
+    REQUIRE(c->controls.size() == 152);
+    const std::size_t first = id;
+    for (Vec3 v : c->controls)
+      expected += ref(id++) + "=CARTESIAN_POINT('',(" + real_text(v.x) + ',' + real_text(v.y) +
+                  ',' + real_text(v.z) + "));\n";
+    expected +=
+        ref(id++) + "=B_SPLINE_CURVE_WITH_KNOTS('" +
+        (k < 150 ? "CURVE " + std::to_string(k + 1) : "STRINGER " + std::to_string(k - 150 + 1)) +
+        "',3,(";
+    for (std::size_t p = first; p < first + 152; ++p)
+      expected += (p == first ? "" : (p - first) % 8 == 0 ? ",\n  " : ",") + ref(p);
+    expected += "),.UNSPECIFIED.,.F.,.F.,(";
+    for (std::size_t m = 0; m < c->knots.size(); ++m)
+      expected += (m > 0 ? "," : "") + std::to_string(c->multiplicities[m]);
+    expected += "),(";
+    for (std::size_t m = 0; m < c->knots.size(); ++m)
+      expected += (m > 0 ? "," : "") + real_text(c->knots[m]);
+    expected += "),.UNSPECIFIED.);\n";
+  }
+  const std::size_t at = text.find(ref(first_point + net.rows * net.cols) + "=");
+  REQUIRE(at != std::string::npos);
+  CHECK(text.compare(at, expected.size(), expected) == 0);
+  const std::string origin = ref(id) + "=CARTESIAN_POINT('',(0.,0.,0.));\n";
+  CHECK(text.compare(at + expected.size(), origin.size(), origin) == 0);
+}
+
 TEST_CASE("golden: the IGES and STEP files of a small surface") {
   const TestSurface t = golden_surface();
   check_golden("surface_5x4.igs", write_iges(t.input, t.surface.patches, header));

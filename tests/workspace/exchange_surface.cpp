@@ -143,6 +143,57 @@ TEST_CASE("the Bézier net holds the input points bit-exactly and evaluates to I
   CHECK(worst <= 1e-12 * largest_coordinate(t.surface.intpn));
 }
 
+TEST_CASE(
+    "the Bézier net of a surface large enough to be made on the cores: every patch's controls") {
+  // 298 x 298 controls: more numbers than parallel.h's threads_for makes on one thread.
+  const TestSurface t = test_surface(100, 100, 0, 0);
+  const BezierNet net = surface_net(t.input, t.surface.patches);
+  REQUIRE(net.xyz.size() >= (std::size_t(1) << 18));
+  // Each patch's Bézier controls from its Hermite form (P, P + D/3, P - D/3, P along u, then
+  // along v), where its neighbours' (the same bits) did not take their place.
+  std::size_t wrong = 0;
+  double largest = 0;
+  for (std::size_t i = 0; i < 99; ++i)
+    for (std::size_t j = 0; j < 99; ++j)
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double* m = t.surface.patches.data() + (i * 99 + j) * 48 + 16 * k;
+        for (std::size_t a = 0; a < 4; ++a) {
+          const double p0 = a == 0   ? m[0]
+                            : a == 1 ? m[0] + m[8] / 3
+                            : a == 2 ? m[4] - m[12] / 3
+                                     : m[4];
+          auto at = [&](std::size_t c) {
+            return a == 0   ? m[c]
+                   : a == 1 ? m[c] + m[8 + c] / 3
+                   : a == 2 ? m[4 + c] - m[12 + c] / 3
+                            : m[4 + c];
+          };
+          const double b[4] = {p0, p0 + at(2) / 3, at(1) - at(3) / 3, at(1)};
+          for (std::size_t v = 0; v < 4; ++v) {
+            wrong += net.xyz[3 * ((3 * i + v) * net.cols + 3 * j + a) + k] != b[v];
+            largest = std::max(largest, std::abs(b[v]));
+          }
+        }
+      }
+  CHECK(wrong == 0);
+  CHECK(net.largest == largest);
+  // The curves' and stringers' B-splines, made on the cores, are those made one by one.
+  const std::vector<std::optional<CubicBspline>> splines = input_bsplines(net);
+  REQUIRE(splines.size() == 200);
+  for (std::size_t k = 0; k < 200; ++k) {
+    const auto c = k < 100 ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - 100);
+    REQUIRE(c);
+    REQUIRE(splines[k]);
+    wrong += splines[k]->controls != c->controls || splines[k]->knots != c->knots ||
+             splines[k]->multiplicities != c->multiplicities;
+  }
+  CHECK(wrong == 0);
+  // A control that is not finite makes the largest magnitude infinite.
+  Array patches = t.surface.patches;
+  patches.ravel[48 * 5000 + 20] = NAN;
+  CHECK(std::isinf(surface_net(t.input, patches).largest));
+}
+
 TEST_CASE("the drawing's input curves are the net's rows, bit for bit") {
   const TestSurface t = golden_surface();
   const BezierNet net = surface_net(t.input, t.surface.patches);

@@ -10,7 +10,6 @@
 #include "workspace/exchange/dates.h"
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
-#include "workspace/kernels/interrupt.h"
 #include "workspace/numbers/decimal.h"
 
 namespace igds {
@@ -38,10 +37,6 @@ class Instances {
     out_ += '#';
     out_.append(buffer,
                 std::size_t(std::to_chars(buffer, buffer + sizeof buffer, id).ptr - buffer));
-  }
-  void integer(long long v) {
-    char buffer[24];
-    out_.append(buffer, std::size_t(std::to_chars(buffer, buffer + sizeof buffer, v).ptr - buffer));
   }
   void real(double v) {
     char buffer[32];
@@ -87,37 +82,52 @@ char* point_line(char* w, std::size_t id, const double xyz[3]) {
   return w;
 }
 
+char* put_ref(char* w, std::size_t id) {
+  *w++ = '#';
+  return std::to_chars(w, w + 24, id).ptr;
+}
+char* put_text(char* w, std::string_view text) {
+  return std::copy(text.begin(), text.end(), w);
+}
+
 // Instance #id = B_SPLINE_SURFACE_WITH_KNOTS('name',...) of the net's rows [row0, row0 + rows)
-// and columns [col0, col0 + cols) at w, the control point of row r and column c being instance
+// and columns [col0, col0 + cols), the control point of row r and column c being instance
 // first_point + r * net_cols + c, listed by u (columns) outside, v (rows) inside; the knots from
-// `reals`. Returns where it ends (at most surface_most bytes after w).
+// `reals`. Made in three parts: the head, the references, the rest.
 struct SurfaceOf {
   std::size_t row0, rows, col0, cols;
 };
-std::size_t surface_most(std::string_view name, const SurfaceOf& f) {
-  const std::size_t knots = std::max(f.rows, f.cols) / 3 + 1;
-  return 128 + name.size() + f.cols * (8 + 22 * f.rows) + 4 * 34 * knots;
+constexpr std::string_view surface_head_text = "=B_SPLINE_SURFACE_WITH_KNOTS('";
+std::size_t surface_head_most(std::string_view name) {
+  return 24 + surface_head_text.size() + name.size() + 8;
 }
-char* surface_line(char* w, std::size_t id, std::string_view name, const SurfaceOf& f,
-                   std::size_t first_point, std::size_t net_cols, const IntegerReals& reals) {
-  auto put = [&](std::string_view text) { w = std::copy(text.begin(), text.end(), w); };
-  auto ref = [&](std::size_t n) {
-    *w++ = '#';
-    w = std::to_chars(w, w + 24, n).ptr;
-  };
-  ref(id);
-  put("=B_SPLINE_SURFACE_WITH_KNOTS('");
-  put(name);
-  put("',3,3,(");
-  for (std::size_t c = f.col0; c < f.col0 + f.cols; ++c) {
-    put(c > f.col0 ? ",\n  (" : "(");
-    for (std::size_t r = f.row0; r < f.row0 + f.rows; ++r) {
-      if (r > f.row0) *w++ = ',';
-      ref(first_point + r * net_cols + c);
-    }
-    *w++ = ')';
+char* surface_head(char* w, std::size_t id, std::string_view name) {
+  w = put_ref(w, id);
+  w = put_text(w, surface_head_text);
+  w = put_text(w, name);
+  return put_text(w, "',3,3,(");
+}
+// References [r0, r1) of column c (counted from col0): the column's opening before its first, its
+// closing after its last.
+constexpr std::size_t surface_reference_most = 5 + 1 + 21;
+char* surface_references(char* w, const SurfaceOf& f, std::size_t c, std::size_t r0, std::size_t r1,
+                         std::size_t first_point, std::size_t net_cols) {
+  for (std::size_t r = r0; r < r1; ++r) {
+    if (r > 0)
+      *w++ = ',';
+    else
+      w = put_text(w, c > 0 ? ",\n  (" : "(");
+    w = put_ref(w, first_point + (f.row0 + r) * net_cols + f.col0 + c);
   }
-  put("),.UNSPECIFIED.,.F.,.F.,.F.,");
+  if (r1 == f.rows) *w++ = ')';
+  return w;
+}
+std::size_t surface_tail_most(const SurfaceOf& f) {
+  const std::size_t knots = std::max(f.rows, f.cols) / 3 + 1;
+  return 64 + 4 * 34 * knots;
+}
+char* surface_tail(char* w, const SurfaceOf& f, const IntegerReals& reals) {
+  w = put_text(w, "),.UNSPECIFIED.,.F.,.F.,.F.,");
   const std::size_t u0 = f.col0 / 3, u1 = u0 + (f.cols - 1) / 3, v0 = f.row0 / 3,
                     v1 = v0 + (f.rows - 1) / 3;
   // Knot multiplicities (4, 3, ..., 3, 4) or values of Bézier spans on [first, last], one a unit.
@@ -128,7 +138,7 @@ char* surface_line(char* w, std::size_t id, std::string_view name, const Surface
       if (multiplicities)
         *w++ = k == first || k == last ? '4' : '3';
       else
-        w = std::copy(reals[k].begin(), reals[k].end(), w);
+        w = put_text(w, reals[k]);
     }
     *w++ = ')';
   };
@@ -139,61 +149,120 @@ char* surface_line(char* w, std::size_t id, std::string_view name, const Surface
   knots(u0, u1, false);
   *w++ = ',';
   knots(v0, v1, false);
-  put(",.UNSPECIFIED.);\n");
-  return w;
+  return put_text(w, ",.UNSPECIFIED.);\n");
+}
+// The whole instance at w, in at most surface_most bytes.
+std::size_t surface_most(std::string_view name, const SurfaceOf& f) {
+  return surface_head_most(name) + f.rows * f.cols * surface_reference_most + surface_tail_most(f);
+}
+char* surface_line(char* w, std::size_t id, std::string_view name, const SurfaceOf& f,
+                   std::size_t first_point, std::size_t net_cols, const IntegerReals& reals) {
+  w = surface_head(w, id, name);
+  for (std::size_t c = 0; c < f.cols; ++c)
+    w = surface_references(w, f, c, 0, f.rows, first_point, net_cols);
+  return surface_tail(w, f, reals);
 }
 
-// A list of references, a few to a line.
-void references(Instances& s, const std::vector<std::size_t>& ids) {
+// A list of `count` references, id(k) the k-th, eight to a line.
+template <class Id>
+void references(Instances& s, std::size_t count, const Id& id) {
   s.out() += '(';
-  for (std::size_t k = 0; k < ids.size(); ++k) {
+  for (std::size_t k = 0; k < count; ++k) {
     if (k > 0) s.out() += k % 8 == 0 ? ",\n  " : ",";
-    s.ref(ids[k]);
+    s.ref(id(k));
   }
   s.out() += ')';
 }
 
-// A curve's control points, then the curve: instances numbered on from s.next().
-void curve_instances(Instances& s, const std::string& name, const CubicBspline& c) {
-  std::string& out = s.out();
-  std::vector<std::size_t> points;
-  for (Vec3 v : c.controls) {
-    points.push_back(s.begin());
-    out += "CARTESIAN_POINT('',(";
-    s.real(v.x);
-    out += ',';
-    s.real(v.y);
-    out += ',';
-    s.real(v.z);
-    out += "));\n";
+// The input curves' and stringers' instances as the items of one put_each, curve after curve:
+// a curve's control points (CARTESIAN_POINT, an item each), then its B_SPLINE_CURVE_WITH_KNOTS in
+// pieces of a bounded size: the head, its references eight at a time (a line of the file each),
+// its multiplicities eight at a time, its knots four at a time.
+class CurveItems {
+ public:
+  // A curve: its spline, its name (CURVE or STRINGER, and its number from 1), the instance of its
+  // first control point (the curve's own follows its control points).
+  struct Curve {
+    const CubicBspline* spline;
+    bool stringer;
+    std::size_t number, first_id;
+  };
+  explicit CurveItems(std::vector<Curve> curves) : curves_(std::move(curves)) {
+    first_item_.reserve(curves_.size() + 1);
+    std::size_t items = 0;
+    for (const Curve& c : curves_) {
+      first_item_.push_back(items);
+      const std::size_t n = c.spline->controls.size(), k = c.spline->knots.size();
+      items +=
+          n + 1 + groups(n, references_per) + groups(k, multiplicities_per) + groups(k, knots_per);
+    }
+    first_item_.push_back(items);
   }
-  s.begin();
-  out += "B_SPLINE_CURVE_WITH_KNOTS(";
-  s.string(name);
-  out += ",3,";
-  references(s, points);
-  out += ",.UNSPECIFIED.,";
-  out += c.controls.front() == c.controls.back() ? ".T." : ".F.";
-  out += ",.F.,(";
-  for (std::size_t k = 0; k < c.multiplicities.size(); ++k) {
-    if (k > 0) out += ',';
-    s.integer(c.multiplicities[k]);
+  std::size_t count() const { return first_item_.back(); }
+  static constexpr std::size_t references_per = 8, multiplicities_per = 8, knots_per = 4;
+  static constexpr std::string_view tail_text = "),.UNSPECIFIED.);\n";
+  // The most bytes of an item: the largest of a point, the head, eight references and what
+  // follows them, eight multiplicities, four knots and the end.
+  static constexpr std::size_t most =
+      std::max({point_line_most, std::size_t{24 + 40 + 40}, 4 + references_per * 22 + 25,
+                multiplicities_per * 12 + 3, knots_per * 33 + tail_text.size()});
+  // Item k at w; returns where it ends.
+  char* item(char* w, std::size_t k) const {
+    const std::size_t q = std::size_t(std::upper_bound(first_item_.begin(), first_item_.end(), k) -
+                                      first_item_.begin() - 1);
+    const Curve& c = curves_[q];
+    const CubicBspline& b = *c.spline;
+    const std::size_t n = b.controls.size(), knots = b.knots.size();
+    std::size_t e = k - first_item_[q];
+    if (e < n) {
+      const Vec3 v = b.controls[e];
+      const double xyz[3] = {v.x, v.y, v.z};
+      return point_line(w, c.first_id + e, xyz);
+    }
+    e -= n;
+    if (e == 0) {
+      w = put_ref(w, c.first_id + n);
+      w = put_text(w, c.stringer ? "=B_SPLINE_CURVE_WITH_KNOTS('STRINGER "
+                                 : "=B_SPLINE_CURVE_WITH_KNOTS('CURVE ");
+      w = std::to_chars(w, w + 24, c.number).ptr;
+      return put_text(w, "',3,(");
+    }
+    e -= 1;
+    if (e < groups(n, references_per)) {
+      const std::size_t first = e * references_per, last = std::min(n, first + references_per);
+      for (std::size_t t = first; t < last; ++t) {
+        if (t > 0) w = put_text(w, t % 8 == 0 ? ",\n  " : ",");
+        w = put_ref(w, c.first_id + t);
+      }
+      if (last < n) return w;
+      w = put_text(w, "),.UNSPECIFIED.,");
+      w = put_text(w, b.controls.front() == b.controls.back() ? ".T." : ".F.");
+      return put_text(w, ",.F.,(");
+    }
+    e -= groups(n, references_per);
+    if (e < groups(knots, multiplicities_per)) {
+      const std::size_t first = e * multiplicities_per,
+                        last = std::min(knots, first + multiplicities_per);
+      for (std::size_t t = first; t < last; ++t) {
+        if (t > 0) *w++ = ',';
+        w = std::to_chars(w, w + 12, b.multiplicities[t]).ptr;
+      }
+      return last < knots ? w : put_text(w, "),(");
+    }
+    e -= groups(knots, multiplicities_per);
+    const std::size_t first = e * knots_per, last = std::min(knots, first + knots_per);
+    for (std::size_t t = first; t < last; ++t) {
+      if (t > 0) *w++ = ',';
+      w += format_real(w, b.knots[t]);
+    }
+    return last < knots ? w : put_text(w, tail_text);
   }
-  out += "),(";
-  for (std::size_t k = 0; k < c.knots.size(); ++k) {
-    if (k > 0) out += ',';
-    s.real(c.knots[k]);
-  }
-  out += "),.UNSPECIFIED.);\n";
-}
 
-char* put_ref(char* w, std::size_t id) {
-  *w++ = '#';
-  return std::to_chars(w, w + 24, id).ptr;
-}
-char* put_text(char* w, std::string_view text) {
-  return std::copy(text.begin(), text.end(), w);
-}
+ private:
+  static std::size_t groups(std::size_t n, std::size_t per) { return (n + per - 1) / per; }
+  std::vector<Curve> curves_;
+  std::vector<std::size_t> first_item_;  // of each curve, and the count after the last
+};
 
 }  // namespace
 
@@ -201,11 +270,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
                 TextOut& text, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
-  double largest = 0;
-  for (double v : net.xyz) {
-    if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
-    largest = std::max(largest, std::abs(v));
-  }
+  if (!std::isfinite(net.largest)) throw DataError(DataError::Problem::patch_not_finite);
 
   std::string out;
   out.reserve(std::size_t{1} << 17);
@@ -323,7 +388,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   if (length_unit != 0) {
     uncertainty = s.begin();
     out += "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(";
-    s.real(cad_resolution(largest));
+    s.real(cad_resolution(net.largest));
     out += "),";
     s.ref(length_unit);
     out += ",'distance_accuracy_value','');\n";
@@ -348,17 +413,25 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
            [&](char* w, std::size_t k) { return point_line(w, first_point + k, &net.xyz[3 * k]); });
   s.skip(points);
 
-  std::vector<std::size_t> items, faces;  // the surface, or the patches and their faces
+  std::size_t surface = 0, first_face = 0, faces = 0;  // the one surface, or the faces
   const IntegerReals reals(std::max(nc, ns));
   if (form == SurfaceForm::one) {
+    // One instance of millions of references, made like the points, eight references an item.
     const SurfaceOf whole{0, net.rows, 0, net.cols};
-    const std::size_t size = out.size();
-    out.resize(size + surface_most("SURFACE", whole));
-    items.push_back(s.next());
+    surface = s.next();
     s.skip(1);
-    out.resize(std::size_t(surface_line(out.data() + size, items.back(), "SURFACE", whole,
-                                        first_point, net.cols, reals) -
-                           out.data()));
+    std::size_t size = out.size();
+    out.resize(size + surface_head_most("SURFACE"));
+    out.resize(std::size_t(surface_head(out.data() + size, surface, "SURFACE") - out.data()));
+    s.flush();
+    const std::size_t per_column = (net.rows + 7) / 8;
+    put_each(text, net.cols * per_column, 8 * surface_reference_most, [&](char* w, std::size_t k) {
+      const std::size_t c = k / per_column, r = 8 * (k % per_column);
+      return surface_references(w, whole, c, r, std::min(net.rows, r + 8), first_point, net.cols);
+    });
+    size = out.size();
+    out.resize(size + surface_tail_most(whole));
+    out.resize(std::size_t(surface_tail(out.data() + size, whole, reals) - out.data()));
   } else {
     // One instance per patch, made like the points.
     const std::size_t first_patch = s.next(), count = (nc - 1) * (ns - 1);
@@ -373,8 +446,6 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
                           reals);
     });
     s.skip(count);
-    items.resize(count);
-    for (std::size_t k = 0; k < count; ++k) items[k] = first_patch + k;
 
     // The shell: vertices, edges (a curve and an EDGE_CURVE each, along the curves then along
     // the stringers), faces (four ORIENTED_EDGEs, a loop, a bound, the face each), made like
@@ -423,7 +494,8 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     // Patch (i, j): along its first curve (forward), up its last stringer (forward), back along
     // its last curve and down its first stringer (reversed): counterclockwise in (u, v), so the
     // face's normal is the surface's, and each inner edge is used once each way.
-    const std::size_t first_face = s.next();
+    first_face = s.next();
+    faces = count;
     put_each(text, count, 7 * 96 + 64, [&](char* w, std::size_t k) {
       const std::size_t i = k / (ns - 1), j = k % (ns - 1), id = first_face + 7 * k;
       const struct {
@@ -464,38 +536,24 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
       return put_text(w, ",.T.);\n");
     });
     s.skip(7 * count);
-    faces.resize(count);
-    for (std::size_t k = 0; k < count; ++k) faces[k] = first_face + 7 * k + 6;
   }
 
   // The curves and stringers: their instances numbered ahead (the list of items needs their
   // numbers first), then made in order.
-  std::vector<std::optional<CubicBspline>> splines(nc + ns);
-  for (std::size_t k = 0; k < nc + ns; ++k)
-    splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
-  std::vector<std::size_t> curves, first_ids;  // the splines kept, their first instances
+  const std::vector<std::optional<CubicBspline>> splines = input_bsplines(net);
+  std::vector<CurveItems::Curve> curves;
   std::vector<std::size_t> curve_items;
   for (std::size_t k = 0; k < nc + ns; ++k) {
     if (!splines[k]) continue;
-    curves.push_back(k);
-    first_ids.push_back(s.next());
+    curves.push_back({&*splines[k], k >= nc, k < nc ? k + 1 : k - nc + 1, s.next()});
     s.skip(splines[k]->controls.size());
     curve_items.push_back(s.next());
     s.skip(1);
   }
   s.flush();
-  std::string curve_text;
-  for (std::size_t k = 0; k < curves.size(); ++k) {
-    check_interrupt();
-    const std::size_t index = curves[k];
-    Instances c(curve_text, &text);
-    c.skip(first_ids[k] - 1);
-    curve_instances(c,
-                    index < nc ? "CURVE " + std::to_string(index + 1)
-                               : "STRINGER " + std::to_string(index - nc + 1),
-                    *splines[index]);
-    c.flush();
-  }
+  const CurveItems made(std::move(curves));
+  put_each(text, made.count(), CurveItems::most,
+           [&](char* w, std::size_t k) { return made.item(w, k); });
 
   const std::size_t origin = s.begin();
   out += "CARTESIAN_POINT('',(0.,0.,0.));\n";
@@ -511,7 +569,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   out += ',';
   s.ref(x);
   out += ");\n";
-  // A representation of `items` (and the placement) for the product's shape.
+  // A representation of `parts` (and the placement) for the product's shape.
   auto representation = [&](std::string_view type, const std::vector<std::size_t>& parts) {
     const std::size_t id = s.begin();
     out += type;
@@ -533,16 +591,16 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
     s.ref(id);
     out += ");\n";
   };
-  if (faces.empty()) {
+  if (faces == 0) {
     const std::size_t set = s.begin();
     out += "GEOMETRIC_SET('surface',";
-    references(s, items);
+    references(s, 1, [&](std::size_t) { return surface; });
     out += ");\n";
     representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {set});
   } else {
     const std::size_t shell = s.begin();
     out += "OPEN_SHELL('surface',";
-    references(s, faces);
+    references(s, faces, [&](std::size_t k) { return first_face + 7 * k + 6; });
     out += ");\n";
     const std::size_t model = s.begin();
     out += "SHELL_BASED_SURFACE_MODEL('surface',(";
@@ -554,7 +612,7 @@ void write_step(const SurfaceInput& input, const Array& patches, const CadHeader
   if (!curve_items.empty()) {
     const std::size_t curve_set = s.begin();
     out += "GEOMETRIC_CURVE_SET('input curves',";
-    references(s, curve_items);
+    references(s, curve_items.size(), [&](std::size_t k) { return curve_items[k]; });
     out += ");\n";
     representation("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION", {curve_set});
   }

@@ -1,11 +1,14 @@
 #include "workspace/exchange/surface_curves.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
+#include "workspace/kernels/memory.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/kernels/spline.h"
 
 namespace igds {
@@ -178,31 +181,47 @@ BezierNet surface_net(const SurfaceInput& in, const Array& patches) {
   BezierNet net;
   net.rows = 3 * (nc - 1) + 1;
   net.cols = 3 * (ns - 1) + 1;
-  net.xyz.assign(3 * net.rows * net.cols, 0.0);
-  for (std::size_t i = 0; i + 1 < nc; ++i) {
-    for (std::size_t j = 0; j + 1 < ns; ++j) {
-      const double* m = patches.data() + (i * (ns - 1) + j) * 48;
-      for (int k = 0; k < 3; ++k) {
-        const double* mk = m + 16 * k;
-        // Hermite to Bézier along u (rows of M: P(0,.), P(1,.), Pu(0,.), Pu(1,.)), then along v:
-        // controls P, P + D/3, P - D/3, P with the chord-scaled derivatives D (docs/exchange.md).
-        double g[4][4];
-        for (int c = 0; c < 4; ++c) {
-          g[0][c] = mk[c];
-          g[1][c] = mk[c] + mk[8 + c] / 3;
-          g[2][c] = mk[4 + c] - mk[12 + c] / 3;
-          g[3][c] = mk[4 + c];
-        }
-        for (int a = 0; a < 4; ++a) {
-          const double b[4] = {g[a][0], g[a][0] + g[a][2] / 3, g[a][1] - g[a][3] / 3, g[a][1]};
-          for (int v = 0; v < 4; ++v) {
-            const std::size_t row = 3 * i + v, col = 3 * j + a;
-            net.xyz[3 * (row * net.cols + col) + k] = b[v];
+  reserve_large(net.xyz, 3 * net.rows * net.cols);
+  net.xyz.resize(3 * net.rows * net.cols);
+  // Patch (i, j) makes rows 3i .. 3i + 2 and columns 3j .. 3j + 2 of its controls, and its last
+  // row or column too when it is the last patch that has it: each control is made once, by the
+  // last patch in row order that holds it, and patch rows can be made on threads of their own.
+  std::vector<double> row_largest(nc - 1);
+  parallel_for(nc - 1, threads_for(net.xyz.size()), [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) {
+      const int vs = i + 2 == nc ? 4 : 3;
+      double largest = 0;
+      for (std::size_t j = 0; j + 1 < ns; ++j) {
+        const int as = j + 2 == ns ? 4 : 3;
+        const double* m = patches.data() + (i * (ns - 1) + j) * 48;
+        for (int k = 0; k < 3; ++k) {
+          const double* mk = m + 16 * k;
+          // Hermite to Bézier along u (rows of M: P(0,.), P(1,.), Pu(0,.), Pu(1,.)), then along
+          // v: controls P, P + D/3, P - D/3, P with the chord-scaled derivatives D
+          // (docs/exchange.md).
+          double g[4][4];
+          for (int c = 0; c < 4; ++c) {
+            g[0][c] = mk[c];
+            g[1][c] = mk[c] + mk[8 + c] / 3;
+            g[2][c] = mk[4 + c] - mk[12 + c] / 3;
+            g[3][c] = mk[4 + c];
+          }
+          for (int a = 0; a < as; ++a) {
+            const double b[4] = {g[a][0], g[a][0] + g[a][2] / 3, g[a][1] - g[a][3] / 3, g[a][1]};
+            for (int v = 0; v < vs; ++v) {
+              const std::size_t row = 3 * i + std::size_t(v), col = 3 * j + std::size_t(a);
+              net.xyz[3 * (row * net.cols + col) + std::size_t(k)] = b[v];
+              // A value that is not finite (NaN too) counts as infinite.
+              const double magnitude = std::abs(b[v]) <= DBL_MAX ? std::abs(b[v]) : HUGE_VAL;
+              largest = std::max(largest, magnitude);
+            }
           }
         }
       }
+      row_largest[i] = largest;
     }
-  }
+  });
+  net.largest = *std::max_element(row_largest.begin(), row_largest.end());
   return net;
 }
 
@@ -222,11 +241,15 @@ std::vector<double> input_stringer_controls(const BezierNet& net, std::size_t j)
 
 namespace {
 
-std::optional<CubicBspline> bspline_of(const std::vector<double>& controls) {
+// The B-spline of the Bézier controls first[0], first[stride], ... (count of them, x y z each),
+// read where they are in the net.
+std::optional<CubicBspline> bspline_of(const double* first, std::size_t stride, std::size_t count) {
   std::vector<Vec3> b;  // the Bézier controls of the spans kept
   std::vector<double> t;
-  const std::size_t spans = (controls.size() / 3 - 1) / 3;
-  auto point = [&](std::size_t k) { return Vec3::load(&controls[3 * k]); };
+  const std::size_t spans = (count - 1) / 3;
+  b.reserve(count);
+  t.reserve(spans + 1);
+  auto point = [&](std::size_t k) { return Vec3::load(first + k * stride); };
   for (std::size_t s = 0; s < spans; ++s) {
     const double length = chord_length(point(3 * s), point(3 * s + 3));
     if (!(length > 0)) continue;
@@ -257,11 +280,26 @@ std::optional<CubicBspline> bspline_of(const std::vector<double>& controls) {
 }  // namespace
 
 std::optional<CubicBspline> input_curve_bspline(const BezierNet& net, std::size_t i) {
-  return bspline_of(input_curve_controls(net, i));
+  return bspline_of(&net.xyz[3 * (3 * i) * net.cols], 3, net.cols);
 }
 
 std::optional<CubicBspline> input_stringer_bspline(const BezierNet& net, std::size_t j) {
-  return bspline_of(input_stringer_controls(net, j));
+  return bspline_of(&net.xyz[3 * (3 * j)], 3 * net.cols, net.rows);
+}
+
+std::vector<std::optional<CubicBspline>> input_bsplines(const BezierNet& net) {
+  const std::size_t nc = (net.rows - 1) / 3 + 1, ns = (net.cols - 1) / 3 + 1;
+  std::vector<std::optional<CubicBspline>> out(nc + ns);
+  // The curves, then the stringers, each cut between the threads (a stringer's controls are far
+  // apart in the net, a curve's side by side).
+  const unsigned threads = threads_for(net.xyz.size());
+  parallel_for(nc, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t i = first; i < last; ++i) out[i] = input_curve_bspline(net, i);
+  });
+  parallel_for(ns, threads, [&](std::size_t first, std::size_t last) {
+    for (std::size_t j = first; j < last; ++j) out[nc + j] = input_stringer_bspline(net, j);
+  });
+  return out;
 }
 
 }  // namespace igds

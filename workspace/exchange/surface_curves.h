@@ -42,6 +42,7 @@ Drawing3 surface_curves(const SurfaceInput& input, const Array& patches, const A
 struct BezierNet {
   std::size_t rows = 0, cols = 0;
   std::vector<double> xyz;  // rows x cols x 3
+  double largest = 0;       // the largest magnitude in xyz; infinite when one is not finite
   Vec3 at(std::size_t row, std::size_t col) const {
     return Vec3::load(&xyz[3 * (row * cols + col)]);
   }
@@ -69,6 +70,8 @@ struct CubicBspline {
 };
 std::optional<CubicBspline> input_curve_bspline(const BezierNet& net, std::size_t i);
 std::optional<CubicBspline> input_stringer_bspline(const BezierNet& net, std::size_t j);
+// Those of every input curve, then of every input stringer, made on the cores for a large net.
+std::vector<std::optional<CubicBspline>> input_bsplines(const BezierNet& net);
 
 // The patches as faces of one shell (EXPORT's FACES, docs/exchange.md): a vertex at every node of
 // the input grid, an edge along every patch border (the border's four controls, a Bézier curve),
