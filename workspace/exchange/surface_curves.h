@@ -41,8 +41,8 @@ Drawing3 surface_curves(const SurfaceInput& input, const Array& patches, const A
 // bit-exactly. Throws DataError (shape) when PATCHES does not have the shape of `input`.
 struct BezierNet {
   std::size_t rows = 0, cols = 0;
-  std::vector<double> xyz;  // rows x cols x 3
-  double largest = 0;       // the largest magnitude in xyz; infinite when one is not finite
+  Ravel xyz;           // rows x cols x 3, each written once (not zeroed first)
+  double largest = 0;  // the largest magnitude in xyz; infinite when one is not finite
   Vec3 at(std::size_t row, std::size_t col) const {
     return Vec3::load(&xyz[3 * (row * cols + col)]);
   }
