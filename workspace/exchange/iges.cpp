@@ -610,11 +610,19 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
                 TextOut& out, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
-  double largest = 0;
-  for (double v : net.xyz) {
-    if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
-    largest = std::max(largest, std::abs(v));
-  }
+  // The largest coordinate, every number finite: a part of the net on each core.
+  const unsigned parts = threads_for(net.xyz.size());
+  std::vector<double> largest_in(parts);
+  parallel_for(parts, parts, [&](std::size_t part, std::size_t) {
+    const std::size_t n = net.xyz.size();
+    double m = 0;
+    for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k) {
+      if (!std::isfinite(net.xyz[k])) throw DataError(DataError::Problem::patch_not_finite);
+      m = std::max(m, std::abs(net.xyz[k]));
+    }
+    largest_in[part] = m;
+  });
+  const double largest = *std::max_element(largest_in.begin(), largest_in.end());
 
   // Start section.
   std::size_t s_lines = 0;
@@ -660,11 +668,12 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   g.token(date, ';');                       // 25 date of the model
   const std::size_t g_lines = g.finish();
 
-  // A curve or stringer whose input points all coincide (a pole) is a point: left out.
-  // (Each reads a row or column of the net: on all cores.)
+  // A curve or stringer whose input points all coincide (a pole) is a point: left out. Every
+  // core makes every parts-th one (a stringer, a column of the net, costs more than a curve).
   std::vector<std::optional<CubicBspline>> splines(nc + ns);
-  parallel_for(nc + ns, threads_for(2 * nc * ns), [&](std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k)
+  const unsigned spline_parts = threads_for(2 * nc * ns);
+  parallel_for(spline_parts, spline_parts, [&](std::size_t part, std::size_t) {
+    for (std::size_t k = part; k < nc + ns; k += spline_parts)
       splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
   });
   std::vector<std::size_t> curves;  // the indices of splines kept
