@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
-#include <span>
 #include <string_view>
 #include <vector>
 
@@ -322,7 +321,7 @@ class CurveTexts {
   std::string_view at(std::size_t k, std::size_t j) const {
     return texts_[first_[k - first_curve_] + j];
   }
-
+  // The knots of c as they are written, each as many times as its multiplicity.
   static std::size_t knot_count(const CubicBspline& c) {
     std::size_t n = 0;
     for (int m : c.multiplicities) n += std::size_t(m);
