@@ -276,7 +276,13 @@ class RealTexts {
     std::memmove(&text_[to * slot], &text_[from * slot], n * slot);
     std::memmove(&length_[to], &length_[from], n);
   }
-  std::string_view operator[](std::size_t k) const { return {&text_[k * slot], length_[k]}; }
+  // Texts k, k + 1, ... as Records::slot_tokens reads them.
+  struct From {
+    const char* text;
+    const std::uint8_t* length;
+    std::string_view operator()(std::size_t j) const { return {text + j * slot, length[j]}; }
+  };
+  From from(std::size_t k) const { return {text_.data() + k * slot, length_.data() + k}; }
 
  private:
   std::vector<char> text_;
@@ -317,10 +323,11 @@ class CurveTexts {
       }
     });
   }
-  // Text j of curve k (j = 0 its first knot).
-  std::string_view at(std::size_t k, std::size_t j) const {
-    return texts_[first_[k - first_curve_] + j];
+  // Texts j, j + 1, ... of curve k (j = 0 its first knot).
+  RealTexts::From from(std::size_t k, std::size_t j) const {
+    return texts_.from(first_[k - first_curve_] + j);
   }
+  std::string_view at(std::size_t k, std::size_t j) const { return from(k, j)(0); }
   // The knots of c as they are written, each as many times as its multiplicity.
   static std::size_t knot_count(const CubicBspline& c) {
     std::size_t n = 0;
@@ -346,9 +353,9 @@ void write_curve(Records& p, const CubicBspline& c, const CurveTexts& texts, std
   p.integer(1);                                    // PROP3: polynomial
   p.integer(0);                                    // PROP4: not periodic
   const std::size_t knots = CurveTexts::knot_count(c), n = c.controls.size();
-  p.slot_tokens(knots, [&](std::size_t j) { return texts.at(k, j); });
+  p.slot_tokens(knots, texts.from(k, 0));
   p.slot_tokens(n, [](std::size_t) { return one; });  // weights
-  p.slot_tokens(3 * n, [&](std::size_t j) { return texts.at(k, knots + j); });
+  p.slot_tokens(3 * n, texts.from(k, knots));
   p.slot_token(texts.at(k, 0));          // V(0)
   p.slot_token(texts.at(k, knots - 1));  // V(1)
   p.token("0.", 2, ',');                 // normal (PROP1 = 0: not used)
@@ -382,10 +389,10 @@ class NetTexts {
     });
     return hi_;
   }
-  // Number `k` (3 per control, x y z) of row `row`, made ready by rows(); k past the row's end is
-  // in the rows after it.
-  std::string_view at(std::size_t row, std::size_t k) const {
-    return texts_[(row - lo_) * net_.cols * 3 + k];
+  // Numbers k, k + 1, ... (3 per control, x y z) of row `row`, made ready by rows(), and on into
+  // the rows after it.
+  RealTexts::From from(std::size_t row, std::size_t k) const {
+    return texts_.from((row - lo_) * net_.cols * 3 + k);
   }
   std::size_t cols() const { return net_.cols; }
 
@@ -421,7 +428,7 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
   for (std::size_t r = row0; r < row0 + rows;) {
     const std::size_t ready = texts.rows(r, std::min(r + 3, row0 + rows - 1));
     const std::size_t end = cols == texts.cols() ? std::min(ready, row0 + rows) : r + 1;
-    p.slot_tokens((end - r) * cols * 3, [&](std::size_t k) { return texts.at(r, 3 * col0 + k); });
+    p.slot_tokens((end - r) * cols * 3, texts.from(r, 3 * col0));
     r = end;
   }
   p.slot_token(reals[u0]);
