@@ -144,6 +144,67 @@ std::vector<double> bezier_knots(double first, double last) {
   return k;
 }
 
+// Calls each(e, parameters) for every entity e (from 0, in the directory's order) of a file whose
+// P section is checked to be as one thread packs it: the parameters (numbers, never Hollerith
+// strings here), each with its delimiter, as many to a record of 64 columns as fit, a record
+// begun by a parameter that does not fit in the one before, an entity's last record ended by
+// its ';', then the DE pointer and the sequence number (IGES 5.3, 2.2.4.5); and each directory
+// entry pointing at its parameters' records. Views into `text`, few assertions: for files of
+// many megabytes. Returns the number of entities.
+template <class Each>
+std::size_t packed_parameters(std::string_view text, const Each& each) {
+  std::vector<std::string_view> d, p;
+  for (std::size_t at = 0; at + 81 <= text.size(); at += 81) {
+    const std::string_view line = text.substr(at, 80);
+    if (line[72] == 'D') d.push_back(line);
+    if (line[72] == 'P') p.push_back(line);
+  }
+  std::vector<std::string_view> parameters;
+  std::vector<std::size_t> first;  // each entity's first P record
+  std::string data;                // the record being packed
+  std::string_view de;
+  std::size_t packed = 0, same = 0;
+  auto end_record = [&] {
+    data.resize(64, ' ');
+    ++packed;
+    same += packed <= p.size() && p[packed - 1] == fmt::format("{} {}P{:7}", data, de, packed);
+    data.clear();
+  };
+  for (const std::string_view line : p) {
+    de = line.substr(65, 7);
+    if (parameters.empty()) first.push_back(packed + 1);
+    for (std::size_t i = 0; i < 64 && line[i] != ' ';) {
+      std::size_t end = i;
+      while (end < 64 && line[end] != ',' && line[end] != ';') ++end;
+      if (end == 64) break;  // not a parameter: the records packed differ
+      const std::string_view token = line.substr(i, end + 1 - i);
+      if (!data.empty() && data.size() + token.size() > 64) end_record();
+      data += token;
+      parameters.push_back(token.substr(0, token.size() - 1));
+      i = end + 1;
+      if (token.back() == ';') {
+        end_record();
+        each(first.size() - 1, parameters);
+        parameters.clear();
+      }
+    }
+  }
+  CHECK(packed == p.size());
+  CHECK(same == p.size());
+  REQUIRE(d.size() == 2 * first.size());
+  first.push_back(p.size() + 1);
+  std::size_t pointing = 0;
+  for (std::size_t e = 0; e + 1 < first.size(); ++e) {
+    auto field = [&](std::size_t line, std::size_t n) {
+      return std::stoul(std::string(d[line].substr(8 * (n - 1), 8)));
+    };
+    pointing += field(2 * e, 2) == first[e] && field(2 * e + 1, 4) == first[e + 1] - first[e] &&
+                std::stoul(std::string(p[first[e] - 1].substr(65, 7))) == 2 * e + 1;
+  }
+  CHECK(pointing + 1 == first.size());
+  return first.size() - 1;
+}
+
 }  // namespace
 
 TEST_CASE("IGES: records, sections, pointers and the global section") {
@@ -297,37 +358,76 @@ TEST_CASE("IGES: one surface with inner knots of multiplicity 3, the default") {
   for (std::size_t k = 0; k < net.xyz.size(); ++k) CHECK(real(p[41 + 130 + k]) == net.xyz[k]);
 }
 
-TEST_CASE("IGES: a net of many rows, its numbers made some rows at a time, in both forms") {
-  // 88 net rows by 58 columns: the rows' texts are made some rows at a time, each number as
-  // Records::real writes it, every patch from its rows.
-  const TestSurface t = test_surface(30, 20, 0, 0);
+TEST_CASE("IGES: a surface made on all cores, packed as one thread packs it, in both forms") {
+  // 190 x 190 points: a net of 568 rows, its numbers made about 300 rows at a time (more than a
+  // quarter of a million numbers: on all cores), each run of them packed into some 150,000
+  // records (on all cores, a block at a time), the curves' 290,000 numbers made at once.
+  const TestSurface t = test_surface(190, 190, 0, 0);
   const BezierNet net = surface_net(t.input, t.surface.patches);
-  REQUIRE(net.rows == 88);
+  REQUIRE(net.rows == 568);
   auto text = [](double v) {
     char buffer[32];
     return std::string(buffer, format_real(buffer, v));
   };
-  const std::vector<Entity> patches =
-      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::patches));
-  std::size_t checked = 0;
-  for (std::size_t i = 0; i < 29; ++i)
-    for (std::size_t j = 0; j < 19; ++j) {
-      const auto& p = patches[i * 19 + j].parameters;
-      REQUIRE(p.size() == 1 + 4 + 5 + 16 + 16 + 48 + 4);
-      for (std::size_t b = 0; b < 4; ++b)
-        for (std::size_t a = 0; a < 4; ++a)
-          for (std::size_t c = 0; c < 3; ++c, ++checked)
-            CHECK(p[42 + 3 * (4 * b + a) + c] ==
-                  text(net.xyz[3 * ((3 * i + b) * net.cols + 3 * j + a) + c]));
+  // Curve or stringer k's knots and controls: how many are right.
+  auto curve_right = [&](std::size_t k, const std::vector<std::string_view>& p) {
+    const auto c = k < 190 ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - 190);
+    const std::size_t n = c->controls.size();
+    std::size_t right = 0;
+    if (p.size() != 7 + (n + 4) + n + 3 * n + 2 + 3) return right;
+    std::size_t at = 7;
+    for (std::size_t i = 0; i < c->knots.size(); ++i)
+      for (int m = 0; m < c->multiplicities[i]; ++m) right += p[at++] == text(c->knots[i]);
+    at += n;
+    for (Vec3 v : c->controls) {
+      right += p[at++] == text(v.x);
+      right += p[at++] == text(v.y);
+      right += p[at++] == text(v.z);
     }
-  CHECK(checked == 29 * 19 * 48);
-  const std::vector<Entity> one =
-      read_iges(write_iges(t.input, t.surface.patches, header, SurfaceForm::one));
-  const auto& p = one[0].parameters;
-  const std::size_t controls = net.rows * net.cols, knots_u = 58 + 4, knots_v = 88 + 4;
-  REQUIRE(p.size() == 10 + knots_u + knots_v + controls + 3 * controls + 4);
-  for (std::size_t k = 0; k < net.xyz.size(); ++k)
-    CHECK(p[10 + knots_u + knots_v + controls + k] == text(net.xyz[k]));
+    return right;
+  };
+  const std::size_t curve_numbers = 2 * 190 * (196 + 3 * 192);  // 192 controls, 196 knots each
+
+  {
+    const std::string file = write_iges(t.input, t.surface.patches, header, SurfaceForm::one);
+    const std::size_t controls = net.rows * net.cols, knots = net.cols + 4;
+    std::size_t right = 0, curves_right = 0;
+    const std::size_t entities =
+        packed_parameters(file, [&](std::size_t e, const std::vector<std::string_view>& p) {
+          if (e == 0 && p.size() == 10 + 2 * knots + controls + 3 * controls + 4) {
+            for (std::size_t k = 0; k < net.xyz.size(); ++k)
+              right += p[10 + 2 * knots + controls + k] == text(net.xyz[k]);
+          } else if (e >= 1 && e <= 2 * 190) {
+            curves_right += curve_right(e - 1, p);
+          }
+        });
+    CHECK(entities == 1 + 2 * 190 + 1);
+    CHECK(right == net.xyz.size());
+    CHECK(curves_right == curve_numbers);
+  }
+  {
+    const std::string file = write_iges(t.input, t.surface.patches, header, SurfaceForm::patches);
+    // After the patches, the shell: 190 x 189 edges each way, the two lists, 189 x 189 loops and
+    // faces, the shell; then the curves.
+    const std::size_t patches = 189 * 189, curves = patches + 2 * 190 * 189 + 2 + 2 * patches + 1;
+    std::size_t right = 0, curves_right = 0;
+    const std::size_t entities =
+        packed_parameters(file, [&](std::size_t e, const std::vector<std::string_view>& p) {
+          if (e < patches && p.size() == 1 + 4 + 5 + 16 + 16 + 48 + 4) {
+            const std::size_t i = e / 189, j = e % 189;
+            for (std::size_t b = 0; b < 4; ++b)
+              for (std::size_t a = 0; a < 4; ++a)
+                for (std::size_t c = 0; c < 3; ++c)
+                  right += p[42 + 3 * (4 * b + a) + c] ==
+                           text(net.xyz[3 * ((3 * i + b) * net.cols + 3 * j + a) + c]);
+          } else if (e >= curves && e < curves + 2 * 190) {
+            curves_right += curve_right(e - curves, p);
+          }
+        });
+    CHECK(entities == curves + 2 * 190 + 1);
+    CHECK(right == patches * 48);
+    CHECK(curves_right == curve_numbers);
+  }
 }
 
 TEST_CASE("IGES: a curve that is a point is left out and the directory says so") {

@@ -31,6 +31,18 @@ constexpr std::size_t max_sequence = 9'999'999;
   throw e;
 }
 
+// A sequence number or DE pointer (at most max_sequence) in 7 columns at w, as FORTRAN's I7 (the
+// end of every record has one: digit by digit here); returns the end.
+char* put_i7(char* w, std::size_t value) {
+  char* d = w + 7;
+  do {
+    *--d = static_cast<char>('0' + value % 10);
+    value /= 10;
+  } while (value > 0);
+  std::memset(w, ' ', std::size_t(d - w));
+  return w + 7;
+}
+
 // Columns 73-80 of a record: the section letter and the sequence number.
 void end_record(std::string& out, char section, std::size_t sequence) {
   if (sequence > max_sequence) too_many_lines(sequence);
@@ -52,8 +64,13 @@ std::string hollerith(std::string_view text) {
 // section's 64 and its pointer back to the directory (8 columns), then the section letter and
 // the sequence number.
 constexpr std::size_t record = 81;
-// The texts of numbers made ahead are kept in slots of 32 bytes (format_real's most).
+// The texts of numbers made ahead are kept in slots of 32 bytes (format_real's most), half a
+// million at a time (enough for threads_for to share their making between the cores).
 constexpr std::size_t slot = 32;
+constexpr std::size_t numbers_at_once = std::size_t{1} << 19;
+// The records of a run of parameters that go through put_each (a third of a megabyte or more:
+// Records::slot_tokens).
+constexpr std::size_t many_records = 4096;
 
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
@@ -71,7 +88,7 @@ class Records {
 
   // Starts an entity's parameters (P section): records end with its DE pointer.
   void begin(std::size_t de) {
-    de_ = de;
+    put_i7(de_, de);
     first_ = sequence_;
   }
   // A parameter and its delimiter (at most 71 characters together).
@@ -90,9 +107,47 @@ class Records {
   void slot_token(std::string_view text, char delimiter = ',') {
     if (used_ > 0 && used_ + text.size() + 1 > width_) finish();
     if (used_ == 0) line_ = out_->room(record + slot);
-    std::memcpy(line_ + used_, text.data(), slot);
-    line_[used_ + text.size()] = delimiter;
-    used_ += text.size() + 1;
+    used_ = put_slot(line_, used_, text, delimiter);
+  }
+  // Parameters text(0) .. text(count - 1), each a text that starts a slot (as slot_token's) and
+  // followed by a comma: the same records as slot_token would make one by one. Where a record
+  // begins depends only on the lengths, so those places are found first; then the current
+  // record is completed here, the records wholly of the run are made (each knows its parameters
+  // and its sequence number), on all cores when there are many (put_each, which looks for a
+  // Ctrl-C between its blocks: a system call, not for a patch's few), and the last one is left
+  // open here.
+  template <class Text>
+  void slot_tokens(std::size_t count, const Text& text) {
+    starts_.clear();
+    for (std::size_t k = 0, used = used_; k < count; ++k) {
+      const std::size_t length = text(k).size() + 1;
+      if (used > 0 && used + length > width_) {
+        starts_.push_back(k);
+        used = 0;
+      }
+      used += length;
+    }
+    const std::size_t whole = starts_.empty() ? 0 : starts_.size() - 1;
+    std::size_t k = 0;
+    if (!starts_.empty()) {
+      for (; k < starts_[0]; ++k) slot_token(text(k));
+      finish();
+      if (whole > 0 && sequence_ + whole - 1 > max_sequence) too_many_lines(max_sequence + 1);
+      auto make = [&](char* line, std::size_t r) {
+        std::size_t used = 0;
+        for (std::size_t j = starts_[r]; j < starts_[r + 1]; ++j)
+          used = put_slot(line, used, text(j), ',');
+        return end_line(line, used, sequence_ + r);
+      };
+      if (whole >= many_records) {
+        put_each(*out_, whole, record + slot, make);
+      } else {
+        for (std::size_t r = 0; r < whole; ++r) out_->commit(make(out_->room(record + slot), r));
+      }
+      sequence_ += whole;
+      k = starts_[whole];
+    }
+    for (; k < count; ++k) slot_token(text(k));
   }
   void integer(std::int64_t v, char delimiter = ',') {
     char buffer[24];
@@ -107,16 +162,7 @@ class Records {
   std::size_t finish() {
     if (used_ == 0) return sequence_ - first_;
     if (sequence_ > max_sequence) too_many_lines(sequence_);
-    std::memset(line_ + used_, ' ', width_ - used_);
-    std::size_t at = width_;
-    if (section_ == 'P') {
-      line_[at++] = ' ';
-      at = right_justified(at, de_);
-    }
-    line_[at++] = section_;
-    at = right_justified(at, sequence_++);
-    line_[at++] = '\n';
-    out_->commit(line_ + at);
+    out_->commit(end_line(line_, used_, sequence_++));
     used_ = 0;
     return sequence_ - first_;
   }
@@ -124,14 +170,32 @@ class Records {
   std::size_t first() const { return first_; }
 
  private:
-  // I7 of a sequence number or a DE pointer (both at most max_sequence) at column `at`.
-  std::size_t right_justified(std::size_t at, std::size_t value) {
-    return std::size_t(fortran::put_i_whole(line_ + at, std::int64_t(value), 7) - line_);
+  // A slot's text and `delimiter` at column `used` of `line`; returns the columns used.
+  static std::size_t put_slot(char* line, std::size_t used, std::string_view text, char delimiter) {
+    std::memcpy(line + used, text.data(), slot);
+    line[used + text.size()] = delimiter;
+    return used + text.size() + 1;
+  }
+  // The end of record `sequence` whose data fill `used` columns of `line`: blanks, the DE
+  // pointer (P section), the section letter and the sequence number; returns where it ends.
+  char* end_line(char* line, std::size_t used, std::size_t sequence) const {
+    std::memset(line + used, ' ', width_ - used);
+    char* w = line + width_;
+    if (section_ == 'P') {
+      *w++ = ' ';
+      w = std::copy_n(de_, 7, w);
+    }
+    *w++ = section_;
+    w = put_i7(w, sequence);
+    *w++ = '\n';
+    return w;
   }
   TextOut* out_;
   char section_;
-  std::size_t width_, used_ = 0, sequence_, de_ = 0, first_;
+  std::size_t width_, used_ = 0, sequence_, first_;
+  char de_[7] = {};  // the DE pointer's columns (P section)
   char* line_ = nullptr;
+  std::vector<std::size_t> starts_;  // slot_tokens: where the records begin
 };
 
 struct Entity {
@@ -206,8 +270,90 @@ void knots(Records& p, const IntegerReals& reals, std::size_t first, std::size_t
   for (int k = 0; k < 4; ++k) p.slot_token(reals[last]);
 }
 
-// Entity 126 of a curve or stringer (surface_curves.h: C2 in the running chord length).
-void write_curve(Records& p, const CubicBspline& c) {
+// Numbers' texts made ahead, as Records::real writes them, each at the start of a slot of `slot`
+// bytes (for Records::slot_tokens).
+class RealTexts {
+ public:
+  void resize(std::size_t n) {
+    text_.resize(n * slot);
+    length_.resize(n);
+  }
+  void make(std::size_t k, double v) {
+    length_[k] = static_cast<std::uint8_t>(format_real(&text_[k * slot], v));
+  }
+  // Texts [from, from + n) copied to [to, to + n).
+  void copy(std::size_t from, std::size_t to, std::size_t n) {
+    std::memmove(&text_[to * slot], &text_[from * slot], n * slot);
+    std::memmove(&length_[to], &length_[from], n);
+  }
+  // Texts k, k + 1, ... as Records::slot_tokens reads them.
+  struct From {
+    const char* text;
+    const std::uint8_t* length;
+    std::string_view operator()(std::size_t j) const { return {text + j * slot, length[j]}; }
+  };
+  From from(std::size_t k) const { return {text_.data() + k * slot, length_.data() + k}; }
+
+ private:
+  std::vector<char> text_;
+  std::vector<std::uint8_t> length_;
+};
+
+// The weight of every control, 1 (polynomial), as the text of a slot.
+constexpr char one_slot[slot] = "1.";
+constexpr std::string_view one(one_slot, 2);
+
+// The texts of a block of curves' numbers, made on all cores before the curves are written: each
+// curve's knots as they are written (a knot formatted once, copied for its multiplicity), then its
+// controls' coordinates.
+class CurveTexts {
+ public:
+  // The texts of curves [first, last), curve(k) the k-th.
+  template <class Curve>
+  void make(std::size_t first, std::size_t last, const Curve& curve) {
+    first_curve_ = first;
+    first_.assign(1, 0);
+    for (std::size_t k = first; k < last; ++k)
+      first_.push_back(first_.back() + knot_count(curve(k)) + 3 * curve(k).controls.size());
+    texts_.resize(first_.back());
+    parallel_for(last - first, threads_for(first_.back()), [&](std::size_t from, std::size_t to) {
+      for (std::size_t b = from; b < to; ++b) {
+        const CubicBspline& c = curve(first + b);
+        std::size_t k = first_[b];
+        for (std::size_t i = 0; i < c.knots.size(); ++i) {
+          texts_.make(k, c.knots[i]);
+          for (int m = 1; m < c.multiplicities[i]; ++m) texts_.copy(k, k + std::size_t(m), 1);
+          k += std::size_t(c.multiplicities[i]);
+        }
+        for (Vec3 v : c.controls) {
+          texts_.make(k++, v.x);
+          texts_.make(k++, v.y);
+          texts_.make(k++, v.z);
+        }
+      }
+    });
+  }
+  // Texts j, j + 1, ... of curve k (j = 0 its first knot).
+  RealTexts::From from(std::size_t k, std::size_t j) const {
+    return texts_.from(first_[k - first_curve_] + j);
+  }
+  std::string_view at(std::size_t k, std::size_t j) const { return from(k, j)(0); }
+  // The knots of c as they are written, each as many times as its multiplicity.
+  static std::size_t knot_count(const CubicBspline& c) {
+    std::size_t n = 0;
+    for (int m : c.multiplicities) n += std::size_t(m);
+    return n;
+  }
+
+ private:
+  RealTexts texts_;
+  std::size_t first_curve_ = 0;
+  std::vector<std::size_t> first_;  // each curve's first text
+};
+
+// Entity 126 of a curve or stringer (surface_curves.h: C2 in the running chord length): curve k
+// of `texts`, c.
+void write_curve(Records& p, const CubicBspline& c, const CurveTexts& texts, std::size_t k) {
   const bool closed = c.controls.front() == c.controls.back();
   p.integer(126);
   p.integer(std::int64_t(c.controls.size()) - 1);  // K: upper index of the controls
@@ -216,67 +362,60 @@ void write_curve(Records& p, const CubicBspline& c) {
   p.integer(closed ? 1 : 0);                       // PROP2: closed
   p.integer(1);                                    // PROP3: polynomial
   p.integer(0);                                    // PROP4: not periodic
-  for (std::size_t k = 0; k < c.knots.size(); ++k) {
-    char knot[32];
-    const std::size_t length = format_real(knot, c.knots[k]);
-    for (int m = 0; m < c.multiplicities[k]; ++m) p.token(knot, length, ',');
-  }
-  for (std::size_t k = 0; k < c.controls.size(); ++k) p.token("1.", 2, ',');  // weights
-  for (Vec3 v : c.controls) {
-    p.real(v.x);
-    p.real(v.y);
-    p.real(v.z);
-  }
-  p.real(c.knots.front());  // V(0)
-  p.real(c.knots.back());   // V(1)
-  p.token("0.", 2, ',');    // normal (PROP1 = 0: not used)
+  const std::size_t knots = CurveTexts::knot_count(c), n = c.controls.size();
+  p.slot_tokens(knots, texts.from(k, 0));
+  p.slot_tokens(n, [](std::size_t) { return one; });  // weights
+  p.slot_tokens(3 * n, texts.from(k, knots));
+  p.slot_token(texts.at(k, 0));          // V(0)
+  p.slot_token(texts.at(k, knots - 1));  // V(1)
+  p.token("0.", 2, ',');                 // normal (PROP1 = 0: not used)
   p.token("0.", 2, ',');
   p.token("0.", 2, ';');
 }
 
-// The texts of the net's numbers as Records::real writes them, a window of the net's rows at a
-// time: the bulk of a file, and a control shared by neighbouring patches is formatted once.
+// The texts of the net's numbers, a window of the net's rows at a time (half a million numbers,
+// made on all cores): the bulk of a file, and a control shared by neighbouring patches is
+// formatted once.
 class NetTexts {
  public:
-  explicit NetTexts(const BezierNet& net) : net_(net) {}
-  // Makes rows [first, last] ready (and some after them); rows already made are kept.
-  void rows(std::size_t first, std::size_t last) {
-    if (first >= lo_ && last < hi_) return;
+  explicit NetTexts(const BezierNet& net)
+      : net_(net), window_(std::max<std::size_t>(1, numbers_at_once / (net.cols * 3))) {}
+  // Makes rows [first, last] ready (and some after them); rows already made are kept. Returns
+  // the end of the rows ready from `first`.
+  std::size_t rows(std::size_t first, std::size_t last) {
+    if (first >= lo_ && last < hi_) return hi_;
     const std::size_t row = net_.cols * 3;
-    const std::size_t lo = first, hi = std::min(net_.rows, std::max(last + 1, first + window));
+    const std::size_t lo = first, hi = std::min(net_.rows, std::max(last + 1, first + window_));
     // Rows [first, hi_) are made: moved to the front, the others made after them.
     const std::size_t kept = first >= lo_ && first < hi_ ? hi_ - first : 0;
-    if (kept > 0) {
-      std::memmove(text_.data(), &text_[(first - lo_) * row * slot], kept * row * slot);
-      std::memmove(length_.data(), &length_[(first - lo_) * row], kept * row);
-    }
-    text_.resize((hi - lo) * row * slot);
-    length_.resize((hi - lo) * row);
+    if (kept > 0) texts_.copy((first - lo_) * row, 0, kept * row);
+    texts_.resize((hi - lo) * row);
     lo_ = lo;
     hi_ = hi;
     const std::size_t made = kept * row, n = (hi - lo) * row - made;
     const double* v = &net_.xyz[lo * row + made];
-    for (std::size_t k = 0; k < n; ++k)
-      length_[made + k] = static_cast<std::uint8_t>(format_real(&text_[(made + k) * slot], v[k]));
+    parallel_for(n, threads_for(n), [&](std::size_t from, std::size_t to) {
+      for (std::size_t k = from; k < to; ++k) texts_.make(made + k, v[k]);
+    });
+    return hi_;
   }
-  // Number `k` (3 per control, x y z) of row `row`, made ready by rows().
-  std::string_view at(std::size_t row, std::size_t k) const {
-    const std::size_t i = (row - lo_) * net_.cols * 3 + k;
-    return {&text_[i * slot], length_[i]};
+  // Numbers k, k + 1, ... (3 per control, x y z) of row `row`, made ready by rows(), and on into
+  // the rows after it.
+  RealTexts::From from(std::size_t row, std::size_t k) const {
+    return texts_.from((row - lo_) * net_.cols * 3 + k);
   }
+  std::size_t cols() const { return net_.cols; }
 
  private:
-  static constexpr std::size_t window = 25;  // rows: eight rows of patches
   const BezierNet& net_;
+  const std::size_t window_;  // rows
   std::size_t lo_ = 0, hi_ = 0;
-  std::vector<char> text_;
-  std::vector<std::uint8_t> length_;
+  RealTexts texts_;
 };
 
 // Entity 128 of the net's rows [row0, row0 + rows) and columns [col0, col0 + cols): the whole
 // surface, or one patch, on the parameters [u0, u1] x [v0, v1]; the net's numbers from `texts`
-// (made ready here, unless they are: then `texts` is only read, by any thread), the knots and
-// parameters from `reals`.
+// (made ready here, unless they are), the knots and parameters from `reals`.
 void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::size_t row0,
                    std::size_t rows, std::size_t col0, std::size_t cols) {
   const std::size_t u0 = col0 / 3, u1 = u0 + (cols - 1) / 3, v0 = row0 / 3,
@@ -293,11 +432,14 @@ void write_surface(Records& p, NetTexts& texts, const IntegerReals& reals, std::
   p.integer(0);
   knots(p, reals, u0, u1);
   knots(p, reals, v0, v1);
-  for (std::size_t k = 0; k < rows * cols; ++k) p.token("1.", 2, ',');
-  // Controls with the first index (u) varying fastest: along the net's rows.
-  for (std::size_t r = row0; r < row0 + rows; ++r) {
-    texts.rows(r, std::min(r + 3, row0 + rows - 1));
-    for (std::size_t k = 3 * col0; k < 3 * (col0 + cols); ++k) p.slot_token(texts.at(r, k));
+  p.slot_tokens(rows * cols, [](std::size_t) { return one; });  // weights
+  // Controls with the first index (u) varying fastest: along the net's rows. Rows of the net's
+  // whole width follow each other in `texts`: all those made are one run.
+  for (std::size_t r = row0; r < row0 + rows;) {
+    const std::size_t ready = texts.rows(r, std::min(r + 3, row0 + rows - 1));
+    const std::size_t end = cols == texts.cols() ? std::min(ready, row0 + rows) : r + 1;
+    p.slot_tokens((end - r) * cols * 3, texts.from(r, 3 * col0));
+    r = end;
   }
   p.slot_token(reals[u0]);
   p.slot_token(reals[u1]);
@@ -484,11 +626,8 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
                 TextOut& out, SurfaceForm form) {
   const BezierNet net = surface_net(input, patches);
   const std::size_t nc = std::size_t(input.nocur), ns = std::size_t(input.nostr);
-  double largest = 0;
-  for (double v : net.xyz) {
-    if (!std::isfinite(v)) throw DataError(DataError::Problem::patch_not_finite);
-    largest = std::max(largest, std::abs(v));
-  }
+  if (!std::isfinite(net.largest)) throw DataError(DataError::Problem::patch_not_finite);
+  const double largest = net.largest;
 
   // Start section.
   std::size_t s_lines = 0;
@@ -535,9 +674,7 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
   const std::size_t g_lines = g.finish();
 
   // A curve or stringer whose input points all coincide (a pole) is a point: left out.
-  std::vector<std::optional<CubicBspline>> splines(nc + ns);
-  for (std::size_t k = 0; k < nc + ns; ++k)
-    splines[k] = k < nc ? input_curve_bspline(net, k) : input_stringer_bspline(net, k - nc);
+  const std::vector<std::optional<CubicBspline>> splines = input_bsplines(net);
   std::vector<std::size_t> curves;  // the indices of splines kept
   for (std::size_t k = 0; k < nc + ns; ++k)
     if (splines[k]) curves.push_back(k);
@@ -583,18 +720,15 @@ void write_iges(const SurfaceInput& input, const Array& patches, const CadHeader
         });
     put_shell(p, list, net, *shell, reals, block_bytes);
   }
-  auto curve_most = [&](std::size_t k) {
-    const CubicBspline& c = *splines[curves[k]];
-    std::size_t parameters = 7 + 4 * c.controls.size() + 5;
-    for (int m : c.multiplicities) parameters += std::size_t(m);
-    return (parameters / 2 + 1) * record;
-  };
+  // The curves' numbers are made ahead, half a million at a time.
+  CurveTexts curve_texts;
+  auto curve = [&](std::size_t k) -> const CubicBspline& { return *splines[curves[k]]; };
   put_entities(
-      p, list, curves.size(), curves.empty() ? 1 : block_bytes / curve_most(0),
-      [](std::size_t, std::size_t) {},
+      p, list, curves.size(), curves.empty() ? 1 : numbers_at_once / (4 * curve(0).controls.size()),
+      [&](std::size_t first, std::size_t last) { curve_texts.make(first, last, curve); },
       [&](Records& q, std::size_t k) {
         const std::size_t index = curves[k];
-        write_curve(q, *splines[index]);
+        write_curve(q, curve(k), curve_texts, k);
         const bool curve = index < nc;
         return Entity{.type = 126,
                       .label = curve ? "CURVE" : "STRINGER",
