@@ -138,25 +138,34 @@ TEST_CASE("WRITE of a surface not interpolated yet: zero shape cards and no valu
   CHECK(text.ends_with("    0    0    0\n    0    0    0    0    0\n"));
 }
 
-TEST_CASE("WRITE's cards made in pieces of any size are the cards made at once") {
-  Workspace ws = test::make_workspace(4, 5, 3, 2, false);
-  ws.inppn.ravel[3] = 1e9;  // one value that does not fit F10.3
+TEST_CASE("WRITE's cards of arrays large enough for every core are the cards one by one") {
+  Workspace ws = small_surface();
+  // INTPN of 480,000 values: 60,000 cards, made by put_each on all cores. Values of every size
+  // and sign, a few too large for F10.3.
+  ws.intpn = Array({400, 400, 3});
+  for (std::size_t i = 0; i < ws.intpn.size(); ++i)
+    ws.intpn.ravel[i] = std::ldexp(static_cast<double>(i % 977) - 488.5, int(i % 23) - 2);
+  ws.intpn.ravel[ws.intpn.size() - 1] = 1;  // the last card of fewer than eight values
   std::size_t overflow = 0;
-  const std::string whole = disk::char_cards(ws, &overflow);
-  CHECK(overflow >= 1);
-  for (std::size_t room : {disk::CardMaker::longest_card, std::size_t{100}, std::size_t{1000}}) {
-    CAPTURE(room);
-    disk::CardMaker cards(ws);
-    CHECK(cards.size() == whole.size());
-    std::string pieces, piece(room, '\0');
-    while (std::size_t n = cards.fill(piece.data(), room)) {
-      CHECK(n <= room);
-      CHECK(piece[n - 1] == '\n');  // whole cards only
-      pieces.append(piece, 0, n);
+  const std::string text = disk::char_cards(ws, &overflow);
+  // The same cards written one by one: the head, then each array's shape and values.
+  std::string cards = std::string(small_surface_cards).substr(0, 51 + 21);  // (10I5), (4I5)
+  std::size_t asterisks = 0;
+  for (const auto& [a, rank] :
+       {std::pair{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&ws.patches, 5}}) {
+    for (int k = 0; k < rank; ++k) cards += i5(static_cast<long long>(a->shape[std::size_t(k)]));
+    cards += '\n';
+    for (std::size_t k = 0; k < a->size(); ++k) {
+      bool fits = true;
+      cards += f(a->ravel[k], &fits);
+      asterisks += fits ? 0 : 1;
+      if (k % 8 == 7 || k + 1 == a->size()) cards += '\n';
     }
-    CHECK(pieces == whole);
-    CHECK(cards.overflow() == overflow);
   }
+  CHECK(asterisks > 1000);
+  CHECK(overflow == asterisks);
+  CHECK(text.size() == cards.size());
+  CHECK(text == cards);
 }
 
 TEST_CASE("WRITE on a disk that fills up, in the first piece or a later one: old file kept") {

@@ -1,6 +1,7 @@
 #include "workspace/disk/cards.h"
 
-#include <array>
+#include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -38,59 +39,38 @@ char* value_cards(char* w, std::span<const double> values, std::size_t first, st
   return w;
 }
 
-std::size_t value_cards_size(const Array& a) {
-  return a.size() * f10 + (a.size() + per_card - 1) / per_card;
-}
-
 }  // namespace
 
-CardMaker::CardMaker(const Workspace& ws)
-    : ws_(ws), arrays_{{{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&ws.patches, 5}}} {}
-
-std::size_t CardMaker::size() const {
+std::size_t put_char_cards(const Workspace& ws, TextOut& out) {
   // (10I5), (4I5), then a shape card and the value cards of each array.
-  std::size_t size = ws_.status.size() * i5 + 1 + 4 * i5 + 1;
-  for (const auto& [a, rank] : arrays_) size += rank * i5 + 1 + value_cards_size(*a);
-  return size;
-}
-
-std::size_t CardMaker::fill(char* out, std::size_t room) {
-  char* w = out;
-  // Whole cards only, while the longest one still fits.
-  while (static_cast<std::size_t>(out + room - w) >= longest_card) {
-    if (!headed_) {
-      for (int s : ws_.status) fortran::put_i(w, s, i5), w += i5;
-      *w++ = '\n';
-      for (int v : {ws_.nocur, ws_.nostr, ws_.intcu, ws_.intst}) fortran::put_i(w, v, i5), w += i5;
-      *w++ = '\n';
-      headed_ = true;
-      continue;
-    }
-    if (array_ == arrays_.size()) break;
-    const auto& [a, rank] = arrays_[array_];
-    if (!shaped_) {
-      w = shape_card(w, *a, rank);
-      shaped_ = true;
-      next_ = 0;
-      continue;
-    }
-    const std::size_t cards = static_cast<std::size_t>(out + room - w) / longest_card;
-    const std::size_t last = std::min(a->size(), next_ + cards * per_card);
-    w = value_cards(w, a->ravel, next_, last, &overflow_);
-    next_ = last;
-    if (next_ == a->size()) ++array_, shaped_ = false;
+  char* w = out.room(ws.status.size() * i5 + 1);
+  for (int s : ws.status) fortran::put_i(w, s, i5), w += i5;
+  *w++ = '\n';
+  out.commit(w);
+  w = out.room(4 * i5 + 1);
+  for (int v : {ws.nocur, ws.nostr, ws.intcu, ws.intst}) fortran::put_i(w, v, i5), w += i5;
+  *w++ = '\n';
+  out.commit(w);
+  std::atomic<std::size_t> overflow = 0;
+  for (const auto& [a, rank] :
+       {std::pair{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&ws.patches, 5}}) {
+    out.commit(shape_card(out.room(std::size_t(rank) * i5 + 1), *a, std::size_t(rank)));
+    const std::size_t cards = (a->size() + per_card - 1) / per_card;
+    put_each(out, cards, longest_card, [&](char* w, std::size_t k) {
+      std::size_t asterisks = 0;
+      w = value_cards(w, a->ravel, k * per_card, std::min(a->size(), (k + 1) * per_card),
+                      &asterisks);
+      if (asterisks > 0) overflow += asterisks;
+      return w;
+    });
   }
-  return static_cast<std::size_t>(w - out);
+  return overflow;
 }
 
 std::string char_cards(const Workspace& ws, std::size_t* overflow) {
-  CardMaker cards(ws);
-  const std::size_t size = cards.size();
-  std::string out;
-  out.resize(size + CardMaker::longest_card);
-  out.resize(cards.fill(out.data(), out.size()));
-  *overflow = cards.overflow();
-  return out;
+  StringOut out;
+  *overflow = put_char_cards(ws, out);
+  return out.take_text();
 }
 
 }  // namespace igds::disk

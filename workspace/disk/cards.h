@@ -3,38 +3,21 @@
 // with the same formats gets the values back.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <string>
-#include <utility>
 
 #include "workspace/state.h"
+#include "workspace/text_out.h"
 
 namespace igds::disk {
 
-// The IGDSCHAR text of `ws`, cards ended by LF, made piece by piece as WRITE writes the file:
-// `ws` must stay unchanged until the last piece is made.
-class CardMaker {
- public:
-  static constexpr std::size_t longest_card = 8 * 10 + 1;  // (8F10.3) and its LF
+// The cards' longest line: (8F10.3) and its LF.
+inline constexpr std::size_t longest_card = 8 * 10 + 1;
 
-  explicit CardMaker(const Workspace& ws);
-  // The whole text's length.
-  std::size_t size() const;
-  // The next whole cards, at most `room` bytes (at least longest_card) at `out`; 0 at the end.
-  std::size_t fill(char* out, std::size_t room);
-  // The F10.3 values written so far as asterisks.
-  std::size_t overflow() const { return overflow_; }
-
- private:
-  const Workspace& ws_;
-  std::array<std::pair<const Array*, std::size_t>, 4> arrays_;  // INPPN INPTG INTPN PATCHES, rank
-  bool headed_ = false;    // the (10I5) and (4I5) cards are made
-  std::size_t array_ = 0;  // the array whose cards come next
-  bool shaped_ = false;    // its shape card is made
-  std::size_t next_ = 0;   // its next value
-  std::size_t overflow_ = 0;
-};
+// The IGDSCHAR text of `ws` into `out`, cards ended by LF, made as it is written: the value
+// cards of a large array on all cores (text_out.h's put_each), each card where it goes. `ws` must
+// stay unchanged meanwhile. Returns the F10.3 values written as asterisks.
+std::size_t put_char_cards(const Workspace& ws, TextOut& out);
 
 // The whole IGDSCHAR text of `ws`, cards ended by LF; `*overflow` counts F10.3 asterisks.
 std::string char_cards(const Workspace& ws, std::size_t* overflow);

@@ -359,22 +359,15 @@ Image load_image(const Disk& disk, std::string_view name) {
 
 std::size_t write_char(const Disk& disk, std::string_view name, const Workspace& ws) {
   const std::string n = checked(name);
-  disk::CardMaker cards(ws);
+  std::size_t overflow = 0;
   try {
-    disk::write_made(disk.path(n, "IGDSCHAR"), [&](TextOut& out) {
-      for (;;) {
-        check_interrupt();
-        const TextOut::Space room = out.space(TextOut::max_room);
-        const std::size_t n = cards.fill(room.first, room.size);
-        if (n == 0) break;
-        out.commit(room.first + n);
-      }
-    });
+    disk::write_made(disk.path(n, "IGDSCHAR"),
+                     [&](TextOut& out) { overflow = disk::put_char_cards(ws, out); });
   } catch (const disk::IoError& e) {
     throw Report(
         fmt::format("CANNOT WRITE {} ({}); NO FILE CHANGED", file_name(n, "IGDSCHAR"), e.reason()));
   }
-  return cards.overflow();
+  return overflow;
 }
 
 }  // namespace igds
