@@ -135,7 +135,11 @@ Drawing3 surface_curves(const SurfaceInput& in, const Array& patches_array,
   auto patch = [&](std::size_t i, std::size_t j) { return patches + (i * (ns - 1) + j) * 48; };
 
   Drawing3 d;
-  d.reserve(g.rows + g.cols, g.rows * (3 * (ns - 1) + 1) + g.cols * (3 * (nc - 1) + 1));
+  // Room for every item at once: the curves' and stringers' controls, then add_input's border
+  // ring, tangent lines (two points each) and a mark per input point.
+  const std::size_t ends = 2 * (nc + ns);
+  d.reserve(g.rows + g.cols + 1 + ends + nc * ns,
+            g.rows * (3 * (ns - 1) + 1) + g.cols * (3 * (nc - 1) + 1) + 3 * ends + nc * ns);
   std::vector<double> controls(3 * (3 * (std::max(nc, ns) - 1) + 1));
   // Curve I: the iso-line v = b/(INTCU+1) of patch row i, one span per patch column; its
   // derivatives along u are rows 2 and 3 of M weighted by the v blending (docs/exchange.md).
