@@ -52,9 +52,11 @@ std::size_t put_char_cards(const Workspace& ws, TextOut& out) {
   *w++ = '\n';
   out.commit(w);
   std::atomic<std::size_t> overflow = 0;
-  for (const auto& [a, rank] :
+  for (const auto& array :
        {std::pair{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&ws.patches, 5}}) {
-    out.commit(shape_card(out.room(std::size_t(rank) * i5 + 1), *a, std::size_t(rank)));
+    const Array* a = array.first;
+    const auto rank = std::size_t(array.second);
+    out.commit(shape_card(out.room(rank * i5 + 1), *a, rank));
     const std::size_t cards = (a->size() + per_card - 1) / per_card;
     put_each(out, cards, longest_card, [&](char* w, std::size_t k) {
       std::size_t asterisks = 0;
