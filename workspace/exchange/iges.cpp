@@ -31,18 +31,6 @@ constexpr std::size_t max_sequence = 9'999'999;
   throw e;
 }
 
-// A sequence number or DE pointer (at most max_sequence) in 7 columns at w, as FORTRAN's I7 (the
-// end of every record has one: digit by digit here); returns the end.
-char* put_i7(char* w, std::size_t value) {
-  char* d = w + 7;
-  do {
-    *--d = static_cast<char>('0' + value % 10);
-    value /= 10;
-  } while (value > 0);
-  std::memset(w, ' ', std::size_t(d - w));
-  return w + 7;
-}
-
 // Columns 73-80 of a record: the section letter and the sequence number.
 void end_record(std::string& out, char section, std::size_t sequence) {
   if (sequence > max_sequence) too_many_lines(sequence);
@@ -88,7 +76,7 @@ class Records {
 
   // Starts an entity's parameters (P section): records end with its DE pointer.
   void begin(std::size_t de) {
-    put_i7(de_, de);
+    fortran::put_i_whole(de_, std::int64_t(de), 7);
     first_ = sequence_;
   }
   // A parameter and its delimiter (at most 71 characters together).
@@ -186,7 +174,7 @@ class Records {
       w = std::copy_n(de_, 7, w);
     }
     *w++ = section_;
-    w = put_i7(w, sequence);
+    w = fortran::put_i_whole(w, std::int64_t(sequence), 7);
     *w++ = '\n';
     return w;
   }
