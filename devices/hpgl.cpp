@@ -11,6 +11,8 @@ namespace igds {
 
 namespace {
 
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+
 double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
@@ -104,14 +106,117 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
   at_ = at;
 }
 
+void HpglEncoder::draw_polyline(const PlotOrder& order, std::span<const Line> lines,
+                                std::size_t k) {
+  for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
+    const Stroke& stroke = order.strokes[s];
+    if (s == order.starts[k]) move(stroke.begin(lines));
+    draw_run(lines[stroke.line].subspan(stroke.first, stroke.last - stroke.first + 1),
+             stroke.reversed);
+  }
+}
+
 void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines) {
-  for (std::size_t k = 0; k < order.size(); ++k)
-    for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
-      const Stroke& stroke = order.strokes[s];
-      if (s == order.starts[k]) move(stroke.begin(lines));
-      draw_run(lines[stroke.line].subspan(stroke.first, stroke.last - stroke.first + 1),
-               stroke.reversed);
+  std::size_t k = 0;
+  // Until the pen is at an exact place in the plot's mode (after IN or a label it is not),
+  // polyline by polyline.
+  for (; k < order.size() && !(at_exact_ && relative_ == !absolute_); ++k)
+    draw_polyline(order, lines, k);
+  const std::size_t from = k;
+  if (from == order.size()) return;
+  // From here a polyline's bytes depend only on where the pen is and whether a PD list is open
+  // when it starts. Both are found polyline by polyline, in order, with the pen-up moves'
+  // statistics; the points are then written on the cores (put_each) in chunks, each needing only
+  // the point before it: the same bytes as draw_polyline's.
+  auto point = [&](std::size_t s, std::size_t i) {
+    const Stroke& t = order.strokes[s];
+    return lines[t.line][t.reversed ? t.last - i : t.first + i];
+  };
+  struct Opening {
+    DevicePoint before;      // where the pen was
+    bool lift = false;       // a pen-up move to the polyline ...
+    bool close = false;      // ... after a ';' that ends a PD list
+    bool pd = false;         // its first vector starts a PD list
+    std::size_t stroke = 0;  // its first vector's end: point `at` of stroke `stroke`
+    std::size_t at = 0;
+  };
+  std::vector<Opening> openings(order.size() - from);
+  for (; k < order.size(); ++k) {
+    if (order.starts[k] == order.starts[k + 1]) continue;
+    const DevicePoint begin = order.strokes[order.starts[k]].begin(lines);
+    Opening& o = openings[k - from];
+    o.before = at_;
+    o.lift = at_ != begin;
+    o.close = o.lift && pd_open_;
+    if (o.lift) {
+      travel_units_ += distance(at_, begin);
+      ++stats_.pen_lifts;
+      pd_open_ = false;
     }
+    o.pd = !pd_open_;
+    // The first point away from the polyline's first (none when every point is there).
+    o.stroke = order.starts[k + 1];
+    for (std::size_t s = order.starts[k]; s < order.starts[k + 1] && !pd_open_; ++s)
+      for (std::size_t i = 0; i <= order.strokes[s].last - order.strokes[s].first; ++i)
+        if (point(s, i) != begin) {
+          o.stroke = s, o.at = i, pd_open_ = true;
+          break;
+        }
+    at_ = order.strokes[order.starts[k + 1] - 1].end(lines);
+  }
+  // The strokes' points in chunks of at most 160: the stroke's points first .. last - 1.
+  struct Chunk {
+    std::size_t polyline, stroke, first, last;
+  };
+  constexpr std::size_t chunk_points = 160;
+  std::vector<Chunk> chunks;
+  for (k = from; k < order.size(); ++k)
+    for (std::size_t s = order.starts[k]; s < order.starts[k + 1]; ++s) {
+      const std::size_t points = order.strokes[s].last - order.strokes[s].first + 1;
+      for (std::size_t i = 0; i < points; i += chunk_points)
+        chunks.push_back({k - from, s, i, std::min(points, i + chunk_points)});
+    }
+  std::vector<std::size_t> vectors(chunks.size());
+  const bool relative = relative_;
+  auto pair = [relative](char* w, DevicePoint p, DevicePoint at) {
+    return relative ? put_pair(w, p.x - at.x, p.y - at.y) : put_pair(w, p.x, p.y);
+  };
+  // A move's ";PU", pair and ";", then a separator (or PD) and a pair a point: 24 bytes.
+  put_each(*out_, chunks.size(), 28 + 1 + 24 * chunk_points, [&](char* w, std::size_t c) {
+    const Chunk& chunk = chunks[c];
+    const Opening& o = openings[chunk.polyline];
+    const std::size_t s = chunk.stroke;
+    DevicePoint at;
+    if (chunk.first > 0) {
+      at = point(s, chunk.first - 1);
+    } else if (s == order.starts[from + chunk.polyline]) {
+      at = order.strokes[s].begin(lines);
+      if (o.lift) {
+        if (o.close) *w++ = ';';
+        *w++ = 'P', *w++ = 'U';
+        w = pair(w, at, o.before);
+        *w++ = ';';
+      }
+    } else {
+      at = order.strokes[s - 1].end(lines);
+    }
+    const std::size_t pd_at = o.pd && o.stroke == s ? o.at : none;
+    std::size_t drawn = 0;
+    for (std::size_t i = chunk.first; i < chunk.last; ++i) {
+      const DevicePoint p = point(s, i);
+      if (p == at) continue;
+      if (i == pd_at)
+        *w++ = 'P', *w++ = 'D';
+      else
+        *w++ = ',';
+      w = pair(w, p, at);
+      ++drawn;
+      at = p;
+    }
+    vectors[c] = drawn;
+    return w;
+  });
+  for (std::size_t v : vectors) stats_.vectors += v;
 }
 
 void HpglEncoder::text(DevicePoint p, std::string_view line) {

@@ -56,7 +56,8 @@ class HpglEncoder : public Device {
   // draw() to each point of `points` in turn (from the last to the first when `reversed`): the
   // bulk of a plot, without a call per point.
   void draw_run(std::span<const DevicePoint> points, bool reversed);
-  // The strokes of `order` (lines' points), each polyline from a pen-up move, in the style set.
+  // The strokes of `order` (lines' points), each polyline from a pen-up move, in the style set:
+  // the bytes of draw_polyline's for each in turn, a large plot's made on the cores.
   void draw_order(const PlotOrder& order, std::span<const Line> lines);
   // PU;SP0; at the end of the plot; the statistics count its bytes.
   void finish();
@@ -64,6 +65,8 @@ class HpglEncoder : public Device {
 
  private:
   void close_pd();
+  // Polyline k of `order`, point by point.
+  void draw_polyline(const PlotOrder& order, std::span<const Line> lines, std::size_t k);
   void coordinates(DevicePoint p);
   void relative_mode(bool on);
   char* room(std::size_t bytes) { return out_->room(bytes); }
