@@ -80,8 +80,8 @@ class Device {
     for (std::size_t i = 1; i < points.size(); ++i) draw(points[i]);
   }
   // The paths of a placed drawing in order, path k in styles[k]: style() then polyline() for
-  // each.
-  void paths(const PathList& paths, std::span<const Style> styles) {
+  // each. A device writing a large file may make the same bytes faster.
+  virtual void paths(const PathList& paths, std::span<const Style> styles) {
     for (std::size_t k = 0; k < paths.size(); ++k) {
       style(styles[k]);
       polyline(paths[k]);

@@ -129,6 +129,87 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   at_ = at;
 }
 
+void SvgWriter::paths(const PathList& paths, std::span<const Style> styles) {
+  // A path's bytes depend only on the writer's state when it starts: whether it ends the
+  // element before (and with which attributes) and starts one. That is found path by path, in
+  // order; the points are then written on the cores (put_each) in chunks, each needing only the
+  // point before it.
+  struct Opening {
+    std::size_t close = 0;  // 1 + the attributes of the element it ends; 0: none
+    bool start = false;     // it starts an element: at its first point, before its first vector
+  };
+  std::vector<std::string> attributes{attributes_};
+  std::vector<Opening> openings(paths.size());
+  const Style* last = nullptr;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    Opening& o = openings[k];
+    auto close = [&] {
+      if (drawing_) o.close = attributes.size();
+      drawing_ = false;
+    };
+    if (!last || !(styles[k] == *last)) {
+      last = &styles[k];
+      pen_ = styles[k].pen;
+      std::string a = attributes_of(styles[k]);
+      if (a != attributes_) {
+        close();
+        attributes_ = std::move(a);
+        attributes.push_back(attributes_);
+      }
+    }
+    const std::span<const DevicePoint> points = paths[k];
+    if (points.empty()) continue;
+    if (!(at_known_ && at_ == points.front())) close();
+    at_ = points.front(), at_known_ = true;
+    if (std::all_of(points.begin(), points.end(), [&](DevicePoint p) { return p == at_; }))
+      continue;
+    o.start = !drawing_;
+    drawing_ = true;
+    at_ = points.back();
+  }
+  struct Chunk {
+    std::size_t path, first, last;  // the path's points first .. last - 1
+  };
+  constexpr std::size_t chunk_points = 150;
+  std::vector<Chunk> chunks;
+  std::size_t longest = 0;
+  for (const std::string& a : attributes) longest = std::max(longest, a.size());
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    const std::size_t n = paths[k].size();
+    if (n == 0 && openings[k].close == 0) continue;
+    for (std::size_t i = 0; i < std::max<std::size_t>(n, 1); i += chunk_points)
+      chunks.push_back({k, i, std::min(n, i + chunk_points)});
+  }
+  // An element's end and the next's start (attributes of at most a hundred bytes, a point), then
+  // 24 bytes a point.
+  const std::size_t most = longest + 64 + 24 * chunk_points;
+  put_each(*out_, chunks.size(), most, [&](char* w, std::size_t c) {
+    const Chunk& chunk = chunks[c];
+    const std::span<const DevicePoint> points = paths[chunk.path];
+    if (chunk.first == 0) {
+      const Opening& o = openings[chunk.path];
+      if (o.close > 0) {
+        const std::string& a = attributes[o.close - 1];
+        *w++ = '"';
+        w = std::copy(a.begin(), a.end(), w);
+        w = std::copy_n("/>\n", 3, w);
+      }
+      if (o.start) {
+        constexpr std::string_view element = "<polyline points=\"";
+        w = put_point(std::copy(element.begin(), element.end(), w), false, points.front());
+      }
+    }
+    if (chunk.first == chunk.last) return w;
+    DevicePoint at = points[chunk.first == 0 ? 0 : chunk.first - 1];
+    for (std::size_t i = chunk.first; i < chunk.last; ++i) {
+      if (points[i] == at) continue;
+      at = points[i];
+      w = put_point(w, true, at);
+    }
+    return w;
+  });
+}
+
 void SvgWriter::text(DevicePoint p, std::string_view line) {
   close_polyline();
   at_known_ = false;

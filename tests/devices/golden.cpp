@@ -114,4 +114,44 @@ TEST_CASE("SVG: a polyline written at once is the element its moves and draws ma
   CHECK(document.find("-2147483647,") != std::string::npos);
 }
 
+TEST_CASE("SVG: a drawing's paths written at once, on the cores, are the elements path by path") {
+  // Paths of every length up to hundreds of points, repeated points, paths that go on where the
+  // last ended, paths of one place, empty paths, styles that change the attributes and styles
+  // that do not: a document of megabytes.
+  PathList list;
+  std::vector<Style> styles;
+  DevicePoint last{0, 0};
+  for (int k = 0; k < 6000; ++k) {
+    const int n = k % 13 == 0 ? 0 : k % 7 == 0 ? 400 + k % 300 : k % 9 + 1;
+    DevicePoint p = k % 5 == 0 ? last : DevicePoint{k % 1000, k % 700};
+    for (int i = 0; i < n; ++i) {
+      list.points.push_back(p);
+      if (k % 17 == 0 && i < 3) continue;  // a path of one place, or repeats at its start
+      if (i % 11 != 5) p = {(p.x + 7 * i + k) % 1024, (p.y + 3 * i + 1) % 780};
+    }
+    if (n > 0) last = list.points.back();
+    list.starts.push_back(list.points.size());
+    styles.push_back(k % 400 < 300 ? Style{}
+                                   : Style{k % 400 < 350 ? 2 : 3, Dash::dashed, k % 2 + 1});
+  }
+  REQUIRE(list.points.size() > 300000);
+  StringOut once_text, path_text;
+  SvgWriter at_once(once_text), by_path(path_text);
+  for (int page = 0; page < 2; ++page) {
+    at_once.paths(list, styles);
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      by_path.style(styles[k]);
+      by_path.polyline(list[k]);
+    }
+    at_once.text({3, 4}, "A");
+    by_path.text({3, 4}, "A");
+    if (page == 0) at_once.page(), by_path.page();
+  }
+  at_once.finish();
+  by_path.finish();
+  const std::string document = once_text.take_text();
+  CHECK(document.size() > (std::size_t{4} << 20));
+  CHECK(document == path_text.take_text());
+}
+
 }  // namespace igds::test::devices
