@@ -165,18 +165,21 @@ TEST_CASE("a disk that fills up: the command's report, and the last session kept
   IGDS_SKIP_UNLESS(small.mounted(), "cannot mount a tmpfs here (root can)");
   igds_on(small.path(), build_3x3);
   Workspace before = session_on(small.path());
-  // A grid made finer is not saved (the session makes it again from the inputs): it fits. Its
-  // IGDSDATA does not. Then a BUILD of 4900 points (118 KB of inputs) cannot be saved either.
+  // A grid made finer is not stored (the session and SAVE make it again from the inputs): the
+  // session and HULL.IGDSDATA fit. Then a BUILD of 4900 points (118 KB of inputs) cannot be
+  // saved, in the session or by SAVE.
   std::string commands = "CHANGE GRID 40 40\nSAVE HULL\nBUILD\n70 70\n";
   for (int k = 1; k <= 4900; ++k) commands += fmt::format("{} {} {} 0\n", k, k % 70, k / 70);
-  commands += "\n\n0 0\n";
+  commands += "\n\n0 0\nSAVE BIG\n";
   auto r = igds_on(small.path(), commands);
-  CHECK(has(r.out, "CHANGE GRID 40 40\nREADY\n"));
-  CHECK(has(r.out,
-            "SAVE HULL\nCANNOT WRITE HULL.IGDSDATA (NO SPACE LEFT ON DEVICE); NO FILE CHANGED\n"));
+  CHECK(has(r.out, "CHANGE GRID 40 40\nREADY\nSAVE HULL\nREADY\n"));
   CHECK(has(r.out,
             "CANNOT SAVE THE SESSION IN BINSAVE.IGDSCONT (NO SPACE LEFT ON DEVICE); THE LAST "
             "SAVED SESSION IS KEPT\nREADY\n"));
+  CHECK(has(r.out,
+            "SAVE BIG\nCANNOT WRITE BIG.IGDSDATA (NO SPACE LEFT ON DEVICE); NO FILE CHANGED\n"));
+  CHECK(fs::exists(small.path() / "HULL.IGDSDATA"));
+  CHECK(!fs::exists(small.path() / "BIG.IGDSDATA"));
   before.intcu = before.intst = 40;
   before.intpn = session_on(small.path()).intpn;
   test::check_same_workspace(session_on(small.path()), before);

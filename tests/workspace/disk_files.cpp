@@ -78,6 +78,65 @@ TEST_CASE("SAVE then RESTORE gives every surface variable back bit for bit") {
   CHECK(ws.status == status);
 }
 
+TEST_CASE("SAVE stores PATCHES and INTPN only when they are not the interpolation of the inputs") {
+  Scratch s;
+  Workspace made = test::make_interpolated(30, 30, 4, 4);
+  REQUIRE(made.changes.derived);
+  save_surface(s.disk, "MADE", made);
+  const std::size_t arrays = (made.patches.size() + made.intpn.size()) * sizeof(double);
+  const std::string file = test::read_file(s.disk.path("MADE", "IGDSDATA"));
+  CHECK(file.size() < arrays / 10);
+  Workspace ws = test::make_workspace(2, 3, 0, 0);
+  restore_surface(s.disk, "MADE", ws);
+  test::check_same_surface(ws, made);
+  CHECK(ws.changes.derived);
+  // Arrays of their own (as END APL assigns them) are stored, and come back as they were.
+  Workspace own = made;
+  own.intpn.ravel[7] += 1;
+  own.changes.assigned();
+  save_surface(s.disk, "OWN", own);
+  CHECK(test::read_file(s.disk.path("OWN", "IGDSDATA")).size() > arrays);
+  restore_surface(s.disk, "OWN", ws);
+  test::check_same_surface(ws, own);
+  CHECK(!ws.changes.derived);
+  // The mark between INPTG and what follows is 0 or 1.
+  disk::Writer w;
+  w.i32(made.nocur), w.i32(made.nostr), w.i32(made.intcu), w.i32(made.intst);
+  w.array(made.inppn), w.array(made.inptg), w.i32(2), w.i32(0), w.i32(0);
+  test::rewrite_file(s.disk.path("BAD", "IGDSDATA"), disk::frame("IGDSDATA", w.str(), 2));
+  CHECK(report_of([&] { restore_surface(s.disk, "BAD", ws); }) ==
+        "FILE DAMAGED: BAD.IGDSDATA (FORMAT); CURRENT SURFACE KEPT");
+  test::check_same_surface(ws, own);
+}
+
+TEST_CASE("a version 1 IGDSDATA, PATCHES and INTPN always in it, is read as before") {
+  Scratch s;
+  const Workspace made = test::make_interpolated(6, 5, 2, 3);
+  auto version_1 = [&](const Workspace& from, bool modes) {
+    disk::Writer w;
+    w.i32(from.nocur), w.i32(from.nostr), w.i32(from.intcu), w.i32(from.intst);
+    w.array(from.inppn), w.array(from.inptg), w.array(from.patches), w.array(from.intpn);
+    if (modes) w.i32(0), w.i32(1);
+    test::rewrite_file(s.disk.path("OLD", "IGDSDATA"), disk::frame("IGDSDATA", w.str(), 1));
+    Workspace ws;
+    restore_surface(s.disk, "OLD", ws);
+    return ws;
+  };
+  Workspace ws = version_1(made, true);
+  test::check_same_surface(ws, made);
+  CHECK(ws.changes.derived);
+  CHECK(ws.auto_tangents());
+  ws = version_1(made, false);  // written before the twists and AUTO mark
+  test::check_same_surface(ws, made);
+  CHECK(!ws.auto_tangents());
+  // Arrays that are not the interpolation are kept.
+  Workspace own = made;
+  own.patches.ravel[3] = 0.5;
+  ws = version_1(own, false);
+  CHECK(ws.patches == own.patches);
+  CHECK(!ws.changes.derived);
+}
+
 TEST_CASE("a large SAVE, written a piece at a time, gives the same surface back") {
   Scratch s;
   Workspace saved = test::make_workspace(30, 30, 25, 25, false);  // INTPN alone: 13.7 MB

@@ -202,14 +202,17 @@ TEST_CASE("RESTORE of a surface that overflows, or holds numbers that are not fi
   CHECK(restored(huge) ==
         "FILE DAMAGED: F.IGDSDATA (ITS SURFACE OVERFLOWS: PATCH 1 IS NOT A FINITE "
         "NUMBER); CURRENT SURFACE KEPT");
-  // PATCHES and INTPN of the file, kept as they are when they are not the interpolation's.
+  // PATCHES and INTPN of the file, kept as they are when they are not the interpolation's (as
+  // END APL assigns them).
   Workspace odd = test::make_interpolated(3, 3, 1, 1);
   odd.patches.ravel[48 + 5] = std::numeric_limits<double>::quiet_NaN();
+  odd.changes.assigned();
   CHECK(restored(odd) ==
         "FILE DAMAGED: F.IGDSDATA (PATCH 2 OF PATCHES IS NOT A FINITE NUMBER); CURRENT SURFACE "
         "KEPT");
   odd = test::make_interpolated(3, 3, 1, 1);
   odd.intpn.ravel[3 * (5 * 2 + 3) + 1] = -std::numeric_limits<double>::infinity();
+  odd.changes.assigned();
   CHECK(restored(odd) ==
         "FILE DAMAGED: F.IGDSDATA (ROW 3 COLUMN 4 OF INTPN IS NOT A FINITE NUMBER); CURRENT "
         "SURFACE KEPT");

@@ -248,13 +248,18 @@ void save_surface(const Disk& disk, std::string_view name, const Workspace& ws) 
   w.i32(ws.intst);
   w.array(ws.inppn);
   w.array(ws.inptg);
-  w.array(ws.patches);
-  w.array(ws.intpn);
-  // The surface's twists and AUTO tangents (STATUS[3], STATUS[4]): added after INTPN, a file
-  // without them has the zero twists and typed tangents.
+  // PATCHES and INTPN that are the interpolation of the inputs are made again when the file is
+  // read, as the session's are: 1 then, else 0 and the arrays.
+  const bool derived = ws.changes.derived && !ws.patches.empty();
+  w.i32(derived ? 1 : 0);
+  if (!derived) {
+    w.array(ws.patches);
+    w.array(ws.intpn);
+  }
   w.i32(ws.marks_twists() ? 1 : 0);
   w.i32(ws.auto_tangents() ? 1 : 0);
-  write_or_report(disk, n, "IGDSDATA", disk::frame(data_magic, w));
+  write_or_report(disk, n, "IGDSDATA",
+                  disk::frame(data_magic, w, disk::newest_version(data_magic)));
 }
 
 void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
@@ -263,17 +268,29 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   disk::MappedFile file = open_or_report(disk, n, "IGDSDATA", max_surface_file_bytes(), kept);
   Workspace in;
   RawArray patches, intpn;
+  bool stored = true;  // PATCHES and INTPN are in the file
   try {
-    disk::Reader r(disk::unframe(data_magic, file.bytes()).payload);
+    const disk::Unframed u = disk::unframe(data_magic, file.bytes());
+    disk::Reader r(u.payload);
     in.nocur = r.i32();
     in.nostr = r.i32();
     in.intcu = r.i32();
     in.intst = r.i32();
     in.inppn = r.array(3 * max_input_points);
     in.inptg = r.array(8 * (max_input_points + 1));
-    patches = raw_array(r);
-    intpn = raw_array(r);
-    if (!r.at_end()) {
+    // Version 2: 1 when PATCHES and INTPN are the interpolation of the inputs and not stored.
+    if (u.version >= 2) {
+      const std::int32_t derived = r.i32();
+      if (derived < 0 || derived > 1) throw disk::Damage("FORMAT");
+      stored = derived == 0;
+    }
+    if (stored) {
+      patches = raw_array(r);
+      intpn = raw_array(r);
+    }
+    // Version 1 files written before the twists and AUTO mark end after INTPN: zero twists and
+    // typed tangents.
+    if (u.version >= 2 || !r.at_end()) {
       const std::int32_t twists = r.i32(), automatic = r.i32();
       if (twists < 0 || twists > 1 || automatic < 0 || automatic > 1) throw disk::Damage("FORMAT");
       in.set_surface_modes(twists == 1, automatic == 1);
@@ -287,16 +304,17 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   if (in.nocur == 0) throw damaged(n, "IGDSDATA", "SHAPES: NOCUR IS 0", kept);
   if (auto p = surface_problem(in))
     throw damaged(n, "IGDSDATA", fmt::format("SHAPES: {}", p->reason), kept);
-  const bool none = patches.shape.empty() && intpn.shape.empty();
-  if (!none) {
+  const bool none = stored && patches.shape.empty() && intpn.shape.empty();
+  if (stored && !none) {
     for (auto [v, raw] : {std::pair{Variable::patches, &patches}, {Variable::intpn, &intpn}})
       if (raw->shape != expected_shape(in, v))
         throw damaged(n, "IGDSDATA",
                       fmt::format("SHAPES: {} DOES NOT MATCH NOCUR AND NOSTR", info(v).name), kept);
   }
-  // PATCHES and INTPN as igds interpolates them are not saved with the session: they are made
-  // again from the inputs. Those of the file are kept as they are when they differ, once every
-  // number was found finite (the interpolation's too: inputs near the largest numbers overflow).
+  // PATCHES and INTPN are made again from the inputs. Those the file holds (every version 1 file,
+  // and a version 2 file whose were not the interpolation) are kept as they are when they differ,
+  // once every number was found finite (the interpolation's too: inputs near the largest numbers
+  // overflow).
   Surface surface;
   try {
     if (auto overflow = interpolate_into(surface_input(in), surface)) throw *overflow;
@@ -308,8 +326,8 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
         overflow ? "ITS SURFACE OVERFLOWS: " + made_surface_reason(e) : made_surface_reason(e),
         kept);
   }
-  const bool derived =
-      !none && same_bytes(surface.patches, patches) && same_bytes(surface.intpn, intpn);
+  const bool derived = !stored || (!none && same_bytes(surface.patches, patches) &&
+                                   same_bytes(surface.intpn, intpn));
   if (derived) {
     in.patches = std::move(surface.patches);
     in.intpn = std::move(surface.intpn);

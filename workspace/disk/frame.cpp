@@ -326,6 +326,10 @@ std::string frame(std::string_view magic, std::string_view payload, std::uint32_
   return frame(magic, p, version).str();
 }
 
+std::uint32_t newest_version(std::string_view magic) {
+  return magic == "IGDSCONT" || magic == "IGDSDATA" ? 2 : 1;
+}
+
 Unframed unframe(std::string_view magic, std::string_view file) {
   if (file.empty()) throw Damage("EMPTY FILE");
   std::size_t m = std::min<std::size_t>(8, file.size());
@@ -336,7 +340,7 @@ Unframed unframe(std::string_view magic, std::string_view file) {
   r.u32();
   std::uint64_t length = r.u64();
   if (version == 0) throw Damage("FORMAT VERSION 0");
-  if (version > format_version)
+  if (version > newest_version(magic))
     throw Damage(fmt::format("FORMAT VERSION {} OF A NEWER IGDS", version));
   std::uint64_t body = file.size() - frame_header_bytes;
   if (body < frame_trailer_bytes || length > body - frame_trailer_bytes) throw Damage("TRUNCATED");

@@ -17,9 +17,6 @@
 
 namespace igds::disk {
 
-// Version 1: IGDSDATA, IGDSIMAG, IGDSVARS and the first session files; version 2: the session
-// file of records and recipes (workspace/disk/session.cpp).
-inline constexpr std::uint32_t format_version = 2;
 inline constexpr std::size_t frame_header_bytes = 24;  // magic 8, version 4, spare 4, length 8
 inline constexpr std::size_t frame_trailer_bytes = 8;  // checksum
 
@@ -111,6 +108,10 @@ class Reader {
 // `payload` in its frame: magic (8 characters, e.g. "IGDSDATA"), `version`, length, checksum.
 Writer frame(std::string_view magic, const Writer& payload, std::uint32_t version = 1);
 std::string frame(std::string_view magic, std::string_view payload, std::uint32_t version = 1);
+// The newest format version of each kind of file, the one igds writes (docs/disk.md): 2 for the
+// session file of records and recipes (IGDSCONT) and for IGDSDATA that stores PATCHES and INTPN
+// only when they are not the interpolation of its inputs, 1 for every other kind.
+std::uint32_t newest_version(std::string_view magic);
 // The payload of a framed file and its version; throws Damage saying why the file is not a good
 // one (EMPTY FILE, NOT AN x FILE, TRUNCATED, LENGTH, FORMAT VERSION n OF A NEWER IGDS, CHECKSUM).
 struct Unframed {

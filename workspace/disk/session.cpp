@@ -937,7 +937,8 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
     // The new variable files must be on the disk before the session that names them.
     if (!w.written.empty()) disk::sync_folder(s.disk.dir());
     disk::write_file(s.disk.path(session_name, session_type),
-                     disk::frame(session_magic, disk::encode_session(next), 2));
+                     disk::frame(session_magic, disk::encode_session(next),
+                                 disk::newest_version(session_magic)));
   } catch (const disk::IoError& e) {
     w.undo();
     throw Report(fmt::format("CANNOT SAVE THE SESSION IN {} ({}); THE LAST SAVED SESSION IS KEPT",
