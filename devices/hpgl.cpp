@@ -154,7 +154,8 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
       pd_open_ = false;
     }
     o.pd = !pd_open_;
-    // The first point away from the polyline's first (none when every point is there).
+    // The first point away from the polyline's first (when every point is there, a stroke of the
+    // next polyline: none of this one's).
     o.stroke = order.starts[k + 1];
     for (std::size_t s = order.starts[k]; s < order.starts[k + 1] && !pd_open_; ++s)
       for (std::size_t i = 0; i <= order.strokes[s].last - order.strokes[s].first; ++i)
