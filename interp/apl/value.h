@@ -18,6 +18,8 @@
 #include <utility>
 #include <vector>
 
+#include "workspace/kernels/memory.h"
+
 namespace igds::apl {
 
 // The lengths of an array's axes. Most arrays have at most three axes: those lengths are held in
@@ -149,34 +151,9 @@ class Shape {
 // Elements of a shape multiplied (1 for a scalar).
 std::size_t element_count(const Shape& shape);
 
-// An allocator that leaves new elements uninitialised: a result is written once, not twice.
-template <class T>
-struct UninitialisedAllocator {
-  using value_type = T;
-  UninitialisedAllocator() = default;
-  template <class U>
-  UninitialisedAllocator(const UninitialisedAllocator<U>&) {}
-  T* allocate(std::size_t n) {
-    if (n > std::size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
-    return static_cast<T*>(::operator new(n * sizeof(T)));
-  }
-  void deallocate(T* p, std::size_t) { ::operator delete(p); }
-  template <class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-  template <class U>
-  bool operator==(const UninitialisedAllocator<U>&) const {
-    return true;
-  }
-};
-
-using Numbers = std::vector<double, UninitialisedAllocator<double>>;
-using Characters = std::vector<char32_t, UninitialisedAllocator<char32_t>>;
+// A result's elements are written once, by what makes them (workspace/kernels/memory.h).
+using Numbers = std::vector<double, UnwrittenAllocator<double>>;
+using Characters = std::vector<char32_t, UnwrittenAllocator<char32_t>>;
 
 class Value {
  public:
