@@ -200,11 +200,10 @@ TEST_CASE("the drawing's input curves are the net's rows, bit for bit") {
   const Drawing3 d = surface_curves(t.input, t.surface);
   for (const auto& item : d.items()) {
     if (item.id.role != Role::curve || (item.id.index - 1) % 3 != 0) continue;
-    const std::vector<double> row = input_curve_controls(net, std::size_t(item.id.index - 1) / 3);
+    const std::size_t row = std::size_t(item.id.index - 1);  // input curve i is row 3i
     const auto points = d.points(item);
-    REQUIRE(points.size() * 3 == row.size());
-    for (std::size_t k = 0; k < points.size(); ++k)
-      CHECK(Vec3(points[k]) == Vec3::load(&row[3 * k]));
+    REQUIRE(points.size() == net.cols);
+    for (std::size_t k = 0; k < points.size(); ++k) CHECK(Vec3(points[k]) == net.at(row, k));
   }
 }
 
@@ -219,7 +218,6 @@ TEST_CASE("input curves and stringers as C2 B-splines in the running chord lengt
     CHECK(c->controls.size() == 9);
     CHECK(c->multiplicities == std::vector<int>{4, 1, 1, 1, 1, 1, 4});
     const std::vector<double> knots = expanded(*c);
-    const std::vector<double> bezier = input_curve_controls(net, i);
     double t_k = 0;
     for (std::size_t k = 0; k < 7; ++k) {
       const Vec3 p = Vec3::load(t.inppn.data() + 3 * (i * 7 + k));
@@ -228,8 +226,8 @@ TEST_CASE("input curves and stringers as C2 B-splines in the running chord lengt
       if (k + 1 < 7) {
         const Vec3 q = Vec3::load(t.inppn.data() + 3 * (i * 7 + k + 1));
         // The middle of each span is the Bézier span's middle: the same curve.
-        const Vec3 span[4] = {Vec3::load(&bezier[9 * k]), Vec3::load(&bezier[9 * k + 3]),
-                              Vec3::load(&bezier[9 * k + 6]), Vec3::load(&bezier[9 * k + 9])};
+        const Vec3 span[4] = {net.at(3 * i, 3 * k), net.at(3 * i, 3 * k + 1),
+                              net.at(3 * i, 3 * k + 2), net.at(3 * i, 3 * k + 3)};
         const double half = t_k + norm(q - p) / 2;
         CHECK(norm(de_boor(knots, c->controls, half) - bezier3(span, 0.5)) <= tolerance);
         t_k += norm(q - p);

@@ -229,20 +229,6 @@ BezierNet surface_net(const SurfaceInput& in, const Array& patches) {
   return net;
 }
 
-std::vector<double> input_curve_controls(const BezierNet& net, std::size_t i) {
-  const auto first = net.xyz.begin() + std::ptrdiff_t(3 * (3 * i) * net.cols);
-  return std::vector<double>(first, first + std::ptrdiff_t(3 * net.cols));
-}
-
-std::vector<double> input_stringer_controls(const BezierNet& net, std::size_t j) {
-  std::vector<double> out;
-  out.reserve(3 * net.rows);
-  for (std::size_t row = 0; row < net.rows; ++row)
-    out.insert(out.end(), &net.xyz[3 * (row * net.cols + 3 * j)],
-               &net.xyz[3 * (row * net.cols + 3 * j)] + 3);
-  return out;
-}
-
 namespace {
 
 // The B-spline of the Bézier controls first[0], first[stride], ... (count of them, x y z each),

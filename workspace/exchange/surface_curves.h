@@ -49,11 +49,6 @@ struct BezierNet {
 };
 BezierNet surface_net(const SurfaceInput& input, const Array& patches);
 
-// The Bézier controls of input curve i (0-based), as the net holds them (row 3i), and of input
-// stringer j (column 3j).
-std::vector<double> input_curve_controls(const BezierNet& net, std::size_t i);
-std::vector<double> input_stringer_controls(const BezierNet& net, std::size_t j);
-
 // An input curve or stringer as a cubic B-spline in the spline's own parameter, the running chord
 // length (0 at the first point, the sum of the chords |P_k+1 - P_k| at point k+1), in which it
 // is C2 (the spline system is the C2 condition with the chords as knot spacings): distinct knots
