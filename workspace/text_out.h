@@ -117,7 +117,7 @@ class PiecesOut final : public TextOut {
 // megabytes of text each), the calling thread making the first part of a block straight into
 // `out` while other threads (parallel.h) make the other parts into texts of their own, put
 // after it: the same text as on one thread. A Ctrl-C waiting stops it between blocks
-// (kernels/interrupt.h).
+// (kernels/interrupt.h): a text of one block, as most are, costs no look for one.
 template <class Make>
 void put_each(TextOut& out, std::size_t count, std::size_t most, const Make& make) {
   constexpr std::size_t block_bytes = std::size_t{8} << 20;
@@ -132,7 +132,7 @@ void put_each(TextOut& out, std::size_t count, std::size_t most, const Make& mak
       threads > 1 ? std::max<std::size_t>(threads, block_bytes / most) : count;
   std::vector<PiecesOut> others(threads - 1);
   for (std::size_t first = 0; first < count; first += block) {
-    check_interrupt();
+    if (first > 0) check_interrupt();
     const std::size_t last = std::min(count, first + block);
     const std::size_t n = last - first;
     in_parallel(threads, [&](unsigned t) {

@@ -2,6 +2,7 @@
 // kind of bad file or refusing disk gets a clear report and loses nothing.
 #include <doctest/doctest.h>
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -20,6 +21,8 @@
 #include "workspace/disk/frame.h"
 #include "workspace/error.h"
 #include "workspace/images.h"
+#include "workspace/kernels/interrupt.h"
+#include "workspace/text_out.h"
 
 using namespace igds;
 namespace fs = std::filesystem;
@@ -605,6 +608,24 @@ TEST_CASE("put_each: the items' text in order, made on the cores or on one, stri
                                     [&](TextOut& out) { put_each(out, count, 64, make); });
   CHECK(size == expected.size());
   CHECK(test::read_file(s.disk.path("LINES", "IGS")) == expected);
+}
+
+TEST_CASE("put_each: a Ctrl-C waiting stops a text of many blocks between them, not one of one") {
+  block_interrupts();
+  while (take_interrupt()) {
+  }
+  auto make = [](char* w, std::size_t) { return std::fill_n(w, 64, 'x'); };
+  REQUIRE(::kill(::getpid(), SIGINT) == 0);
+  // One block (less than 4 MB of room): made whole, the Ctrl-C left for the conversation.
+  StringOut one;
+  CHECK_NOTHROW(put_each(one, 1000, 64, make));
+  CHECK(one.take_text().size() == 64000);
+  CHECK(interrupt_pending());
+  // 24 MB of text in blocks of 8 MB: the first made, then stopped.
+  StringOut many;
+  CHECK_THROWS_AS(put_each(many, 3 * 131072, 64, make), Interrupted);
+  CHECK(many.size() == std::size_t{8} << 20);
+  CHECK(take_interrupt());
 }
 
 TEST_CASE("put_each: an item longer than it said is a fault, seen before another byte is put") {

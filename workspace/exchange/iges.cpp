@@ -56,9 +56,6 @@ constexpr std::size_t record = 81;
 // million at a time (enough for threads_for to share their making between the cores).
 constexpr std::size_t slot = 32;
 constexpr std::size_t numbers_at_once = std::size_t{1} << 19;
-// The records of a run of parameters that go through put_each (a third of a megabyte or more:
-// Records::slot_tokens).
-constexpr std::size_t many_records = 4096;
 
 // Free-format parameters packed into records of `width` data columns, never splitting a
 // parameter: the global section (72 columns) and each entity's parameter lines (64 columns, then
@@ -100,10 +97,8 @@ class Records {
   // Parameters text(0) .. text(count - 1), each a text that starts a slot (as slot_token's) and
   // followed by a comma: the same records as slot_token would make one by one. Where a record
   // begins depends only on the lengths, so those places are found first; then the current
-  // record is completed here, the records wholly of the run are made (each knows its parameters
-  // and its sequence number), on all cores when there are many (put_each, which looks for a
-  // Ctrl-C between its blocks: a system call, not for a patch's few), and the last one is left
-  // open here.
+  // record is completed here, the records wholly of the run are made by put_each (each knows its
+  // parameters and its sequence number), and the last one is left open here.
   template <class Text>
   void slot_tokens(std::size_t count, const Text& text) {
     starts_.clear();
@@ -121,17 +116,12 @@ class Records {
       for (; k < starts_[0]; ++k) slot_token(text(k));
       finish();
       if (whole > 0 && sequence_ + whole - 1 > max_sequence) too_many_lines(max_sequence + 1);
-      auto make = [&](char* line, std::size_t r) {
+      put_each(*out_, whole, record + slot, [&](char* line, std::size_t r) {
         std::size_t used = 0;
         for (std::size_t j = starts_[r]; j < starts_[r + 1]; ++j)
           used = put_slot(line, used, text(j), ',');
         return end_line(line, used, sequence_ + r);
-      };
-      if (whole >= many_records) {
-        put_each(*out_, whole, record + slot, make);
-      } else {
-        for (std::size_t r = 0; r < whole; ++r) out_->commit(make(out_->room(record + slot), r));
-      }
+      });
       sequence_ += whole;
       k = starts_[whole];
     }
