@@ -470,6 +470,76 @@ TEST_CASE("the checksum of bytes given in runs is the checksum of the whole") {
   CHECK(disk::frame("IGDSDATA", w).str() == disk::frame("IGDSDATA", joined));
 }
 
+TEST_CASE("a framed file read in one pass: the payload read and its checksum said before it") {
+  // A payload of a number, an array of many runs of the one-pass copy, a small array, a number.
+  disk::Writer w;
+  w.u32(7);
+  Array big({70001, 3});
+  for (std::size_t i = 0; i < big.size(); ++i) big.ravel[i] = 0.25 * double(i) - 3;
+  const Array small({2, 2});  // borrowed by the writer, as big is
+  w.array(big);
+  w.array(small);
+  w.u64(42);
+  const std::string good = disk::frame("IGDSDATA", w).str();
+  struct Read {
+    std::uint32_t version, first;
+    Array big, small;
+    std::uint64_t last;
+  };
+  auto read_all = [](disk::Reader& r, std::uint32_t version) {
+    Read out{version, r.u32(), r.array(), r.array(), 0};
+    out.last = r.u64();
+    r.finish();
+    return out;
+  };
+  auto read_first = [](disk::Reader& r, std::uint32_t) { return r.u32(); };
+  auto reason = [&](const std::string& file, auto read) {
+    try {
+      disk::read_framed("IGDSDATA", file, read);
+      return std::string("(read)");
+    } catch (const disk::Damage& d) {
+      return d.reason();
+    }
+  };
+  const Read back = disk::read_framed("IGDSDATA", good, read_all);
+  CHECK(back.version == 1);
+  CHECK(back.first == 7);
+  CHECK(back.big == big);
+  CHECK(back.small == small);
+  CHECK(back.last == 42);
+  CHECK(disk::read_framed("IGDSDATA", good, read_first) == 7u);
+  // The array's rank, right after the first number.
+  const std::size_t rank_at = disk::frame_header_bytes + 4;
+  for (std::size_t at : {std::size_t{0}, std::size_t{8}, rank_at, rank_at + 40,
+                         rank_at + 40 + 3 * 65536 + 5, good.size() / 2, good.size() - 9}) {
+    CAPTURE(at);
+    std::string b = good;
+    b[at] ^= 0x10;
+    // The magic word, the version and the length have their own reports.
+    const std::string expected = at == 0   ? "NOT AN IGDSDATA FILE"
+                                 : at == 8 ? "FORMAT VERSION 17 OF A NEWER IGDS"
+                                           : "CHECKSUM";
+    CHECK(reason(b, read_all) == expected);
+    // Bytes the reading never looks at are summed all the same.
+    CHECK(reason(b, read_first) == expected);
+  }
+  // A rank that does not read: the checksum first, then, framed anew, the payload's own report.
+  std::string b = good;
+  b[rank_at] = 99;
+  CHECK(reason(b, read_all) == "CHECKSUM");
+  const std::string framed_anew = disk::frame(
+      "IGDSDATA",
+      std::string_view(b).substr(disk::frame_header_bytes,
+                                 b.size() - disk::frame_header_bytes - disk::frame_trailer_bytes));
+  CHECK(reason(framed_anew, read_all) == "FORMAT");
+  // What else the reading throws comes through when the checksum holds, and not otherwise.
+  auto refuse = [](disk::Reader&, std::uint32_t) -> int { throw std::runtime_error("no"); };
+  CHECK_THROWS_AS(disk::read_framed("IGDSDATA", good, refuse), std::runtime_error);
+  b = good;
+  b[good.size() / 2] ^= 1;
+  CHECK(reason(b, refuse) == "CHECKSUM");
+}
+
 TEST_CASE("a file larger than any legal one is refused before it is read") {
   Scratch s;
   const fs::path big = s.disk.path("BIG", "IGDSDATA");

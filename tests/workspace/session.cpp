@@ -326,15 +326,38 @@ TEST_CASE("a damaged copy of an image file costs that image alone, kept aside wi
   REQUIRE(copies.size() == 1);
   const fs::path copy = s.dir.path() / *copies.begin();
   std::string bytes = test::read_file(copy);
-  bytes[bytes.size() / 2] ^= 1;
+  std::string reason = "CHECKSUM";
+  // The points' rank, after DESIM (two i32, three f64) in the payload: 99 does not read.
+  const std::size_t rank_at = disk::frame_header_bytes + 32;
+  auto payload = [](const std::string& file) {
+    return file.substr(disk::frame_header_bytes,
+                       file.size() - disk::frame_header_bytes - disk::frame_trailer_bytes);
+  };
+  SUBCASE("a byte of its points changed") {
+    bytes[bytes.size() / 2] ^= 1;
+  }
+  SUBCASE("a payload that does not read, its checksum not made again: the checksum is said") {
+    bytes[rank_at] = 99;
+  }
+  SUBCASE("another good image file in its place") {
+    store_image(s.disk, "OTHER", test::make_image(1, Projection::conic, 2, 3, 5));
+    bytes = test::read_file(s.disk.path("OTHER", "IGDSIMAG"));
+    reason = "NOT THE ONE SAVED";
+  }
+  SUBCASE("a payload that does not read, framed anew: not the one saved, before it is read") {
+    std::string p = payload(bytes);
+    p[rank_at - disk::frame_header_bytes] = 99;
+    bytes = disk::frame("IGDSIMAG", p);
+    reason = "NOT THE ONE SAVED";
+  }
   test::rewrite_file(copy, bytes);
   std::vector<std::string> notices;
   Workspace back = load_fresh(s.disk, &notices);
   const std::string name = copies.begin()->substr(0, 8);
   REQUIRE(notices.size() == 1);
-  CHECK(notices[0] == fmt::format("TEMP1 IN BINSAVE.IGDSCONT DAMAGED ({}.IGDSVIMG: CHECKSUM): "
+  CHECK(notices[0] == fmt::format("TEMP1 IN BINSAVE.IGDSCONT DAMAGED ({}.IGDSVIMG: {}): "
                                   "KEPT AS {}.IGDSBAD; TEMP1 STARTS EMPTY",
-                                  name, name));
+                                  name, reason, name));
   // The rest of the workspace is there: surface, the other images.
   test::check_same_surface(back, ws);
   CHECK(test::same_bits(back.image, ws.image));

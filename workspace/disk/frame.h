@@ -9,6 +9,7 @@
 #include <deque>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include "workspace/error.h"
@@ -79,9 +80,10 @@ class Writer {
 };
 
 // Reads what Writer wrote; throws Damage("FORMAT") on anything out of bounds or malformed.
+// Given a Checksum, it also adds to it every byte of `in`, in order, as it is read (read_framed).
 class Reader {
  public:
-  explicit Reader(std::string_view in) : in_(in) {}
+  explicit Reader(std::string_view in, Checksum* sum = nullptr) : in_(in), sum_(sum) {}
   std::uint8_t u8();
   std::uint32_t u32();
   std::int32_t i32() { return static_cast<std::int32_t>(u32()); }
@@ -98,11 +100,16 @@ class Reader {
   bool at_end() const { return pos_ == in_.size(); }
   // Throws Damage("FORMAT") unless everything was read.
   void finish() const;
+  // The checksum given, with every byte of `in` added, read or not.
+  std::uint64_t sum();
 
  private:
   std::string_view take(std::size_t n);
+  void add_read();  // adds to the checksum what was read since it last did
   std::string_view in_;
   std::size_t pos_ = 0;
+  Checksum* sum_ = nullptr;
+  std::size_t summed_ = 0;  // the bytes of in_ added to sum_
 };
 
 // `payload` in its frame: magic (8 characters, e.g. "IGDSDATA"), `version`, length, checksum.
@@ -119,6 +126,39 @@ struct Unframed {
   std::uint32_t version = 1;
 };
 Unframed unframe(std::string_view magic, std::string_view file);
+// The frame of a file checked as unframe does, all but its checksum: the payload, its version,
+// and the checksum the file ends with.
+struct Frame {
+  std::string_view payload;
+  std::uint32_t version = 1;
+  std::uint64_t sum = 0;
+};
+Frame open_frame(std::string_view magic, std::string_view file);
+// Reads a framed file's payload with read(Reader&, version) in one pass: the checksum is found
+// as the bytes are read, a large array's from its copy while it is in the cache, instead of in a
+// pass of its own before. The reports are unframe's and read's; a file whose checksum does not
+// hold is CHECKSUM, whatever read found or threw on the way.
+template <class Read>
+auto read_framed(std::string_view magic, std::string_view file, const Read& read) {
+  const Frame frame = open_frame(magic, file);
+  Checksum sum;
+  sum.add(file.substr(0, frame_header_bytes));
+  Reader r(frame.payload, &sum);
+  try {
+    if constexpr (std::is_void_v<decltype(read(r, frame.version))>) {
+      read(r, frame.version);
+      if (r.sum() != frame.sum) throw Damage("CHECKSUM");
+    } else {
+      auto value = read(r, frame.version);
+      if (r.sum() != frame.sum) throw Damage("CHECKSUM");
+      return value;
+    }
+  } catch (...) {
+    if (checksum(file.substr(0, frame_header_bytes + frame.payload.size())) != frame.sum)
+      throw Damage("CHECKSUM");
+    throw;
+  }
+}
 // The checksum a framed file ends with (its last 8 bytes; 0 for a file shorter than that).
 std::uint64_t trailing_checksum(std::string_view file);
 

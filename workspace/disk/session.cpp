@@ -374,18 +374,29 @@ struct Session::State {
         throw disk::Damage(fmt::format("{}: {}", name, err.reason()));
       }
       if (!file->exists()) throw disk::Damage(fmt::format("{} MISSING", name));
-      std::string_view payload;
+      // Its frame and checksum, then whether it is the file saved, then its payload: only the
+      // first are reported with the file's name.
+      struct InPayload {
+        disk::Damage damage;
+      };
+      const bool saved = file->bytes().size() == e.linked.length &&
+                         disk::trailing_checksum(file->bytes()) == e.linked.sum;
       try {
-        payload = disk::unframe("IGDSIMAG", file->bytes()).payload;
+        image = disk::read_framed("IGDSIMAG", file->bytes(), [&](disk::Reader& r, std::uint32_t) {
+          if (!saved) throw InPayload{disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name))};
+          try {
+            Image read = r.image();
+            r.finish();
+            return read;
+          } catch (const disk::Damage& d) {
+            throw InPayload{d};
+          }
+        });
+      } catch (const InPayload& p) {
+        throw p.damage;
       } catch (const disk::Damage& d) {
         throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
       }
-      if (file->bytes().size() != e.linked.length ||
-          disk::trailing_checksum(file->bytes()) != e.linked.sum)
-        throw disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name));
-      disk::Reader r(payload);
-      image = r.image();
-      r.finish();
     }
     if (auto p = image_problem(image, slot)) throw disk::Damage("IMAGE: " + p->reason);
     return std::make_shared<const Image>(std::move(image));
