@@ -1,8 +1,13 @@
 #include "workspace/text_out.h"
 
 #include <algorithm>
+#include <condition_variable>
 #include <cstring>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <system_error>
+#include <thread>
 
 namespace igds {
 
@@ -92,6 +97,101 @@ void PiecesOut::take(std::size_t) {
   if (!open_) open_ = std::make_unique_for_overwrite<char[]>(piece);
   begin_ = at_ = open_.get();
   end_ = begin_ + piece;
+}
+
+void put_in_order(TextOut& out, std::size_t texts,
+                  const std::function<void(std::size_t, TextOut&)>& make) {
+  const unsigned helpers = cores() - 1;
+  const std::size_t window = 4 * (std::size_t{helpers} + 1);  // texts begun and not yet put
+  struct Slot {
+    PiecesOut text;
+    bool made = false;
+    std::exception_ptr error;
+  };
+  std::vector<Slot> slots(std::min(window, texts));
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::size_t begun = 0, put = 0;  // texts begun; texts put into out
+  bool stop = false;
+  // Makes text k aside, into its slot.
+  auto make_aside = [&](std::size_t k) {
+    Slot& slot = slots[k % slots.size()];
+    try {
+      make(k, slot.text);
+    } catch (...) {
+      slot.error = std::current_exception();
+    }
+  };
+  auto helper = [&] {
+    std::unique_lock lock(mutex);
+    for (;;) {
+      changed.wait(lock, [&] { return stop || begun == texts || begun < put + slots.size(); });
+      if (stop || begun == texts) return;
+      const std::size_t k = begun++;
+      lock.unlock();
+      make_aside(k);
+      lock.lock();
+      slots[k % slots.size()].made = true;
+      changed.notify_all();
+    }
+  };
+  std::vector<std::thread> pool;
+  // The helpers are stopped and joined however this returns.
+  struct Joined {
+    std::vector<std::thread>& pool;
+    std::mutex& mutex;
+    std::condition_variable& changed;
+    bool& stop;
+    ~Joined() {
+      {
+        const std::lock_guard lock(mutex);
+        stop = true;
+      }
+      changed.notify_all();
+      for (std::thread& t : pool) t.join();
+    }
+  } joined{pool, mutex, changed, stop};
+  pool.reserve(helpers);
+  for (unsigned t = 0; t < helpers; ++t) {
+    try {
+      pool.emplace_back(helper);
+    } catch (const std::system_error&) {
+      break;  // fewer helpers: this thread makes the rest
+    }
+  }
+  std::unique_lock lock(mutex);
+  while (put < texts) {
+    Slot& next = slots[put % slots.size()];
+    if (next.made) {
+      lock.unlock();
+      if (next.error) std::rethrow_exception(next.error);
+      if (put > 0) check_interrupt();
+      next.text.put_into(out);
+      next.text.clear();
+      lock.lock();
+      next.made = false;
+      ++put;
+      changed.notify_all();
+    } else if (begun == put) {
+      // The next text is not begun: made here, straight into out.
+      ++begun;
+      lock.unlock();
+      if (put > 0) check_interrupt();
+      make(put, out);
+      lock.lock();
+      ++put;
+      changed.notify_all();
+    } else if (begun < texts && begun < put + slots.size()) {
+      // The next is being made by a helper: another made here meanwhile.
+      const std::size_t k = begun++;
+      lock.unlock();
+      make_aside(k);
+      lock.lock();
+      slots[k % slots.size()].made = true;
+    } else {
+      changed.wait(lock);
+    }
+  }
 }
 
 }  // namespace igds

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -111,38 +112,40 @@ class PiecesOut final : public TextOut {
   std::vector<std::pair<std::unique_ptr<char[]>, std::size_t>> done_;
 };
 
+// The room of one text of put_each's: about this many bytes of items' room each.
+inline constexpr std::size_t put_each_text_bytes = std::size_t{1} << 20;
+
+// Puts into `out`, in order, texts 0 .. texts - 1, text k made by make(k, to): the writers' one
+// way of using the machine's cores. The calling thread and cores() - 1 threads, started for the
+// call and joined before it returns, each take the next text not yet begun; a text is made
+// straight into `out` when it is the next to go there, else into a TextOut of its own, put into
+// `out` when its turn comes (at most 4 texts a thread made ahead). The calling thread puts them
+// in order, and makes one whenever none is ready to put. A Ctrl-C waiting stops it before any
+// text but the first (kernels/interrupt.h); an exception from any text is rethrown here.
+void put_in_order(TextOut& out, std::size_t texts,
+                  const std::function<void(std::size_t, TextOut&)>& make);
+
 // Puts into `out`, in order, the texts of items 0 .. count - 1, each written by make(char* w, k)
-// at w in at most `most` bytes (most <= TextOut::max_room) and ending where it returns. The
-// writers' one way of using the machine's cores: a large text is made block by block (a few
-// megabytes of text each), the calling thread making the first part of a block straight into
-// `out` while other threads (parallel.h) make the other parts into texts of their own, put
-// after it: the same text as on one thread. A Ctrl-C waiting stops it between blocks
-// (kernels/interrupt.h): a text of one block, as most are, costs no look for one.
+// at w in at most `most` bytes (most <= TextOut::max_room) and ending where it returns. A text of
+// 4 MB of room or more is made on the cores by put_in_order, in texts of about
+// put_each_text_bytes of room; the same text as on one thread. A smaller one, as most are, is
+// made here whole, and costs no look for a Ctrl-C.
 template <class Make>
 void put_each(TextOut& out, std::size_t count, std::size_t most, const Make& make) {
-  constexpr std::size_t block_bytes = std::size_t{8} << 20;
   auto items = [&](TextOut& to, std::size_t first, std::size_t last) {
     for (std::size_t k = first; k < last; ++k) {
       char* w = to.room(most);
       to.commit(make(w, k));
     }
   };
-  const unsigned threads = count > 1 && count * most >= block_bytes / 2 ? cores() : 1;
-  const std::size_t block =
-      threads > 1 ? std::max<std::size_t>(threads, block_bytes / most) : count;
-  std::vector<PiecesOut> others(threads - 1);
-  for (std::size_t first = 0; first < count; first += block) {
-    if (first > 0) check_interrupt();
-    const std::size_t last = std::min(count, first + block);
-    const std::size_t n = last - first;
-    in_parallel(threads, [&](unsigned t) {
-      items(t == 0 ? out : others[t - 1], first + n * t / threads, first + n * (t + 1) / threads);
-    });
-    for (PiecesOut& text : others) {
-      text.put_into(out);
-      text.clear();
-    }
+  if (count < 2 || count * most < (std::size_t{4} << 20)) {
+    items(out, 0, count);
+    return;
   }
+  const std::size_t per = std::max<std::size_t>(1, put_each_text_bytes / most);
+  put_in_order(out, (count + per - 1) / per, [&](std::size_t k, TextOut& to) {
+    items(to, k * per, std::min(count, (k + 1) * per));
+  });
 }
 
 }  // namespace igds

@@ -5,12 +5,14 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <limits>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
@@ -680,22 +682,83 @@ TEST_CASE("put_each: the items' text in order, made on the cores or on one, stri
   CHECK(test::read_file(s.disk.path("LINES", "IGS")) == expected);
 }
 
-TEST_CASE("put_each: a Ctrl-C waiting stops a text of many blocks between them, not one of one") {
+TEST_CASE("put_each: a Ctrl-C waiting stops a text of many texts between them, not one of one") {
   block_interrupts();
   while (take_interrupt()) {
   }
   auto make = [](char* w, std::size_t) { return std::fill_n(w, 64, 'x'); };
   REQUIRE(::kill(::getpid(), SIGINT) == 0);
-  // One block (less than 4 MB of room): made whole, the Ctrl-C left for the conversation.
+  // Less than 4 MB of room: made whole, the Ctrl-C left for the conversation.
   StringOut one;
   CHECK_NOTHROW(put_each(one, 1000, 64, make));
   CHECK(one.take_text().size() == 64000);
   CHECK(interrupt_pending());
-  // 24 MB of text in blocks of 8 MB: the first made, then stopped.
+  // 24 MB of text on the cores, in texts of 1 MB: the first put, then stopped, however many the
+  // other threads made meanwhile.
+  REQUIRE(put_each_text_bytes == std::size_t{1} << 20);
   StringOut many;
   CHECK_THROWS_AS(put_each(many, 3 * 131072, 64, make), Interrupted);
-  CHECK(many.size() == std::size_t{8} << 20);
+  CHECK(many.size() == put_each_text_bytes);
   CHECK(take_interrupt());
+}
+
+// The threads of this process now.
+std::size_t threads_now() {
+  return static_cast<std::size_t>(
+      std::distance(fs::directory_iterator("/proc/self/task"), fs::directory_iterator()));
+}
+
+TEST_CASE(
+    "put_in_order: texts of any length in order and a text that fails stops it with its threads "
+    "joined") {
+  // Texts of 0 to about 3 MB, each of its number's letter.
+  auto length = [](std::size_t k) { return k % 7 == 3 ? 0 : (k * 7919) % (3 << 20); };
+  auto make = [&](std::size_t k, TextOut& to) { to.put(char('a' + k % 26), length(k)); };
+  const std::size_t texts = 40;
+  std::string expected;
+  for (std::size_t k = 0; k < texts; ++k) expected.append(length(k), char('a' + k % 26));
+  const std::size_t before = threads_now();
+  StringOut text;
+  put_in_order(text, texts, make);
+  CHECK(text.take_text() == expected);
+  Scratch s;
+  CHECK(write_user_file(s.disk, "TEXTS", "IGS",
+                        [&](TextOut& out) { put_in_order(out, texts, make); }) == expected.size());
+  CHECK(test::read_file(s.disk.path("TEXTS", "IGS")) == expected);
+  // Text 17 throws before it writes: the texts before it are put, and the error comes here.
+  StringOut cut;
+  CHECK_THROWS_AS(put_in_order(cut, texts,
+                               [&](std::size_t k, TextOut& to) {
+                                 if (k == 17) throw std::runtime_error("text 17");
+                                 make(k, to);
+                               }),
+                  std::runtime_error);
+  std::size_t first17 = 0;
+  for (std::size_t k = 0; k < 17; ++k) first17 += length(k);
+  CHECK(cut.take_text() == expected.substr(0, first17));
+  // A text that fails on another thread: its error comes here too (tried until one does).
+  if (cores() > 1) {
+    const auto here = std::this_thread::get_id();
+    bool failed_elsewhere = false;
+    for (int attempt = 0; attempt < 1000 && !failed_elsewhere; ++attempt) {
+      std::atomic<bool> thrown{false};
+      StringOut some;
+      try {
+        put_in_order(some, texts, [&](std::size_t k, TextOut& to) {
+          if (std::this_thread::get_id() != here) {
+            thrown = true;
+            throw std::runtime_error("elsewhere");
+          }
+          make(k, to);
+        });
+        CHECK_FALSE(thrown.load());
+      } catch (const std::runtime_error&) {
+        failed_elsewhere = true;
+      }
+    }
+    CHECK(failed_elsewhere);
+  }
+  CHECK(threads_now() == before);
 }
 
 TEST_CASE("put_each: an item longer than it said is a fault, seen before another byte is put") {
