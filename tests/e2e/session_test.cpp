@@ -324,8 +324,8 @@ TEST_CASE("standard input that is not a terminal is a command file; - continues 
   CHECK(r.status == 0);
   CHECK(r.out ==
         "READY\nHELP SHORT\nType a command: BUILD CHANGE RESTORE DISPLAY PLOT STORE "
-        "SAVE WRITE END HELP\nERASE EXPORT FIT PUNCH LIST UNDO REDO ZOOM.\nA first letter is "
-        "enough (S is STORE); HELP LONG explains them all.\nREADY\nEND CMS\n");
+        "SAVE WRITE END HELP\nERASE EXPORT FIT PUNCH LIST UNDO REDO ZOOM IMPORT PICK.\nA first "
+        "letter is enough (S is STORE); HELP LONG explains them all.\nREADY\nEND CMS\n");
 
   write_file(files.path() / "one.igds", "* first file\nHELP SHORT\n");
   auto chained = run_igds(

@@ -11,6 +11,9 @@ function(case_names out)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "${EXE} --list-test-cases ${ARGN}: status ${status}\n${listed}")
   endif()
+  # A semicolon in a name would cut it in two as a CMake list: kept as a mark until the name is
+  # written (as a comma in the test's name, and doctest's one-character wildcard in its filter).
+  string(REPLACE ";" "<semicolon>" listed "${listed}")
   string(REPLACE "\n" ";" lines "${listed}")
   set(names)
   foreach(line IN LISTS lines)
@@ -39,6 +42,8 @@ foreach(name IN LISTS all)
   endif()
   # A comma separates doctest's filters: one in a name is escaped.
   string(REPLACE "," "\\," filter "${name}")
+  string(REPLACE "<semicolon>" "?" filter "${filter}")
+  string(REPLACE "<semicolon>" "," name "${name}")
   string(APPEND script
          "add_test([==[${name}]==] [==[${EXE}]==] [==[--test-case=${filter}]==])\n"
          "set_tests_properties([==[${name}]==] PROPERTIES WORKING_DIRECTORY [==[${DIR}]==]"
