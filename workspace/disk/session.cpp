@@ -374,16 +374,16 @@ struct Session::State {
         throw disk::Damage(fmt::format("{}: {}", name, err.reason()));
       }
       if (!file->exists()) throw disk::Damage(fmt::format("{} MISSING", name));
-      // Its frame and checksum, then whether it is the file saved, then its payload: only the
-      // first are reported with the file's name.
+      // Its frame and checksum, then whether it is the file saved, are reported with the file's
+      // name; then what its payload holds, as the reading says it.
       struct InPayload {
         disk::Damage damage;
       };
-      const bool saved = file->bytes().size() == e.linked.length &&
-                         disk::trailing_checksum(file->bytes()) == e.linked.sum;
+      const bool one_saved = file->bytes().size() == e.linked.length &&
+                             disk::trailing_checksum(file->bytes()) == e.linked.sum;
       try {
         image = disk::read_framed("IGDSIMAG", file->bytes(), [&](disk::Reader& r, std::uint32_t) {
-          if (!saved) throw InPayload{disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name))};
+          if (!one_saved) throw InPayload{disk::Damage(fmt::format("{}: NOT THE ONE SAVED", name))};
           try {
             Image read = r.image();
             r.finish();
