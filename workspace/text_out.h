@@ -95,9 +95,9 @@ class StringOut final : public TextOut {
   std::vector<char> buffer_;
 };
 
-// A text made aside in pieces of a megabyte, then put into another TextOut: a part of a large
-// text made on another thread while the first part goes into the file (a string would be copied
-// each time it grew). Written in order only (no seek).
+// A text made aside in pieces of a megabyte, then put into another TextOut: one of
+// put_in_order's texts, made on one thread while another puts those before it into the file (a
+// string would be copied each time it grew). Written in order only (no seek).
 class PiecesOut final : public TextOut {
  public:
   PiecesOut();

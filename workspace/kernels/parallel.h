@@ -1,7 +1,8 @@
 // The one way igds splits a computation between threads (docs/architecture.md, "Threads"): a
 // loop over the rows of a grid of millions of points cut into as many parts as the machine has
-// cores. (The text of a large file is made by workspace/text_out.h's put_each.) The threads are started by the call and joined before it
-// returns: nothing runs when no command does, and every thread has main's mask, SIGINT blocked.
+// cores (the text of a large file is made by workspace/text_out.h's put_each). The threads are
+// started by the call and joined before it returns: nothing runs when no command does, and
+// every thread has main's mask, SIGINT blocked.
 #pragma once
 
 #include <algorithm>
