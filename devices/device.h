@@ -51,11 +51,26 @@ struct PathList {
     points.clear();
     starts.assign(1, 0);
   }
-  // The paths of `more` after these.
-  void append(const PathList& more) {
-    const std::size_t base = points.size();
-    points.insert(points.end(), more.points.begin(), more.points.end());
-    for (std::size_t k = 1; k < more.starts.size(); ++k) starts.push_back(base + more.starts[k]);
+};
+
+// Lists of paths one after another, path k of all counted across them: a large drawing's placed
+// paths, each part placed on a thread of its own and none copied after the other.
+struct PathParts {
+  std::vector<PathList> parts;
+
+  PathParts() = default;
+  explicit PathParts(PathList one) { parts.push_back(std::move(one)); }
+  std::size_t size() const {
+    std::size_t n = 0;
+    for (const PathList& p : parts) n += p.size();
+    return n;
+  }
+  std::span<const DevicePoint> operator[](std::size_t k) const {
+    for (const PathList& p : parts) {
+      if (k < p.size()) return p[k];
+      k -= p.size();
+    }
+    return {};
   }
 };
 
@@ -81,7 +96,7 @@ class Device {
   }
   // The paths of a placed drawing in order, path k in styles[k]: style() then polyline() for
   // each. A device writing a large file may make the same bytes faster.
-  virtual void paths(const PathList& paths, std::span<const Style> styles) {
+  virtual void paths(const PathParts& paths, std::span<const Style> styles) {
     for (std::size_t k = 0; k < paths.size(); ++k) {
       style(styles[k]);
       polyline(paths[k]);

@@ -573,8 +573,8 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
              const Rendering& rendering) {
   const std::vector<std::size_t> before = polyline_points(drawing);
   const std::size_t items = drawing.size(), points = before.back();
-  // A large drawing in two parts that take about as long, placed at once on two threads, the
-  // second part's paths then put after the first's.
+  // A large drawing in two parts that take about as long, placed at once on two threads into
+  // lists of their own, the second part's paths after the first's.
   const unsigned parts = placing_threads(points);
   std::size_t cut = items;
   if (parts == 2) {
@@ -584,22 +584,21 @@ Placed place(const Drawing2& drawing, const Placement& at, const Box& clip,
                                    cost.begin());
   }
   Placed out, second;
-  PathList later;
+  out.paths.parts.resize(parts);
   in_parallel(parts, [&](unsigned part) {
     Placed& to = part == 0 ? out : second;
-    PathList& list = part == 0 ? out.paths : later;
+    PathList& list = out.paths.parts[part];
     const std::size_t from = part == 0 ? 0 : cut, until = part == 0 ? cut : items;
-    // Room for every polyline point at once, the second part's in the first's list too: a large
-    // drawing's list is not copied as it grows, nor when the second part is put after the first.
-    reserve_large(list.points, part == 0 ? before[items] : before[until] - before[from]);
+    // Room for every polyline point of the part at once: a large drawing's list is not copied as
+    // it grows.
+    reserve_large(list.points, before[until] - before[from]);
     ListSink sink(to, list);
     place_lines(drawing, from, until, at, clip, rendering, sink);
     to.clipped = sink.clipped;
   });
-  out.paths.append(later);
   out.styles.insert(out.styles.end(), second.styles.begin(), second.styles.end());
   out.box.add(second.box);
-  ListSink sink(out, out.paths);
+  ListSink sink(out, out.paths.parts.back());  // texts only: no path is added
   sink.clipped = out.clipped || second.clipped;
   place_texts(drawing, at, clip, rendering, sink);
   out.clipped = sink.clipped;

@@ -54,7 +54,7 @@ struct PlacedText {
 };
 // A drawing in integer device units.
 struct Placed {
-  PathList paths;                 // polylines, flattened curves and marks, in drawing order
+  PathParts paths;                // polylines, flattened curves and marks, in drawing order
   std::vector<Style> styles;      // the style of each path
   std::vector<PlacedText> texts;  // texts whose place lies inside the clip box
   bool clipped = false;           // something lay outside the clip box

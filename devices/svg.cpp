@@ -129,7 +129,7 @@ void SvgWriter::polyline(std::span<const DevicePoint> points) {
   at_ = at;
 }
 
-void SvgWriter::paths(const PathList& paths, std::span<const Style> styles) {
+void SvgWriter::paths(const PathParts& paths, std::span<const Style> styles) {
   // A path's bytes depend only on the writer's state when it starts: whether it ends the
   // element before (and with which attributes) and starts one. That is found path by path, in
   // order; the points are then written on the cores (put_each) in chunks, each needing only the

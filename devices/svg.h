@@ -24,7 +24,7 @@ class SvgWriter : public Device {
   void polyline(std::span<const DevicePoint> points) override;
   // The bytes of style() and polyline() for each path in turn, a large drawing's made on the
   // cores.
-  void paths(const PathList& paths, std::span<const Style> styles) override;
+  void paths(const PathParts& paths, std::span<const Style> styles) override;
   void text(DevicePoint p, std::string_view line) override;
   // A new page erases the screen: what was drawn is painted over with the white background
   // (the elements before it are already written).

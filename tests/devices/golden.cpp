@@ -117,7 +117,7 @@ TEST_CASE("SVG: a polyline written at once is the element its moves and draws ma
 TEST_CASE("SVG: a drawing's paths written at once, on the cores, are the elements path by path") {
   // Paths of every length up to hundreds of points, repeated points, paths that go on where the
   // last ended, paths of one place, empty paths, styles that change the attributes and styles
-  // that do not: a document of megabytes.
+  // that do not: a document of megabytes. The second page's paths come in parts.
   PathList list;
   std::vector<Style> styles;
   DevicePoint last{0, 0};
@@ -135,10 +135,22 @@ TEST_CASE("SVG: a drawing's paths written at once, on the cores, are the element
                                    : Style{k % 400 < 350 ? 2 : 3, Dash::dashed, k % 2 + 1});
   }
   REQUIRE(list.points.size() > 300000);
+  // The same paths in three lists, the second empty, as a drawing placed in parts holds them.
+  PathParts parts;
+  parts.parts.resize(3);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    PathList& part = parts.parts[k < 2500 ? 0 : 2];
+    part.points.insert(part.points.end(), list[k].begin(), list[k].end());
+    part.starts.push_back(part.points.size());
+  }
+  REQUIRE(parts.size() == list.size());
   StringOut once_text, path_text;
   SvgWriter at_once(once_text), by_path(path_text);
   for (int page = 0; page < 2; ++page) {
-    at_once.paths(list, styles);
+    if (page == 0)
+      at_once.paths(PathParts(list), styles);
+    else
+      at_once.paths(parts, styles);
     for (std::size_t k = 0; k < list.size(); ++k) {
       by_path.style(styles[k]);
       by_path.polyline(list[k]);
