@@ -149,6 +149,39 @@ TEST_CASE("INTPN holds the patches evaluated at a/(INT+1) and the input points b
   }
 }
 
+TEST_CASE("a grid made on the cores, in column chunks, by streaming stores: input points exact") {
+  // 2098 columns (more than a chunk of 2048, which does not end on an input column) by 1201
+  // rows: 60 MB of INTPN, made on the cores and written past the cache.
+  Grid g = wavy_grid(301, 700, 5);
+  g.inppn.ravel[3 * (150 * 700 + 683) + 1] += 1e7;  // an input point past the first chunk
+  const int intcu = 3, intst = 2;
+  Surface s = run(g, intcu, intst);
+  REQUIRE(s.intpn.shape == std::vector<std::size_t>{1201, 2098, 3});
+  auto pts = as_vec3(g.inppn);
+  std::size_t exact = 0;
+  for (int i = 0; i < g.nocur; ++i)
+    for (int j = 0; j < g.nostr; ++j) {
+      const Vec3 p = intpn_at(s.intpn, i * (intcu + 1), j * (intst + 1));
+      const Vec3 q = pts[i * g.nostr + j];
+      exact += std::memcmp(&p, &q, sizeof p) == 0;
+    }
+  CHECK(exact == std::size_t(g.nocur) * g.nostr);
+  // Every point of an input curve's row, and of the rows beside it, is its patch's.
+  for (std::size_t r : {0u, 1u, 599u, 600u, 601u, 1199u, 1200u})
+    for (std::size_t c = 0; c < 2098; ++c) {
+      const std::size_t i = std::min<std::size_t>(r / (intcu + 1), g.nocur - 2);
+      const std::size_t j = std::min<std::size_t>(c / (intst + 1), g.nostr - 2);
+      const double v = double(r - i * (intcu + 1)) / (intcu + 1);
+      const double u = double(c - j * (intst + 1)) / (intst + 1);
+      const double* m = s.patches.data() + 48 * (i * (g.nostr - 1) + j);
+      if (!(distance(intpn_at(s.intpn, r, c), eval_patch(m, u, v)) < 1e-6)) {
+        CAPTURE(r);
+        CAPTURE(c);
+        FAIL("a point is not its patch's");
+      }
+    }
+}
+
 TEST_CASE("a flat rectangular lattice interpolates to the uniform lattice") {
   const int nocur = 4, nostr = 5, intcu = 3, intst = 4;
   const double x0 = -3, y0 = 7, hx = 1.25, hy = 0.5;

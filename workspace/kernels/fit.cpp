@@ -66,6 +66,7 @@ struct FitJob {
   double* intpn;
   CurvePolynomials polynomials;
   Combine combine;
+  Vec3View points;  // the input points, written over their places in INTPN
 };
 
 // The four curve polynomials of patch row i over output columns [j0, j1): q[c] holds, point by
@@ -271,6 +272,15 @@ std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
         if (!job.combine(job.wv + 4 * (r - i * (job.ic + 1)), 3 * (j1 - j0), origin, q[0], q[1],
                          q[2], q[3], job.intpn + 3 * (r * job.cols + j0)))
           not_finite = std::min(not_finite, 3 * (r * job.cols + j0));
+        // An input curve's row: its input points come out bit-exact (docs/kernels.md), written
+        // over the ones computed while the row is at hand.
+        if ((r - i * (job.ic + 1)) % (job.ic + 1) != 0) continue;
+        const std::size_t curve = r / (job.ic + 1);
+        for (std::size_t j = (j0 + job.is) / (job.is + 1) * (job.is + 1); j < j1; j += job.is + 1) {
+          const Vec3 p = job.points[curve * job.ns + j / (job.is + 1)];
+          double* to = job.intpn + 3 * (r * job.cols + j);
+          to[0] = p.x, to[1] = p.y, to[2] = p.z;
+        }
       }
     }
     row = end;
@@ -316,19 +326,13 @@ std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches
              {c.x, c.y, c.z},
              intpn.data(),
              nullptr,
-             nullptr};
+             nullptr,
+             points};
   choose_kernels(job, intpn.size());
   std::atomic<std::size_t> not_finite{intpn.size()};
   parallel_for(shape.rows, threads, [&](std::size_t first, std::size_t last) {
     keep_least(not_finite, fit_rows(job, first, last));
   });
-  // The input points come out bit-exact (docs/kernels.md).
-  MutableVec3View grid = as_vec3(intpn);
-  for (std::size_t i = 0; i < std::size_t(nocur); ++i) {
-    for (std::size_t j = 0; j < std::size_t(nostr); ++j) {
-      grid[i * (intcu + 1) * shape.cols + j * (intst + 1)] = points[i * nostr + j];
-    }
-  }
   // Every number before the first stretch found not finite is (the input points are finite): the
   // first one is looked for from there, in the grid as it is now.
   const std::size_t from = not_finite.load();
