@@ -58,8 +58,6 @@ struct PathList {
 struct PathParts {
   std::vector<PathList> parts;
 
-  PathParts() = default;
-  explicit PathParts(PathList one) { parts.push_back(std::move(one)); }
   std::size_t size() const {
     std::size_t n = 0;
     for (const PathList& p : parts) n += p.size();

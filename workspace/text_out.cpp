@@ -9,6 +9,9 @@
 #include <system_error>
 #include <thread>
 
+#include "workspace/kernels/interrupt.h"
+#include "workspace/kernels/parallel.h"
+
 namespace igds {
 
 void TextOut::hand_on(std::size_t n) {

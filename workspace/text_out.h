@@ -13,9 +13,6 @@
 #include <utility>
 #include <vector>
 
-#include "workspace/kernels/interrupt.h"
-#include "workspace/kernels/parallel.h"
-
 namespace igds {
 
 class TextOut {

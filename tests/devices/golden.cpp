@@ -136,7 +136,8 @@ TEST_CASE("SVG: a drawing's paths written at once, on the cores, are the element
   }
   REQUIRE(list.points.size() > 300000);
   // The same paths in three lists, the second empty, as a drawing placed in parts holds them.
-  PathParts parts;
+  PathParts whole, parts;
+  whole.parts.push_back(list);
   parts.parts.resize(3);
   for (std::size_t k = 0; k < list.size(); ++k) {
     PathList& part = parts.parts[k < 2500 ? 0 : 2];
@@ -148,7 +149,7 @@ TEST_CASE("SVG: a drawing's paths written at once, on the cores, are the element
   SvgWriter at_once(once_text), by_path(path_text);
   for (int page = 0; page < 2; ++page) {
     if (page == 0)
-      at_once.paths(PathParts(list), styles);
+      at_once.paths(whole, styles);
     else
       at_once.paths(parts, styles);
     for (std::size_t k = 0; k < list.size(); ++k) {

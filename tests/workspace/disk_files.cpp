@@ -24,6 +24,7 @@
 #include "workspace/error.h"
 #include "workspace/images.h"
 #include "workspace/kernels/interrupt.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/text_out.h"
 
 using namespace igds;

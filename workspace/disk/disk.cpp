@@ -270,33 +270,36 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   RawArray patches, intpn;
   bool stored = true;  // PATCHES and INTPN are in the file
   try {
-    disk::read_framed(data_magic, file.bytes(), [&](disk::Reader& r, std::uint32_t version) {
-      in.nocur = r.i32();
-      in.nostr = r.i32();
-      in.intcu = r.i32();
-      in.intst = r.i32();
-      in.inppn = r.array(3 * max_input_points);
-      in.inptg = r.array(8 * (max_input_points + 1));
-      // Version 2: 1 when PATCHES and INTPN are the interpolation of the inputs and not stored.
-      if (version >= 2) {
-        const std::int32_t derived = r.i32();
-        if (derived < 0 || derived > 1) throw disk::Damage("FORMAT");
-        stored = derived == 0;
-      }
-      if (stored) {
-        patches = raw_array(r);
-        intpn = raw_array(r);
-      }
-      // Version 1 files written before the twists and AUTO mark end after INTPN: zero twists
-      // and typed tangents.
-      if (version >= 2 || !r.at_end()) {
-        const std::int32_t twists = r.i32(), automatic = r.i32();
-        if (twists < 0 || twists > 1 || automatic < 0 || automatic > 1)
-          throw disk::Damage("FORMAT");
-        in.set_surface_modes(twists == 1, automatic == 1);
-      }
-      r.finish();
-    });
+    stored =
+        disk::read_framed(data_magic, file.bytes(), [&](disk::Reader& r, std::uint32_t version) {
+          bool in_file = true;
+          in.nocur = r.i32();
+          in.nostr = r.i32();
+          in.intcu = r.i32();
+          in.intst = r.i32();
+          in.inppn = r.array(3 * max_input_points);
+          in.inptg = r.array(8 * (max_input_points + 1));
+          // Version 2: 1 when PATCHES and INTPN are the interpolation of the inputs and not stored.
+          if (version >= 2) {
+            const std::int32_t derived = r.i32();
+            if (derived < 0 || derived > 1) throw disk::Damage("FORMAT");
+            in_file = derived == 0;
+          }
+          if (in_file) {
+            patches = raw_array(r);
+            intpn = raw_array(r);
+          }
+          // Version 1 files written before the twists and AUTO mark end after INTPN: zero twists
+          // and typed tangents.
+          if (version >= 2 || !r.at_end()) {
+            const std::int32_t twists = r.i32(), automatic = r.i32();
+            if (twists < 0 || twists > 1 || automatic < 0 || automatic > 1)
+              throw disk::Damage("FORMAT");
+            in.set_surface_modes(twists == 1, automatic == 1);
+          }
+          r.finish();
+          return in_file;
+        });
   } catch (const disk::Damage& d) {
     throw damaged(n, "IGDSDATA", d.reason(), kept);
   }

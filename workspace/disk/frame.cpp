@@ -223,7 +223,6 @@ void Reader::add_read() {
 }
 
 std::uint64_t Reader::sum() {
-  add_read();
   if (sum_ && summed_ < in_.size()) sum_->add(in_.substr(summed_));
   summed_ = in_.size();
   return sum_ ? sum_->value() : 0;
@@ -351,11 +350,11 @@ std::uint32_t newest_version(std::string_view magic) {
   return magic == "IGDSCONT" || magic == "IGDSDATA" ? 2 : 1;
 }
 
-Unframed unframe(std::string_view magic, std::string_view file) {
+Frame unframe(std::string_view magic, std::string_view file) {
   const Frame frame = open_frame(magic, file);
   if (checksum(file.substr(0, frame_header_bytes + frame.payload.size())) != frame.sum)
     throw Damage("CHECKSUM");
-  return {frame.payload, frame.version};
+  return frame;
 }
 
 Frame open_frame(std::string_view magic, std::string_view file) {

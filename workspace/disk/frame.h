@@ -9,7 +9,6 @@
 #include <deque>
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <vector>
 
 #include "workspace/error.h"
@@ -119,20 +118,16 @@ std::string frame(std::string_view magic, std::string_view payload, std::uint32_
 // session file of records and recipes (IGDSCONT) and for IGDSDATA that stores PATCHES and INTPN
 // only when they are not the interpolation of its inputs, 1 for every other kind.
 std::uint32_t newest_version(std::string_view magic);
-// The payload of a framed file and its version; throws Damage saying why the file is not a good
-// one (EMPTY FILE, NOT AN x FILE, TRUNCATED, LENGTH, FORMAT VERSION n OF A NEWER IGDS, CHECKSUM).
-struct Unframed {
-  std::string_view payload;
-  std::uint32_t version = 1;
-};
-Unframed unframe(std::string_view magic, std::string_view file);
-// The frame of a file checked as unframe does, all but its checksum: the payload, its version,
-// and the checksum the file ends with.
+// A framed file's payload, its version, and the checksum the file ends with.
 struct Frame {
   std::string_view payload;
   std::uint32_t version = 1;
   std::uint64_t sum = 0;
 };
+// The frame of a good file; throws Damage saying why the file is not a good one (EMPTY FILE, NOT
+// AN x FILE, TRUNCATED, LENGTH, FORMAT VERSION n OF A NEWER IGDS, CHECKSUM).
+Frame unframe(std::string_view magic, std::string_view file);
+// The same, all but the checksum.
 Frame open_frame(std::string_view magic, std::string_view file);
 // Reads a framed file's payload with read(Reader&, version) in one pass: the checksum is found
 // as the bytes are read, a large array's from its copy while it is in the cache, instead of in a
@@ -145,14 +140,9 @@ auto read_framed(std::string_view magic, std::string_view file, const Read& read
   sum.add(file.substr(0, frame_header_bytes));
   Reader r(frame.payload, &sum);
   try {
-    if constexpr (std::is_void_v<decltype(read(r, frame.version))>) {
-      read(r, frame.version);
-      if (r.sum() != frame.sum) throw Damage("CHECKSUM");
-    } else {
-      auto value = read(r, frame.version);
-      if (r.sum() != frame.sum) throw Damage("CHECKSUM");
-      return value;
-    }
+    auto value = read(r, frame.version);
+    if (r.sum() != frame.sum) throw Damage("CHECKSUM");
+    return value;
   } catch (...) {
     if (checksum(file.substr(0, frame_header_bytes + frame.payload.size())) != frame.sum)
       throw Damage("CHECKSUM");

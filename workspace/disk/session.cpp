@@ -433,7 +433,7 @@ Workspace Session::State::read_session() {
                                     kept.size(), kept.front(), kept.size() > 1 ? " ..." : ""));
     return Workspace{};
   }
-  const disk::Unframed u = disk::unframe(session_magic, file.bytes());
+  const disk::Frame u = disk::unframe(session_magic, file.bytes());
   if (u.version == 1) return read_legacy(u.payload);
   SessionTable t = disk::decode_session(u.payload);
   if (auto p = status_problem(t.status)) throw disk::Damage("STATUS: " + p->reason);

@@ -14,6 +14,7 @@
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/interrupt.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/numbers/decimal.h"
 #include "workspace/numbers/fortran.h"
 

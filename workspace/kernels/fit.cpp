@@ -274,7 +274,7 @@ std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
           not_finite = std::min(not_finite, 3 * (r * job.cols + j0));
         // An input curve's row: its input points come out bit-exact (docs/kernels.md), written
         // over the ones computed while the row is at hand.
-        if ((r - i * (job.ic + 1)) % (job.ic + 1) != 0) continue;
+        if (r % (job.ic + 1) != 0) continue;
         const std::size_t curve = r / (job.ic + 1);
         for (std::size_t j = (j0 + job.is) / (job.is + 1) * (job.is + 1); j < j1; j += job.is + 1) {
           const Vec3 p = job.points[curve * job.ns + j / (job.is + 1)];
