@@ -11,6 +11,7 @@
 
 #include "tests/bench/bench.h"
 #include "tests/bench/inputs.h"
+#include "workspace/kernels/coons.h"
 #include "workspace/kernels/curvature.h"
 #include "workspace/kernels/hidden.h"
 #include "workspace/kernels/project.h"
@@ -72,6 +73,12 @@ IGDS_BENCH("spline") {
                           scratch);
   });
   fmt::print("spline_1e6_ms {:.2f}\n", seconds * 1e3);
+  // The tangents of every curve and stringer of the largest grid igds takes: 500 x 500 lines of
+  // 500 points, the curves' and the stringers' on a thread each.
+  const Input in = wavy(500, 500);
+  const double grid = igds::bench::best_seconds(
+      5, [&] { (void)igds::grid_tangents(in.nocur, in.nostr, igds::as_vec3(in.inppn), in.inptg); });
+  fmt::print("grid_tangents_500x500_ms {:.2f}\n", grid * 1e3);
 }
 
 IGDS_BENCH("recompute") {

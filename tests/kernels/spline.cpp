@@ -205,3 +205,32 @@ TEST_CASE("the scratch space can be reused across lines of different lengths") {
     CHECK(with == without);
   }
 }
+
+TEST_CASE("lines given at once have each line's own tangents, bit for bit") {
+  // Runs of four lines of as many points are solved together: lines of 9 points, with a repeat
+  // among them, with a length of their own, of one and two points, and a run cut short at the end.
+  Random rnd(7);
+  std::vector<std::vector<Vec3>> points;
+  for (std::size_t n :
+       {9u, 9u, 9u, 9u, 9u, 9u, 9u, 9u, 9u, 5u, 9u, 9u, 9u, 9u, 2u, 2u, 2u, 2u, 1u, 9u, 9u, 9u})
+    points.push_back(random_line(rnd, n));
+  points[6][4] = points[6][3];  // the second run of four has a repeat in its third line
+  std::vector<igds::test::Flat<Vec3>> flat;
+  for (const auto& p : points) flat.emplace_back(p);
+  std::vector<Vec3> first, last;
+  std::vector<std::vector<Vec3>> together, alone;
+  std::vector<SplineLine> lines;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    first.push_back(rnd.vec(-1, 1)), last.push_back(rnd.vec(-1, 1));
+    together.emplace_back(points[k].size()), alone.emplace_back(points[k].size());
+  }
+  for (std::size_t k = 0; k < points.size(); ++k)
+    lines.push_back({flat[k], first[k], last[k], together[k]});
+  SplineScratch scratch;
+  spline_tangents(lines, scratch);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    spline_of(points[k], first[k], last[k], alone[k]);
+    CAPTURE(k);
+    CHECK(together[k] == alone[k]);
+  }
+}

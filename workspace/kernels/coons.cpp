@@ -1,5 +1,6 @@
 #include "workspace/kernels/coons.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cassert>
 
@@ -17,27 +18,43 @@ Vec3 border_tangent(const Array& inptg, std::size_t row) {
 GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg) {
   const std::size_t nc = nocur, ns = nostr;
   GridTangents t;
-  t.along_curves.resize(nc * ns);
-  t.along_stringers.resize(nc * ns);
+  // Each family's tangents are made on a thread of its own, which also writes them first.
   // INPTG rows (workspace/state.h): curve i's ends at 2i and 2i+1.
   auto curves = [&] {
+    t.along_curves.resize(nc * ns);
     SplineScratch scratch;
-    for (std::size_t i = 0; i < nc; ++i) {
-      spline_tangents(points.subspan(i * ns, ns), border_tangent(inptg, 2 * i),
-                      border_tangent(inptg, 2 * i + 1),
-                      std::span<Vec3>(t.along_curves).subspan(i * ns, ns), scratch);
-    }
+    std::vector<SplineLine> lines(nc);
+    for (std::size_t i = 0; i < nc; ++i)
+      lines[i] = {points.subspan(i * ns, ns), border_tangent(inptg, 2 * i),
+                  border_tangent(inptg, 2 * i + 1),
+                  std::span<Vec3>(t.along_curves).subspan(i * ns, ns)};
+    spline_tangents(lines, scratch);
   };
-  // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1.
+  // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1. The stringers are copied `block` side by
+  // side, a row of them at once, and their tangents copied back the same way: one stringer alone
+  // would read and write a cache line for each of its points, a row's length apart.
   auto stringers = [&] {
+    t.along_stringers.resize(nc * ns);
     SplineScratch scratch;
-    std::vector<double> column(3 * nc);
-    std::vector<Vec3> column_tangents(nc);
-    for (std::size_t j = 0; j < ns; ++j) {
-      for (std::size_t i = 0; i < nc; ++i) Vec3(points[i * ns + j]).store(&column[3 * i]);
-      spline_tangents(Vec3View(column.data(), nc), border_tangent(inptg, 2 * nc + 2 * j),
-                      border_tangent(inptg, 2 * nc + 2 * j + 1), column_tangents, scratch);
-      for (std::size_t i = 0; i < nc; ++i) t.along_stringers[i * ns + j] = column_tangents[i];
+    constexpr std::size_t block = 16;
+    std::vector<double> columns(3 * nc * block);
+    std::vector<Vec3> column_tangents(nc * block);
+    std::vector<SplineLine> lines;
+    for (std::size_t j0 = 0; j0 < ns; j0 += block) {
+      const std::size_t m = std::min(block, ns - j0);
+      for (std::size_t i = 0; i < nc; ++i)
+        for (std::size_t b = 0; b < m; ++b)
+          Vec3(points[i * ns + j0 + b]).store(&columns[3 * (b * nc + i)]);
+      lines.clear();
+      for (std::size_t b = 0; b < m; ++b)
+        lines.push_back({Vec3View(&columns[3 * b * nc], nc),
+                         border_tangent(inptg, 2 * nc + 2 * (j0 + b)),
+                         border_tangent(inptg, 2 * nc + 2 * (j0 + b) + 1),
+                         std::span<Vec3>(column_tangents).subspan(b * nc, nc)});
+      spline_tangents(lines, scratch);
+      for (std::size_t i = 0; i < nc; ++i)
+        for (std::size_t b = 0; b < m; ++b)
+          t.along_stringers[i * ns + j0 + b] = column_tangents[b * nc + i];
     }
   };
   // The two families are independent: one thread each when the grid is large.

@@ -1,34 +1,53 @@
 #include "workspace/kernels/spline.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 
 namespace igds {
 
 namespace {
 
-// The C2 system on distinct points q (m >= 2), tangents into tg; cp is work space of size m.
-// Thomas algorithm with the known end tangents as rows 0 and m-1 (cp[0] = 0 moves L_1 TG_0 to the
-// right-hand side of row 1); the interior rows are spline_row's (spline.h).
-template <class Points>
-void solve(const Points& q, Vec3 first, Vec3 last, std::span<Vec3> tg, double* cp) {
-  const std::size_t m = q.size();
-  cp[0] = 0;
-  tg[0] = first;
-  Vec3 back = q[1] - q[0];
-  double lp = chord_length(q[0], q[1]);
-  for (std::size_t i = 1; i + 1 < m; ++i) {
-    const Vec3 ahead = q[i + 1] - q[i];
-    const double ln = chord_length(q[i], q[i + 1]);
-    const SplineRow row = spline_row(back, ahead, lp, ln);
-    const double pivot = 1 / (row.diagonal - row.lower * cp[i - 1]);
-    cp[i] = row.upper * pivot;
-    tg[i] = pivot * (row.known - row.lower * tg[i - 1]);
-    back = ahead;
-    lp = ln;
+// The C2 system on the distinct points of L lines of m >= 2 points each (q[l], end tangents
+// first[l] and last[l]), tangents into tg[l]; cp is work space of L * m. Thomas algorithm with the
+// known end tangents as rows 0 and m-1 (cp[0] = 0 moves L_1 TG_0 to the right-hand side of row 1);
+// the interior rows are spline_row's (spline.h). Each row waits on a division of the row before:
+// the lines' rows are made in turn, so that one line's division runs while another's waits, and
+// each line's numbers are those of its own solve.
+template <std::size_t L, class Points>
+void solve(const std::array<Points, L>& q, const std::array<Vec3, L>& first,
+           const std::array<Vec3, L>& last, const std::array<std::span<Vec3>, L>& tg, double* cp) {
+  const std::size_t m = q[0].size();
+  Vec3 back[L];
+  double lp[L];
+  for (std::size_t l = 0; l < L; ++l) {
+    cp[l] = 0;
+    tg[l][0] = first[l];
+    back[l] = q[l][1] - q[l][0];
+    lp[l] = chord_length(q[l][0], q[l][1]);
   }
-  tg[m - 1] = last;
-  for (std::size_t i = m - 1; i-- > 1;) tg[i] = tg[i] - cp[i] * tg[i + 1];
+  for (std::size_t i = 1; i + 1 < m; ++i) {
+    for (std::size_t l = 0; l < L; ++l) {
+      const Vec3 ahead = q[l][i + 1] - q[l][i];
+      const double ln = chord_length(q[l][i], q[l][i + 1]);
+      const SplineRow row = spline_row(back[l], ahead, lp[l], ln);
+      const double pivot = 1 / (row.diagonal - row.lower * cp[(i - 1) * L + l]);
+      cp[i * L + l] = row.upper * pivot;
+      tg[l][i] = pivot * (row.known - row.lower * tg[l][i - 1]);
+      back[l] = ahead;
+      lp[l] = ln;
+    }
+  }
+  for (std::size_t l = 0; l < L; ++l) tg[l][m - 1] = last[l];
+  for (std::size_t i = m - 1; i-- > 1;)
+    for (std::size_t l = 0; l < L; ++l) tg[l][i] = tg[l][i] - cp[i * L + l] * tg[l][i + 1];
+}
+
+// Whether two consecutive points of the line are equal.
+bool has_repeats(Vec3View points) {
+  for (std::size_t k = 1; k < points.size(); ++k)
+    if (Vec3(points[k]) == points[k - 1]) return true;
+  return false;
 }
 
 }  // namespace
@@ -38,15 +57,13 @@ void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out
   assert(out.size() == points.size());
   const std::size_t n = points.size();
   if (n == 0) return;
-  bool repeated = false;
-  for (std::size_t k = 1; k < n && !repeated; ++k) repeated = Vec3(points[k]) == points[k - 1];
-  if (!repeated) {
+  if (!has_repeats(points)) {
     if (n == 1) {
       out[0] = Vec3{};  // a single point has no direction
       return;
     }
     scratch.upper.resize(n);
-    solve(points, first, last, out, scratch.upper.data());
+    solve<1>(std::array{points}, {first}, {last}, {out}, scratch.upper.data());
     return;
   }
   // Merge runs of equal consecutive points, solve on the distinct ones and give every duplicate
@@ -67,8 +84,37 @@ void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out
   }
   scratch.upper.resize(m);
   scratch.rhs.resize(m);
-  solve(std::span<const Vec3>(q), first, last, scratch.rhs, scratch.upper.data());
+  solve<1>(std::array{std::span<const Vec3>(q)}, {first}, {last}, {std::span<Vec3>(scratch.rhs)},
+           scratch.upper.data());
   for (std::size_t k = 0; k < n; ++k) out[k] = scratch.rhs[to[k]];
+}
+
+void spline_tangents(std::span<const SplineLine> lines, SplineScratch& scratch) {
+  constexpr std::size_t group = 4;
+  std::size_t k = 0;
+  while (k < lines.size()) {
+    // Four lines of as many points (two or more), none with a repeat, are solved together.
+    const std::size_t n = lines[k].points.size();
+    bool together = k + group <= lines.size() && n >= 2;
+    for (std::size_t l = k; together && l < k + group; ++l)
+      together = lines[l].points.size() == n && !has_repeats(lines[l].points);
+    if (!together) {
+      spline_tangents(lines[k].points, lines[k].first, lines[k].last, lines[k].out, scratch);
+      ++k;
+      continue;
+    }
+    std::array<Vec3View, group> points;
+    std::array<Vec3, group> first, last;
+    std::array<std::span<Vec3>, group> out;
+    for (std::size_t l = 0; l < group; ++l) {
+      const SplineLine& line = lines[k + l];
+      assert(line.out.size() == n);
+      points[l] = line.points, first[l] = line.first, last[l] = line.last, out[l] = line.out;
+    }
+    scratch.upper.resize(group * n);
+    solve<group>(points, first, last, out, scratch.upper.data());
+    k += group;
+  }
 }
 
 void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out) {

@@ -65,6 +65,16 @@ void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out
                      SplineScratch& scratch);
 void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out);
 
+// One grid line of many given to spline_tangents at once.
+struct SplineLine {
+  Vec3View points;
+  Vec3 first, last;
+  std::span<Vec3> out;
+};
+// spline_tangents of each line, bit for bit. Lines of as many points without a repeat are solved
+// four at a time, in about the time of one: a line's solve waits on a division at each point.
+void spline_tangents(std::span<const SplineLine> lines, SplineScratch& scratch);
+
 // The point at s in [0, 1] of the arc from p0 to p1 with tangents t0, t1 per unit of length: the
 // tangents are scaled by the chord length |p1 - p0| (docs/kernels.md), so a zero-length arc is its
 // point.
