@@ -579,8 +579,9 @@ Picture picture_of(std::shared_ptr<const Image> image) {
     add_combs(d, image->combs, g, window);
     return pic;
   }
-  // The curves and stringers read the image's own points: no copy of a large grid.
-  const auto pool = d.share(image, g.data, 2 * g.planes * g.rows);
+  // The curves and stringers read the image's own points: no copy of a large grid, and its box
+  // when the projection found it.
+  const auto pool = d.share(image, g.data, 2 * g.planes * g.rows, image->extent);
   for (std::size_t c = 0; c < g.planes; ++c)
     d.add_polyline(pool, 2 * c * g.rows, g.rows, 2, {}, {Role::curve, static_cast<int>(c + 1)});
   for (std::size_t r = 0; r < g.rows; ++r)

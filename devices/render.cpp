@@ -456,18 +456,34 @@ Box bounds(const Drawing2& drawing) {
     return at->pool == item.pool && at->from <= item.first && last <= at->to;
   };
 
+  // A pool whose items of consecutive points cover all of it, shared with its box (an image made
+  // by a projection): that box, and none of the pool's items read.
+  const double inf = std::numeric_limits<double>::infinity();
+  Box b{inf, inf, -inf, -inf};
+  std::vector<std::uint32_t> known;
+  for (const Run& r : merged) {
+    const auto& extent = drawing.pool_extent(r.pool);
+    if (!extent || r.from != 0 || r.to < drawing.pool_size(r.pool)) continue;
+    known.push_back(r.pool);
+    const auto& e = *extent;
+    b = {std::min(b.x0, e[0]), std::min(b.y0, e[1]), std::max(b.x1, e[2]), std::max(b.y1, e[3])};
+  }
+  auto is_known = [&](std::uint32_t pool) {
+    return pool != 0 && std::find(known.begin(), known.end(), pool) != known.end();
+  };
+
   // The points to read, split between as many threads as pay (a grid's are tens of megabytes).
   std::vector<std::pair<std::size_t, std::size_t>> read;  // item, its points before
   std::size_t points = 0;
   const auto items = drawing.items();
   for (std::size_t k = 0; k < items.size(); ++k) {
     const auto& item = items[k];
-    if (item.count == 0 || (item.pool != 0 && item.stride != n && covered(item))) continue;
+    if (item.count == 0 || is_known(item.pool) ||
+        (item.pool != 0 && item.stride != n && covered(item)))
+      continue;
     read.push_back({k, points});
     points += drawing.points(item).size();
   }
-  const double inf = std::numeric_limits<double>::infinity();
-  Box b{inf, inf, -inf, -inf};
   if (points == 0) return b;
   const unsigned threads = threads_for(2 * points);
   std::vector<Box> parts(threads);

@@ -22,7 +22,8 @@ struct Placement {
 };
 
 // The bounding box of the finite points of a drawing: polyline points, curve control points,
-// marks and texts (x0 > x1 when there are none).
+// marks and texts (x0 > x1 when there are none). A shared pool's points are not read when the
+// pool came with its box and items of consecutive points cover all of it: the box is theirs.
 Box bounds(const Drawing2& drawing);
 
 // The placement that fits `drawing` into `box`, centred, aspect kept, leaving `mark` device units

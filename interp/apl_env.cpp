@@ -373,6 +373,7 @@ void AplEnvironment::set(std::string_view name, const Value& value) {
         image.desim = apl_args::description_of(a.ravel);
       } else {
         image.points = std::move(a);
+        image.extent.reset();
         image.arrows = Array();
       }
       slot = std::make_shared<const Image>(std::move(image));

@@ -19,12 +19,13 @@ namespace igds {
 namespace {
 
 // The points projected (the view point of a conic projection must lie outside them, workspace/
-// kernels/project.h project_image), and the first whose image is not finite (points.size(): none).
-std::pair<Array, std::size_t> projected(Vec3View points, std::vector<std::size_t> shape,
-                                        const View& view, Vec3 centre) {
+// kernels/project.h project_image), the first whose image is not finite (points.size(): none) and
+// the box of the images.
+std::pair<Array, ProjectedImage> projected(Vec3View points, std::vector<std::size_t> shape,
+                                           const View& view, Vec3 centre) {
   Array out(std::move(shape));
-  const std::size_t k = project_image(view, centre, points, as_point2(out));
-  return {std::move(out), k};
+  const ProjectedImage found = project_image(view, centre, points, as_point2(out));
+  return {std::move(out), found};
 }
 
 // A projection of finite points can overflow (coordinates near the largest numbers, a CONIC eye
@@ -52,8 +53,8 @@ Image input_image(const Workspace& ws, const View& view) {
   const Vec3 centre = bounding_box_centre(points);
   Image image;
   image.desim = {0, view.projection, view.parameters};
-  std::size_t not_finite = 0;
-  std::tie(image.points, not_finite) =
+  ProjectedImage found;
+  std::tie(image.points, found) =
       projected(points, {static_cast<std::size_t>(ws.nocur), static_cast<std::size_t>(ws.nostr), 2},
                 view, centre);
 
@@ -84,7 +85,8 @@ Image input_image(const Workspace& ws, const View& view) {
     arrows.insert(arrows.end(), {p[0], p[1], (p[2] - p[0]) / h, (p[3] - p[1]) / h, double(k),
                                  r < curve_rows ? 1.0 : 0.0});
   }
-  check_projected(not_finite, points.size(), "INPPN", 1);
+  check_projected(found.not_finite, points.size(), "INPPN", 1);
+  image.extent = found.extent;
   for (std::size_t a = 0; a < arrows.size(); a += 6) {
     if (first_not_finite(&arrows[a], 4) == 4) continue;
     DataError e(DataError::Problem::image_not_finite);
@@ -113,10 +115,11 @@ Image grid_image(const Workspace& ws, const View& view, bool hidden) {
   Image image;
   image.desim = {1, view.projection, view.parameters, hidden};
   const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
-  std::size_t not_finite = 0;
-  std::tie(image.points, not_finite) =
+  ProjectedImage found;
+  std::tie(image.points, found) =
       projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view, centre);
-  check_projected(not_finite, points.size(), "INTPN", ws.intpn.shape[1]);
+  check_projected(found.not_finite, points.size(), "INTPN", ws.intpn.shape[1]);
+  image.extent = found.extent;
   if (hidden) {
     // Finite wherever the projection is (a CONIC point is in front of the eye).
     image.nearness = Array({ws.intpn.shape[0], ws.intpn.shape[1]});
@@ -171,13 +174,13 @@ Image comb_image(const Workspace& ws, const View& view) {
   for (std::size_t k = 0; k < points.size(); ++k)
     for (std::size_t d = 0; d < 2; ++d)
       ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
-  std::size_t not_finite = 0;
-  std::tie(image.combs, not_finite) =
+  ProjectedImage found;
+  std::tie(image.combs, found) =
       projected(as_vec3(std::as_const(bends)), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,
                 bounding_box_centre(as_vec3(ws.inppn)));
   // A comb that overflowed is named by its point of INTPN (two combs a point).
-  if (not_finite < ends.size())
-    check_projected(not_finite / 2, points.size(), "INTPN", ws.intpn.shape[1]);
+  if (found.not_finite < ends.size())
+    check_projected(found.not_finite / 2, points.size(), "INTPN", ws.intpn.shape[1]);
   return image;
 }
 

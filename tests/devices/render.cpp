@@ -224,6 +224,35 @@ TEST_CASE("bounds: every finite point, read in parts on two threads in a large d
   }
 }
 
+TEST_CASE("bounds: a shared grid's box, when it comes with the grid, stands for its points") {
+  const std::size_t planes = 30, rows = 20;
+  auto grid = grid_points(planes, rows, [](double c, double r) {
+    return Point2{0.5 * r + 0.1 * c, 0.4 * c - 0.05 * r};
+  });
+  auto same = [](const Box& a, const Box& b) {
+    return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+  };
+  const Box read = bounds(shared_grid(grid, planes, rows));
+  // A box other than the points' shows which one bounds took.
+  const Drawing2::Extent told{-7, -8, 90, 91};
+  auto with_box = [&](bool curves, bool stringers, std::size_t skip) {
+    Drawing2 d;
+    const auto pool = d.share(grid, grid->data(), grid->size(), told);
+    for (std::size_t c = 0; curves && c < planes; ++c)
+      if (c != skip) d.add_polyline(pool, 2 * c * rows, rows, 2);
+    for (std::size_t r = 0; stringers && r < rows; ++r)
+      d.add_polyline(pool, 2 * r, planes, 2 * rows);
+    d.add_mark({100, 0}, MarkShape::cross, 3);  // a point of the drawing's own, read
+    return bounds(d);
+  };
+  // The curves cover the grid: its box, the stringers not read, the mark added.
+  CHECK(same(with_box(true, true, planes), Box{-7, -8, 100, 91}));
+  CHECK(same(with_box(true, false, planes), Box{-7, -8, 100, 91}));
+  // A curve missing, or the stringers alone: the points are read.
+  CHECK(same(with_box(true, true, 4), Box{read.x0, read.y0, 100, read.y1}));
+  CHECK(same(with_box(false, true, planes), Box{read.x0, read.y0, 100, read.y1}));
+}
+
 TEST_CASE("DeviceBox: the box of the points added, two at a time or one, and of boxes") {
   DeviceBox empty;
   CHECK(empty.empty());

@@ -290,6 +290,21 @@ TEST_CASE("a combs image in END APL: DESIM[1] is 3; IMAGE or DESIM assigned drop
   CHECK(apl.env.start().has_value());  // refused: DESIM[1] IS NOT 0, 1, 2 OR 3
 }
 
+TEST_CASE("an IMAGE assigned in END APL is not said to have its projection's box") {
+  Workspace ws = make_interpolated(3, 3, 1, 1);
+  ws.image = std::make_shared<const Image>(image_of(ws, {1, Projection::orthogonal, {1, 0, 0}}));
+  REQUIRE(ws.image->extent);
+  Apl apl(std::move(ws));
+  // The description alone: the points kept, and their box.
+  CHECK(apl("DESIM←1 4 2 0 0").empty());
+  CHECK(!apl.env.start());
+  CHECK(apl.ws.image->extent);
+  // The points: a box of its own, found when the image is drawn.
+  CHECK(apl("IMAGE←IMAGE×2").empty());
+  CHECK(!apl.env.start());
+  CHECK_FALSE(apl.ws.image->extent);
+}
+
 TEST_CASE("workspace_variable and defined_variables") {
   Workspace ws = surface(2, 2, 0, 0);
   CHECK(workspace_variable(ws, "nocur")->ravel == Ravel{2});

@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -279,8 +281,8 @@ TEST_CASE("an axis or plane beyond an int's range is refused before it is made a
 }
 
 TEST_CASE(
-    "project_image: project() on every core, the first image not finite and a CONIC eye "
-    "in the points' box found in the same pass") {
+    "project_image: project() on every core, the first image not finite, the images' box and a "
+    "CONIC eye in the points' box found in the same pass") {
   // Enough points to be projected on every core: a sheet 1000 x 800 over z = 0..2.
   const std::size_t columns = 1000, rows = 800, n = columns * rows;
   Flat<Vec3> in(n);
@@ -295,14 +297,24 @@ TEST_CASE(
   for (const View& view : views) {
     CAPTURE(int(view.projection));
     project(view, centre, in, expected);
-    CHECK(project_image(view, centre, in, out) == n);
+    const ProjectedImage found = project_image(view, centre, in, out);
+    CHECK(found.not_finite == n);
     CHECK(out.d == expected.d);  // bit for bit
+    // The box of the images, each side reached by an image.
+    std::array<double, 4> box{expected.d[0], expected.d[1], expected.d[0], expected.d[1]};
+    for (std::size_t k = 0; k < n; ++k) {
+      box[0] = std::min(box[0], expected.d[2 * k]),
+      box[1] = std::min(box[1], expected.d[2 * k + 1]);
+      box[2] = std::max(box[2], expected.d[2 * k]),
+      box[3] = std::max(box[3], expected.d[2 * k + 1]);
+    }
+    CHECK(found.extent == box);
   }
   // Points near the largest numbers overflow under ISOMETRIC: the first of two, in two parts.
   Flat<Vec3> huge = in;
   for (const std::size_t k : {n - 1000, n / 3 + 7}) huge.set(k, {1.7e308, 1.7e308, 1.7e308});
-  CHECK(project_image(views[1], centre, huge, out) == n / 3 + 7);
-  CHECK(project_image(views[0], centre, huge, out) == n);  // ORTHOGONAL adds nothing
+  CHECK(project_image(views[1], centre, huge, out).not_finite == n / 3 + 7);
+  CHECK(project_image(views[0], centre, huge, out).not_finite == n);  // ORTHOGONAL adds nothing
 
   // A CONIC eye inside the box, points behind it: refused as inside it, not as behind it.
   auto conic = [](Vec3 eye) { return View{Projection::conic, {eye.x, eye.y, eye.z}}; };

@@ -7,8 +7,8 @@ namespace igds {
 
 template <class P>
 std::uint32_t Drawing<P>::share(std::shared_ptr<const void> owner, const double* data,
-                                std::size_t doubles) {
-  pools_.push_back({data, doubles, std::move(owner)});
+                                std::size_t doubles, std::optional<Extent> extent) {
+  pools_.push_back({data, doubles, std::move(owner), extent});
   return static_cast<std::uint32_t>(pools_.size());
 }
 

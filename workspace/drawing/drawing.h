@@ -6,10 +6,12 @@
 // Drawing2 and know nothing of grids or IMAGE.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -81,9 +83,18 @@ class Drawing {
     std::size_t text = 0;                 // text: its string
   };
 
+  // The lowest then the highest coordinate of each axis (x0 y0 x1 y1 in the plane).
+  using Extent = std::array<double, 2 * n>;
   // Points that stay with their owner (an image's projected grid): items may refer to them
-  // without copying; `owner` keeps them alive as long as the drawing.
-  std::uint32_t share(std::shared_ptr<const void> owner, const double* data, std::size_t doubles);
+  // without copying; `owner` keeps them alive as long as the drawing. `extent`: the box of all
+  // `doubles / n` points, every one finite, when the owner knows it.
+  std::uint32_t share(std::shared_ptr<const void> owner, const double* data, std::size_t doubles,
+                      std::optional<Extent> extent = {});
+  // A shared pool's size in doubles, and the box it was shared with.
+  std::size_t pool_size(std::uint32_t pool) const { return pools_[pool - 1].size; }
+  const std::optional<Extent>& pool_extent(std::uint32_t pool) const {
+    return pools_[pool - 1].extent;
+  }
 
   // A polyline of copies of `points`.
   void add_polyline(View points, Style style = {}, Identity id = {}, bool closed = false);
@@ -120,6 +131,7 @@ class Drawing {
     const double* data = nullptr;
     std::size_t size = 0;
     std::shared_ptr<const void> owner;
+    std::optional<Extent> extent;
   };
   const double* pool_data(std::uint32_t pool) const {
     return pool == 0 ? own_.data() : pools_[pool - 1].data;

@@ -75,12 +75,13 @@ bool finite(Vec3 v) {
 }
 
 // What one pass of a projection over its points found: the first point whose image is not finite
-// (the count of points: none); CONIC's too, whether a point is not in front of the eye and the
-// box of the points about the eye (p - eye).
+// (the count of points: none) and the box of the images; CONIC's too, whether a point is not in
+// front of the eye and the box of the points about the eye (p - eye).
 struct Pass {
   std::size_t not_finite;
   bool behind = false;
   Vec3 lo{}, hi{};
+  Point2 low{}, high{};
 };
 
 // out[k] = image(in[k]) for every point, on the machine's cores for a large image, each image
@@ -97,6 +98,7 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
     Pass& pass = found[part];
     if (first < last) pass.lo = pass.hi = in[first] - eye;
+    if (first < last) pass.low = pass.high = image(in[first]);
     constexpr std::size_t block = 512;
     for (std::size_t from = first; from < last; from += block) {
       const std::size_t to = std::min(last, from + block);
@@ -113,6 +115,8 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
         out[k] = p;
         seen_x += p.x * 0.0;
         seen_y += p.y * 0.0;
+        pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
+        pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
       }
       if (seen_x + seen_y != 0 && pass.not_finite == n) {
         for (std::size_t k = from; k < to && pass.not_finite == n; ++k) {
@@ -131,6 +135,8 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
               std::min(all.lo.z, pass.lo.z)};
     all.hi = {std::max(all.hi.x, pass.hi.x), std::max(all.hi.y, pass.hi.y),
               std::max(all.hi.z, pass.hi.z)};
+    all.low = {std::min(all.low.x, pass.low.x), std::min(all.low.y, pass.low.y)};
+    all.high = {std::max(all.high.x, pass.high.x), std::max(all.high.y, pass.high.y)};
   }
   return all;
 }
@@ -252,7 +258,7 @@ void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) 
   project_pass(view, centre, in, out);
 }
 
-std::size_t project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
   const auto& p = view.parameters;
   const Vec3 eye{p[0], p[1], p[2]};
   const bool conic = view.projection == Projection::conic && view_parameters_valid(view);
@@ -267,7 +273,7 @@ std::size_t project_image(const View& view, Vec3 centre, Vec3View in, MutablePoi
       0 <= pass.hi.y && pass.lo.z <= 0 && 0 <= pass.hi.z)
     refuse(DataError::Problem::view_inside_box);
   if (pass.behind) refuse(DataError::Problem::behind_eye);
-  return pass.not_finite;
+  return {pass.not_finite, {pass.low.x, pass.low.y, pass.high.x, pass.high.y}};
 }
 
 std::array<double, 3> ProjectiveMap::apply(Vec3 p) const {

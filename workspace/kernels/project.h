@@ -37,10 +37,15 @@ void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 
 // The same for the points of an image (DISPLAY INPUT, DISPLAY SURFACE), in one pass over them:
 // CONIC also refuses a view point inside the points' bounding box (view_inside_box, before any
-// other report but projection_parameters). Returns the index of the first point whose image is
-// not finite (finite points near the largest numbers overflow), in.size() when every one is.
-// Throws the DataErrors of project(), after writing: `out` holds nothing to use then.
-std::size_t project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
+// other report but projection_parameters). Finds the index of the first point whose image is
+// not finite (finite points near the largest numbers overflow), in.size() when every one is, and
+// the box of the images, x0 y0 x1 y1 (of use when every one is finite). Throws the DataErrors of
+// project(), after writing: `out` holds nothing to use then.
+struct ProjectedImage {
+  std::size_t not_finite = 0;
+  std::array<double, 4> extent{};
+};
+ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 
 // The same projection as a map of homogeneous coordinates: (X h, Y h, h) = M (x, y, z, 1). The
 // parallel projections have h = 1; CONIC has h the depth along the line of sight divided by D,
