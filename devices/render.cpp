@@ -456,8 +456,9 @@ Box bounds(const Drawing2& drawing) {
     return at->pool == item.pool && at->from <= item.first && last <= at->to;
   };
 
-  // A pool whose items of consecutive points cover all of it, shared with its box (an image made
-  // by a projection): that box, and none of the pool's items read.
+  // A pool whose items of consecutive points cover all of it, shared with its box (an image whose
+  // box was found as its points were made or checked): that box, and none of the pool's items
+  // read.
   const double inf = std::numeric_limits<double>::infinity();
   Box b{inf, inf, -inf, -inf};
   std::vector<std::uint32_t> known;

@@ -72,9 +72,10 @@ struct Image {
   // nullopt: the whole image. A way of looking at the image, not kept on the disk
   // (docs/decisions.md).
   std::optional<std::array<double, 4>> window;
-  // The box of `points`, x0 y0 x1 y1, when the projection that made them found it: a picture of
+  // The box of `points`, x0 y0 x1 y1, when the projection that made them found it, or the check of
+  // the file they were read from (DISPLAY FILE, the session's images at start): a picture of
   // millions of points is then fitted to a device without reading them again. Whatever replaces
-  // `points` clears it (an image assigned in APL); nullopt: not known (an image read from a file).
+  // `points` clears it (an image assigned in APL); nullopt: not known.
   std::optional<std::array<double, 4>> extent;
   // An input image of a surface whose border tangents were set by AUTO: its description says so.
   bool auto_tangents = false;

@@ -137,8 +137,10 @@ std::vector<std::size_t> expected_shape(const Workspace& ws, Variable v) {
   }
 }
 
-std::optional<VariableProblem> finite_problem(Variable v, const Array& a) {
-  const std::size_t k = first_not_finite(a.data(), a.size());
+namespace {
+
+// The report of number k of `a`, the first that is not finite (a.size(): none, no report).
+std::optional<VariableProblem> not_finite_at(Variable v, const Array& a, std::size_t k) {
   if (k == a.size()) return std::nullopt;
   const std::string_view name = info(v).name;
   const auto& s = a.shape;
@@ -160,6 +162,12 @@ std::optional<VariableProblem> finite_problem(Variable v, const Array& a) {
     where = fmt::format("NUMBER {} OF {}", k + 1, name);
   }
   return VariableProblem{v, where + " IS NOT A FINITE NUMBER"};
+}
+
+}  // namespace
+
+std::optional<VariableProblem> finite_problem(Variable v, const Array& a) {
+  return not_finite_at(v, a, first_not_finite(a.data(), a.size()));
 }
 
 std::string made_surface_reason(const DataError& e) {
@@ -220,7 +228,8 @@ std::optional<VariableProblem> surface_problem(const Workspace& ws, bool allow_e
   return wrong_shape(Variable::intpn, ws.intpn, expected_shape(ws, Variable::intpn));
 }
 
-std::optional<VariableProblem> image_problem(const Image& image, Variable points) {
+std::optional<VariableProblem> image_problem(const Image& image, Variable points,
+                                             std::optional<std::array<double, 4>>* extent) {
   const auto view = static_cast<Variable>(static_cast<int>(points) + 1);
   const auto& d = image.desim;
   if (d.what == 2 && !image.picture)
@@ -274,7 +283,14 @@ std::optional<VariableProblem> image_problem(const Image& image, Variable points
       k < image.combs.size())
     return VariableProblem{
         points, fmt::format("COMB {} OF {} IS NOT A FINITE NUMBER", k / 2 + 1, info(points).name)};
-  if (auto q = finite_problem(points, image.points)) return q;
+  if (extent && !image.points.empty()) {
+    // The box of the points found in the same pass as their check.
+    const FinitePoints found = finite_points(image.points.data(), image.points.size() / 2);
+    if (auto q = not_finite_at(points, image.points, found.not_finite)) return q;
+    *extent = found.box;
+  } else if (auto q = finite_problem(points, image.points)) {
+    return q;
+  }
   // A hidden-line image made now has no points yet (a recipe); one read has one nearness each.
   const auto& n = image.nearness.shape;
   const bool nearness_fits = image.desim.hidden

@@ -3,6 +3,7 @@
 // Each variable's element type, rank, shape and limits are stated here and nowhere else.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -91,8 +92,11 @@ std::optional<VariableProblem> surface_problem(const Workspace& ws,
                                                bool allow_empty_surface = true);
 // The same for an image: DESIM[1] 0 or 1, DESIM[2] a projection of the manual, its parameters
 // finite; the points planes x rows x 2 within max_grid_points; the arrows k x 6 (k x 4 in older
-// files) or empty; every number finite.
-std::optional<VariableProblem> image_problem(const Image& image, Variable points = Variable::image);
+// files) or empty; every number finite. With `extent`, the box of the points (Image::extent) is
+// found in the same pass as their check, and kept there when they are some.
+std::optional<VariableProblem> image_problem(
+    const Image& image, Variable points = Variable::image,
+    std::optional<std::array<double, 4>>* extent = nullptr);
 // STATUS: ten whole numbers; STATUS[1] 0 or 1, STATUS[2] 0, 1 or 2.
 std::optional<VariableProblem> status_problem(const std::array<int, 10>& status);
 

@@ -3,6 +3,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -572,6 +574,34 @@ TEST_CASE("first_not_finite finds the first number that is not finite, in large 
       CHECK(first_not_finite(w.data(), n) == at);
     }
   }
+}
+
+TEST_CASE("finite_points finds the first number that is not finite, else the points' box") {
+  // Large enough to be read on several cores; each side of the box reached in another part.
+  for (const std::size_t n :
+       {std::size_t(1), std::size_t(5), std::size_t(1) << 19, (std::size_t(3) << 19) + 7}) {
+    CAPTURE(n);
+    std::vector<double> v(2 * n);
+    for (std::size_t k = 0; k < 2 * n; ++k) v[k] = (k % 3 == 0 ? -1.0 : 1.0) * double(k % 1000);
+    v[0] = -5e300, v[2 * n - 1] = 7e300;
+    if (n > 2) v[2 * (n / 2) + 1] = -3e300, v[2 * (n - 2)] = 4e300;
+    std::array<double, 4> box{v[0], v[1], v[0], v[1]};
+    for (std::size_t k = 0; k < n; ++k) {
+      box[0] = std::min(box[0], v[2 * k]), box[1] = std::min(box[1], v[2 * k + 1]);
+      box[2] = std::max(box[2], v[2 * k]), box[3] = std::max(box[3], v[2 * k + 1]);
+    }
+    const FinitePoints all = finite_points(v.data(), n);
+    CHECK(all.not_finite == 2 * n);
+    CHECK(all.box == box);
+    for (const std::size_t at : {std::size_t(0), n, 2 * n / 3, 2 * n - 1}) {
+      std::vector<double> w = v;
+      w[at] = std::nan("");
+      if (at + 5 < 2 * n) w[at + 5] = HUGE_VAL;
+      if (at > 0) w[2 * n - 1] = -HUGE_VAL;
+      CHECK(finite_points(w.data(), n).not_finite == at);
+    }
+  }
+  CHECK(finite_points(nullptr, 0).not_finite == 0);
 }
 
 namespace {

@@ -5,6 +5,8 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -258,10 +260,18 @@ TEST_CASE("STORE FILE then DISPLAY FILE gives the image back bit for bit") {
     Image back = load_image(s.disk, "PIC");
     CHECK(
         test::same_bits(std::make_shared<const Image>(back), std::make_shared<const Image>(image)));
+    // The box of the points, found as they were checked.
+    const double* p = image.points.data();
+    std::array<double, 4> box{p[0], p[1], p[0], p[1]};
+    for (std::size_t k = 0; k < image.points.size(); k += 2)
+      box = {std::min(box[0], p[k]), std::min(box[1], p[k + 1]), std::max(box[2], p[k]),
+             std::max(box[3], p[k + 1])};
+    CHECK(back.extent == box);
   }
   Image empty;
   store_image(s.disk, "EMPTY", empty);
   CHECK(load_image(s.disk, "EMPTY") == empty);
+  CHECK_FALSE(load_image(s.disk, "EMPTY").extent);
   CHECK(files_in(s.dir.path()) == std::set<std::string>{"PIC.IGDSIMAG", "EMPTY.IGDSIMAG"});
 }
 

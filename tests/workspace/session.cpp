@@ -310,6 +310,9 @@ TEST_CASE("an image read from a file is kept as the session's own copy of that f
   CHECK(notices.empty());
   test::check_same_workspace(back, ws);
   CHECK(back.image == back.temp1);  // one image, as before
+  // The box of its points, found as the copy was checked, as DISPLAY FILE found it.
+  REQUIRE(ws.image->extent);
+  CHECK(back.image->extent == ws.image->extent);
 }
 
 TEST_CASE("a damaged copy of an image file costs that image alone, kept aside with a notice") {

@@ -398,7 +398,9 @@ struct Session::State {
         throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
       }
     }
-    if (auto p = image_problem(image, slot)) throw disk::Damage("IMAGE: " + p->reason);
+    std::optional<std::array<double, 4>> extent;
+    if (auto p = image_problem(image, slot, &extent)) throw disk::Damage("IMAGE: " + p->reason);
+    image.extent = extent;
     return std::make_shared<const Image>(std::move(image));
   }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -100,6 +102,48 @@ std::size_t first_not_finite(const double* v, std::size_t n) {
     if (k < last) keep_least(found, k);
   });
   return found.load();
+}
+
+FinitePoints finite_points(const double* xy, std::size_t n) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const unsigned parts = threads_for(2 * n);
+  std::atomic<std::size_t> found{2 * n};
+  std::vector<std::array<double, 4>> boxes(parts, {inf, inf, -inf, -inf});
+  parallel_for(parts, parts, [&](std::size_t first_part, std::size_t last_part) {
+    for (std::size_t part = first_part; part < last_part; ++part) {
+      const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
+      // Here, not in boxes: the threads' boxes share a cache line. Two chains, the even points
+      // and the odd, so that each comparison waits on the one two points before.
+      double low[4] = {inf, inf, inf, inf}, high[4] = {-inf, -inf, -inf, -inf};
+      auto take = [&](int c, const double* p) {
+        low[c] = std::min(low[c], p[0]), low[c + 1] = std::min(low[c + 1], p[1]);
+        high[c] = std::max(high[c], p[0]), high[c + 1] = std::max(high[c + 1], p[1]);
+      };
+      constexpr std::size_t block = 512;
+      for (std::size_t from = first; from < last; from += block) {
+        const std::size_t to = std::min(last, from + block);
+        double seen[4] = {0, 0, 0, 0};
+        std::size_t k = from;
+        for (; k + 2 <= to; k += 2) {
+          const double* p = xy + 2 * k;
+          for (int j = 0; j < 4; ++j) seen[j] += p[j] * 0.0;
+          take(0, p), take(2, p + 2);
+        }
+        if (k < to) seen[0] += xy[2 * k] * 0.0 + xy[2 * k + 1] * 0.0, take(0, xy + 2 * k);
+        if (seen[0] + seen[1] + seen[2] + seen[3] != 0) {
+          keep_least(found, 2 * from + first_not_finite_in(xy + 2 * from, 0, 2 * (to - from)));
+          break;
+        }
+      }
+      boxes[part] = {std::min(low[0], low[2]), std::min(low[1], low[3]), std::max(high[0], high[2]),
+                     std::max(high[1], high[3])};
+    }
+  });
+  FinitePoints out{found.load(), {inf, inf, -inf, -inf}};
+  for (const auto& b : boxes)
+    out.box = {std::min(out.box[0], b[0]), std::min(out.box[1], b[1]), std::max(out.box[2], b[2]),
+               std::max(out.box[3], b[3])};
+  return out;
 }
 
 void require_shape(const char* variable, const Array* a, std::vector<std::size_t> expected) {

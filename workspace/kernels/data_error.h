@@ -2,6 +2,7 @@
 // meant for the user: the commands layer words the report (commands/reports.h).
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -54,6 +55,14 @@ struct Array;
 // the check of every result before it is kept (docs/kernels.md, "Data checks"). Reads the numbers
 // at the speed of memory, a large array on the machine's cores as the kernels make it.
 std::size_t first_not_finite(const double* v, std::size_t n);
+
+// The same for `n` points x y (2n numbers at `xy`), in the same one pass: the first number that is
+// not finite (2n: none) and, when every one is, the box of the points, x0 y0 x1 y1.
+struct FinitePoints {
+  std::size_t not_finite = 0;
+  std::array<double, 4> box{};
+};
+FinitePoints finite_points(const double* xy, std::size_t n);
 
 // `least` made `k` when k is less: the first index that the parts of a loop split between threads
 // (workspace/kernels/parallel.h) report, each its own.

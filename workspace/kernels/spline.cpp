@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cassert>
+#include <vector>
 
 namespace igds {
 
@@ -91,13 +92,17 @@ void spline_tangents(Vec3View points, Vec3 first, Vec3 last, std::span<Vec3> out
 
 void spline_tangents(std::span<const SplineLine> lines, SplineScratch& scratch) {
   constexpr std::size_t group = 4;
+  // Lines of two points or more without a repeat can share a solve; each line is read for it once.
+  std::vector<char> plain(lines.size());
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    plain[k] = lines[k].points.size() >= 2 && !has_repeats(lines[k].points);
   std::size_t k = 0;
   while (k < lines.size()) {
-    // Four lines of as many points (two or more), none with a repeat, are solved together.
+    // Four such lines of as many points are solved together, any other line alone.
     const std::size_t n = lines[k].points.size();
-    bool together = k + group <= lines.size() && n >= 2;
+    bool together = k + group <= lines.size();
     for (std::size_t l = k; together && l < k + group; ++l)
-      together = lines[l].points.size() == n && !has_repeats(lines[l].points);
+      together = plain[l] && lines[l].points.size() == n;
     if (!together) {
       spline_tangents(lines[k].points, lines[k].first, lines[k].last, lines[k].out, scratch);
       ++k;

@@ -72,7 +72,8 @@ struct SplineLine {
   std::span<Vec3> out;
 };
 // spline_tangents of each line, bit for bit. Lines of as many points without a repeat are solved
-// four at a time, in about the time of one: a line's solve waits on a division at each point.
+// four at a time, a point of each in turn: a line's solve waits on a division at each point, and
+// the other lines' work fills the wait.
 void spline_tangents(std::span<const SplineLine> lines, SplineScratch& scratch);
 
 // The point at s in [0, 1] of the arc from p0 to p1 with tangents t0, t1 per unit of length: the
