@@ -203,8 +203,14 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
     }
     const std::size_t pd_at = o.pd && o.stroke == s ? o.at : none;
     std::size_t drawn = 0;
+    // The stroke's points through locals: a store through `w` (a char pointer) could change
+    // anything as far as the compiler knows, and the stroke would be read again at every point.
+    const Stroke& stroke = order.strokes[s];
+    const DevicePoint* const points = lines[stroke.line].data();
+    const std::size_t first = stroke.first, last = stroke.last;
+    const bool reversed = stroke.reversed;
     for (std::size_t i = chunk.first; i < chunk.last; ++i) {
-      const DevicePoint p = point(s, i);
+      const DevicePoint p = points[reversed ? last - i : first + i];
       if (p == at) continue;
       if (i == pd_at)
         *w++ = 'P', *w++ = 'D';
