@@ -12,6 +12,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -916,6 +917,16 @@ TEST_CASE("the session never saves a workspace that the next start would refuse"
   CHECK(report_of([&] { session.save(odd); }) ==
         "CANNOT SAVE THE SESSION (INPPN IS 4 BY 3, NOT 14 BY 3); THE LAST SAVED SESSION IS KEPT");
   CHECK(!fs::exists(s.session()));
+  // A surface saved is not checked again by a save that keeps it; a new one is.
+  Workspace ws = test::make_workspace(2, 2, 1, 1);
+  session.save(ws);
+  const std::string saved = test::read_file(s.session());
+  ws.inppn.ravel[4] = std::numeric_limits<double>::infinity();
+  ws.changes.replaced();
+  CHECK(report_of([&] { session.save(ws); }) ==
+        "CANNOT SAVE THE SESSION (POINT 2 OF INPPN IS NOT A FINITE NUMBER); THE LAST SAVED SESSION "
+        "IS KEPT");
+  CHECK(test::read_file(s.session()) == saved);
 }
 
 TEST_CASE("variable files without a session are kept aside, never deleted") {

@@ -795,10 +795,14 @@ std::vector<UnsavedImage> Session::save(Workspace& ws, const Journal* journal) {
     return {};
 
   // Never a session that the next start would refuse (PATCHES and INTPN are read only when the
-  // session keeps them: made again, they are checked where they are made).
-  auto problem = surface_problem(ws);
-  for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
-    if (!problem && !ws.changes.derived) problem = finite_problem(v, *a);
+  // session keeps them: made again, they are checked where they are made). A surface the session
+  // holds already was checked when it was saved: a DISPLAY or a ZOOM does not read it again.
+  std::optional<VariableProblem> problem;
+  if (!surface_same) {
+    problem = surface_problem(ws);
+    for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
+      if (!problem && !ws.changes.derived) problem = finite_problem(v, *a);
+  }
   if (problem)
     throw Report(fmt::format("CANNOT SAVE THE SESSION ({}); THE LAST SAVED SESSION IS KEPT",
                              problem->reason));

@@ -97,8 +97,10 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
   in_parallel(parts, [&](unsigned part) {
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
     Pass& pass = found[part];
-    if (first < last) pass.lo = pass.hi = in[first] - eye;
-    if (first < last) pass.low = pass.high = image(in[first]);
+    if (first < last) {
+      pass.lo = pass.hi = in[first] - eye;
+      pass.low = pass.high = image(in[first]);
+    }
     constexpr std::size_t block = 512;
     for (std::size_t from = first; from < last; from += block) {
       const std::size_t to = std::min(last, from + block);
