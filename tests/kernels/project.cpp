@@ -303,10 +303,8 @@ TEST_CASE(
     // The box of the images, each side reached by an image.
     std::array<double, 4> box{expected.d[0], expected.d[1], expected.d[0], expected.d[1]};
     for (std::size_t k = 0; k < n; ++k) {
-      box[0] = std::min(box[0], expected.d[2 * k]),
-      box[1] = std::min(box[1], expected.d[2 * k + 1]);
-      box[2] = std::max(box[2], expected.d[2 * k]),
-      box[3] = std::max(box[3], expected.d[2 * k + 1]);
+      const double x = expected.d[2 * k], y = expected.d[2 * k + 1];
+      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
     }
     CHECK(found.extent == box);
   }

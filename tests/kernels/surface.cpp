@@ -587,8 +587,8 @@ TEST_CASE("finite_points finds the first number that is not finite, else the poi
     if (n > 2) v[2 * (n / 2) + 1] = -3e300, v[2 * (n - 2)] = 4e300;
     std::array<double, 4> box{v[0], v[1], v[0], v[1]};
     for (std::size_t k = 0; k < n; ++k) {
-      box[0] = std::min(box[0], v[2 * k]), box[1] = std::min(box[1], v[2 * k + 1]);
-      box[2] = std::max(box[2], v[2 * k]), box[3] = std::max(box[3], v[2 * k + 1]);
+      const double x = v[2 * k], y = v[2 * k + 1];
+      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
     }
     const FinitePoints all = finite_points(v.data(), n);
     CHECK(all.not_finite == 2 * n);

@@ -917,7 +917,7 @@ TEST_CASE("the session never saves a workspace that the next start would refuse"
   CHECK(report_of([&] { session.save(odd); }) ==
         "CANNOT SAVE THE SESSION (INPPN IS 4 BY 3, NOT 14 BY 3); THE LAST SAVED SESSION IS KEPT");
   CHECK(!fs::exists(s.session()));
-  // A surface saved is not checked again by a save that keeps it; a new one is.
+  // A surface new to the session is checked as it is saved (one it holds was checked then).
   Workspace ws = test::make_workspace(2, 2, 1, 1);
   session.save(ws);
   const std::string saved = test::read_file(s.session());
