@@ -368,6 +368,9 @@ TEST_CASE("DISPLAY COMBS in an IGDSIMAG: kept exactly; forged combs refused") {
   forged([](Image& i) { i.comb_scale = -1; },
          "THE COMB SCALE OF IMAGE IS NOT A FINITE NUMBER, 0 OR MORE");
   forged([](Image& i) { i.desim.what = 7; }, "DESIM[1] IS NOT 0, 1, 2 OR 3");
+  // A point that is not finite, found in the pass that finds the points' box.
+  forged([](Image& i) { i.points.ravel[7] = HUGE_VAL; },
+         "PLANE 2 ROW 1 OF IMAGE IS NOT A FINITE NUMBER");
 }
 
 TEST_CASE("a disk that refuses a write: clear report, old file kept, no temporary left") {

@@ -1,6 +1,5 @@
 #include "workspace/kernels/coons.h"
 
-#include <algorithm>
 #include <atomic>
 #include <cassert>
 
@@ -30,32 +29,21 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
                   std::span<Vec3>(t.along_curves).subspan(i * ns, ns)};
     spline_tangents(lines, scratch);
   };
-  // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1. The stringers are copied `block` side by
-  // side, a row of them at once, and their tangents copied back the same way: one stringer alone
-  // would read and write a cache line for each of its points, a row's length apart.
+  // Stringer j's ends at rows 2NOCUR+2j and 2NOCUR+2j+1, its points copied side by side with
+  // its neighbours' (stringer_tangents).
   auto stringers = [&] {
-    t.along_stringers.resize(nc * ns);
     SplineScratch scratch;
-    constexpr std::size_t block = 16;
-    std::vector<double> columns(3 * nc * block);
-    std::vector<Vec3> column_tangents(nc * block);
     std::vector<SplineLine> lines;
-    for (std::size_t j0 = 0; j0 < ns; j0 += block) {
-      const std::size_t m = std::min(block, ns - j0);
-      for (std::size_t i = 0; i < nc; ++i)
-        for (std::size_t b = 0; b < m; ++b)
-          Vec3(points[i * ns + j0 + b]).store(&columns[3 * (b * nc + i)]);
-      lines.clear();
-      for (std::size_t b = 0; b < m; ++b)
-        lines.push_back({Vec3View(&columns[3 * b * nc], nc),
-                         border_tangent(inptg, 2 * nc + 2 * (j0 + b)),
-                         border_tangent(inptg, 2 * nc + 2 * (j0 + b) + 1),
-                         std::span<Vec3>(column_tangents).subspan(b * nc, nc)});
-      spline_tangents(lines, scratch);
-      for (std::size_t i = 0; i < nc; ++i)
-        for (std::size_t b = 0; b < m; ++b)
-          t.along_stringers[i * ns + j0 + b] = column_tangents[b * nc + i];
-    }
+    stringer_tangents(nc, ns, points, t.along_stringers,
+                      [&](std::size_t j0, std::size_t width, const double* columns, Vec3* out) {
+                        lines.clear();
+                        for (std::size_t c = 0; c < width; ++c)
+                          lines.push_back({Vec3View(columns + 3 * c * nc, nc),
+                                           border_tangent(inptg, 2 * nc + 2 * (j0 + c)),
+                                           border_tangent(inptg, 2 * nc + 2 * (j0 + c) + 1),
+                                           std::span<Vec3>(out + c * nc, nc)});
+                        spline_tangents(lines, scratch);
+                      });
   };
   // The two families are independent: one thread each when the grid is large.
   parallel_for(2, threads_for(nc * ns * 12) > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {

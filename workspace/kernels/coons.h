@@ -2,6 +2,8 @@
 // Appendix III; spec docs/kernels.md, "The mathematics").
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -26,6 +28,29 @@ struct GridTangents {
 // The border tangent of INPTG row `row` (x y z; column 4, the point number, is not used: the
 // row's place in the order of workspace/state.h says which point it belongs to).
 Vec3 border_tangent(const Array& inptg, std::size_t row);
+
+// The tangents along the stringers of the NOCUR x NOSTR `points` into `along` (sized here, on the
+// calling thread, which writes it first). A stringer's points lie a row's length apart, so
+// neighbouring stringers are copied side by side, a row of them at once, and their tangents copied
+// back the same way: `solve(j0, width, columns, out)` makes those of stringers j0 .. j0 + width -
+// 1, stringer j0 + c's points at columns + 3 c NOCUR, its tangents into out + c NOCUR.
+template <class Solve>
+void stringer_tangents(std::size_t nc, std::size_t ns, Vec3View points, std::vector<Vec3>& along,
+                       const Solve& solve) {
+  along.resize(nc * ns);
+  const std::size_t block = std::clamp<std::size_t>(65536 / std::max<std::size_t>(nc, 1), 1, 16);
+  std::vector<double> columns(3 * block * nc);
+  std::vector<Vec3> out(block * nc);
+  for (std::size_t j0 = 0; j0 < ns; j0 += block) {
+    const std::size_t width = std::min(block, ns - j0);
+    for (std::size_t i = 0; i < nc; ++i)
+      for (std::size_t c = 0; c < width; ++c)
+        Vec3(points[i * ns + j0 + c]).store(&columns[3 * (c * nc + i)]);
+    solve(j0, width, columns.data(), out.data());
+    for (std::size_t i = 0; i < nc; ++i)
+      for (std::size_t c = 0; c < width; ++c) along[i * ns + j0 + c] = out[c * nc + i];
+  }
+}
 
 // Splines (CURVILINEO) along every curve and every stringer of the NOCUR x NOSTR points, clamped
 // by the border tangents of INPTG (2(NOCUR+NOSTR) x 4, row order as in workspace/state.h).

@@ -176,34 +176,24 @@ GridTangents marks_grid_tangents(int nocur, int nostr, Vec3View points) {
   assert(points.size() == nc * ns);
   GridTangents t;
   t.units = TangentUnits::per_parameter;
-  t.along_curves.resize(nc * ns);
-  t.along_stringers.resize(nc * ns);
+  // Each family's tangents are made on a thread of its own, which also writes them first.
   auto curves = [&] {
+    t.along_curves.resize(nc * ns);
     for (std::size_t i = 0; i < nc; ++i) {
       Vec3* out = t.along_curves.data() + i * ns;
       tangents_on(curve(points, ns, i), [out](std::size_t k, Vec3 v) { out[k] = v; });
     }
   };
-  // A column's points are 24 NOSTR bytes apart: neighbouring columns are copied side by side in
-  // blocks, so that the grid is read and written row by row.
+  // A column's points are 24 NOSTR bytes apart: copied side by side (stringer_tangents).
   auto stringers = [&] {
-    const std::size_t block = std::clamp<std::size_t>(65536 / std::max<std::size_t>(nc, 1), 1, 16);
-    std::vector<double> lines(3 * block * nc);
-    std::vector<Vec3> out(block * nc);
-    for (std::size_t j0 = 0; j0 < ns; j0 += block) {
-      const std::size_t width = std::min(block, ns - j0);
-      for (std::size_t i = 0; i < nc; ++i)
-        for (std::size_t c = 0; c < width; ++c)
-          Vec3(points[i * ns + j0 + c]).store(&lines[3 * (c * nc + i)]);
-      for (std::size_t c = 0; c < width; ++c) {
-        Vec3* column = out.data() + c * nc;
-        tangents_on(Line{lines.data() + 3 * c * nc, 3, nc},
-                    [column](std::size_t k, Vec3 v) { column[k] = v; });
-      }
-      for (std::size_t i = 0; i < nc; ++i)
-        for (std::size_t c = 0; c < width; ++c)
-          t.along_stringers[i * ns + j0 + c] = out[c * nc + i];
-    }
+    stringer_tangents(nc, ns, points, t.along_stringers,
+                      [&](std::size_t, std::size_t width, const double* columns, Vec3* out) {
+                        for (std::size_t c = 0; c < width; ++c) {
+                          Vec3* column = out + c * nc;
+                          tangents_on(Line{columns + 3 * c * nc, 3, nc},
+                                      [column](std::size_t k, Vec3 v) { column[k] = v; });
+                        }
+                      });
   };
   // The two families are independent: one thread each when the grid is large (as grid_tangents).
   parallel_for(2, threads_for(nc * ns * 12) > 1 ? 2 : 1, [&](std::size_t first, std::size_t last) {

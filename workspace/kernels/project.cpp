@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -81,7 +82,8 @@ struct Pass {
   std::size_t not_finite;
   bool behind = false;
   Vec3 lo{}, hi{};
-  Point2 low{}, high{};
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  Point2 low{inf, inf}, high{-inf, -inf};
 };
 
 // out[k] = image(in[k]) for every point, on the machine's cores for a large image, each image
@@ -97,10 +99,7 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
   in_parallel(parts, [&](unsigned part) {
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
     Pass& pass = found[part];
-    if (first < last) {
-      pass.lo = pass.hi = in[first] - eye;
-      pass.low = pass.high = image(in[first]);
-    }
+    if (first < last) pass.lo = pass.hi = in[first] - eye;
     constexpr std::size_t block = 512;
     for (std::size_t from = first; from < last; from += block) {
       const std::size_t to = std::min(last, from + block);
