@@ -28,7 +28,7 @@ std::span<const Choice> yes_no() {
   return yes_no_words;
 }
 
-std::optional<bool> parse_yes_no(std::span<const std::string> words) {
+std::optional<bool> parse_yes_no(std::span<const std::string_view> words) {
   if (words.size() != 1) return std::nullopt;
   const Choice* c = choose(yes_no_words, words[0]);
   if (!c) return std::nullopt;

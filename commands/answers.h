@@ -20,7 +20,7 @@ std::optional<long long> parse_integer(std::string_view word, long long low, lon
 // YES and NO (any prefix): the answers of the CHANGE chain's questions.
 std::span<const Choice> yes_no();
 // True for yes, false for no; nullopt when the words are not one of them.
-std::optional<bool> parse_yes_no(std::span<const std::string> words);
+std::optional<bool> parse_yes_no(std::span<const std::string_view> words);
 
 // Asks `prompt` until `parse` (words -> value, or throws Error) accepts a non-empty reply.
 template <class Parse>

@@ -57,7 +57,7 @@ const Prompt change_tangents_prompt{
 constexpr std::string_view answer_first = "ANSWER Y OR N FIRST (CTRL-C GIVES UP CHANGE)";
 
 // A reply to a Y/N question that is neither: a command typed too early says so.
-void refuse_command_word(const std::vector<std::string>& words) {
+void refuse_command_word(std::span<const std::string_view> words) {
   if (!parse_typed_number(words[0])) {
     std::string reason = command_word_reason(words[0], answer_first);
     if (!reason.empty()) throw EntryError(reason);
@@ -85,13 +85,14 @@ void change_picked_point(Context& ctx, const Workspace& ws, Array& inppn, Edits&
   ctx.say(point_words(inppn, k));
   const std::size_t first = 3 * std::size_t(k - 1);
   for (;;) {
-    auto words = ctx.ask(new_place_prompt);
+    const auto words = ctx.ask_words(new_place_prompt);
     if (words.empty()) return;  // the point stays where it is
     try {
       if (!is_pick(words)) {
-        words.insert(words.begin(), std::to_string(k));
-        if (words.size() != 4) throw EntryError("GIVE X Y Z, OR PICK IN AN ORTHOGONAL VIEW");
-        apply_point_entry(words, inppn, &edits);
+        if (words.size() != 3) throw EntryError("GIVE X Y Z, OR PICK IN AN ORTHOGONAL VIEW");
+        const std::string number = std::to_string(k);
+        const std::string_view entry[] = {number, words[0], words[1], words[2]};
+        apply_point_entry(entry, inppn, &edits);
       } else {
         const std::array<double, 3> now{inppn.ravel[first], inppn.ravel[first + 1],
                                         inppn.ravel[first + 2]};
@@ -115,7 +116,7 @@ void change_picked_point(Context& ctx, const Workspace& ws, Array& inppn, Edits&
 // The point entries of CHANGE POINTS: those of BUILD, and PICK.
 void ask_changed_points(Context& ctx, const Workspace& ws, Array& inppn, Edits& edits) {
   for (;;) {
-    auto words = ctx.ask(change_points_prompt);
+    const auto words = ctx.ask_words(change_points_prompt);
     if (words.empty()) return;
     try {
       if (is_pick(words))
@@ -131,7 +132,7 @@ void ask_changed_points(Context& ctx, const Workspace& ws, Array& inppn, Edits& 
 // The follow-up of CHANGE TANGENTS and POINTS: Y/N, or the two numbers directly.
 Density ask_grid_too(Context& ctx, const Workspace& ws) {
   for (;;) {
-    auto words = ctx.ask(change_grid_prompt);
+    const auto words = ctx.ask_words(change_grid_prompt);
     if (words.empty()) continue;
     if (auto yes = parse_yes_no(words)) {
       if (*yes) return ask_density(ctx, ws.nocur, ws.nostr);
@@ -151,7 +152,7 @@ Density ask_grid_too(Context& ctx, const Workspace& ws) {
 bool ask_tangents_too(Context& ctx, const Workspace& ws, const Array& inppn, Array& inptg,
                       Edits& edits) {
   for (;;) {
-    auto words = ctx.ask(change_tangents_prompt);
+    const auto words = ctx.ask_words(change_tangents_prompt);
     if (words.empty()) continue;
     if (auto yes = parse_yes_no(words)) {
       return *yes && ask_tangent_entries(ctx, ws.nocur, ws.nostr, inppn, inptg, &edits);

@@ -77,7 +77,13 @@ class Context {
   // them), else the words of a line read after showing `prompt`. HELP, HELP SHORT and HELP LONG
   // typed there are answered and the prompt is shown again. An empty line gives no words.
   // Throws Interrupted on Ctrl-C and EndOfInput at the end of input.
-  virtual std::vector<std::string> ask(const Prompt& prompt) = 0;
+  std::vector<std::string> ask(const Prompt& prompt) {
+    const std::span<const std::string_view> words = ask_words(prompt);
+    return {words.begin(), words.end()};
+  }
+  // The same words as views, valid until the next question: an entry of a thousand points is
+  // read where it was typed, no word of it copied.
+  virtual std::span<const std::string_view> ask_words(const Prompt& prompt) = 0;
   // Puts words of the last reply back in front, so that the next ask() returns them without
   // prompting.
   virtual void unread(std::vector<std::string> words) = 0;

@@ -24,7 +24,7 @@ constexpr Choice auto_entry[] = {
 
 // The reason for an entry whose first word is not a number: a command typed too early, or the
 // form the entry must have.
-[[noreturn]] void refuse_form(std::span<const std::string> words, std::string_view form) {
+[[noreturn]] void refuse_form(std::span<const std::string_view> words, std::string_view form) {
   if (!words.empty() && !parse_typed_number(words[0])) {
     std::string reason = command_word_reason(words[0], finish_entries);
     if (!reason.empty()) throw EntryError(reason);
@@ -34,7 +34,7 @@ constexpr Choice auto_entry[] = {
 
 }  // namespace
 
-void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* edits) {
+void apply_point_entry(std::span<const std::string_view> words, Array& inppn, Edits* edits) {
   const long long count = static_cast<long long>(inppn.size() / 3);
   if (words.size() < 4 || (words.size() - 1) % 3 != 0) refuse_form(words, point_form);
   auto k = parse_integer(words[0], 1, count);
@@ -86,8 +86,8 @@ Array zero_tangents(int nocur, int nostr) {
   return inptg;
 }
 
-void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
-                         Edits* edits) {
+void apply_tangent_entry(std::span<const std::string_view> words, int nocur, int nostr,
+                         Array& inptg, Edits* edits) {
   if (words.size() != 4 && words.size() != 5) refuse_form(words, tangent_form);
   const long long count = static_cast<long long>(nocur) * nostr;
   auto k = parse_integer(words[0], 1, count);
@@ -133,11 +133,11 @@ void apply_auto_tangents(int nocur, int nostr, const Array& inppn, Array& inptg,
   if (edits) edits->all();
 }
 
-bool is_auto_entry(std::span<const std::string> words) {
+bool is_auto_entry(std::span<const std::string_view> words) {
   return words.size() == 1 && choose(auto_entry, words[0]) != nullptr;
 }
 
-GridSize parse_grid_size(std::span<const std::string> words) {
+GridSize parse_grid_size(std::span<const std::string_view> words) {
   constexpr std::string_view form = "GIVE TWO WHOLE NUMBERS, NOCUR AND NOSTR";
   if (words.size() != 2) refuse_form(words, form);
   const auto limit = static_cast<long long>(max_input_points);
@@ -150,7 +150,7 @@ GridSize parse_grid_size(std::span<const std::string> words) {
   return GridSize{static_cast<int>(*nocur), static_cast<int>(*nostr)};
 }
 
-Density parse_density(std::span<const std::string> words, int nocur, int nostr) {
+Density parse_density(std::span<const std::string_view> words, int nocur, int nostr) {
   constexpr std::string_view form = "GIVE TWO WHOLE NUMBERS >= 0, INTCU AND INTST";
   if (words.size() != 2) refuse_form(words, form);
   const auto limit = static_cast<long long>(max_grid_points);
@@ -181,13 +181,14 @@ const Prompt density_prompt{
     "and the stringers between two input stringers."};
 
 GridSize ask_grid_size(Context& ctx) {
-  return ask_for(ctx, size_prompt,
-                 [](const std::vector<std::string>& w) { return parse_grid_size(w); });
+  return ask_for(ctx, size_prompt, [](const std::vector<std::string>& w) {
+    return parse_grid_size(std::vector<std::string_view>(w.begin(), w.end()));
+  });
 }
 
 void ask_point_entries(Context& ctx, Array& inppn, Edits* edits) {
   for (;;) {
-    auto words = ctx.ask(points_prompt);
+    const auto words = ctx.ask_words(points_prompt);
     if (words.empty()) return;
     try {
       apply_point_entry(words, inppn, edits);
@@ -201,7 +202,7 @@ bool ask_tangent_entries(Context& ctx, int nocur, int nostr, const Array& inppn,
                          Edits* edits) {
   bool automatic = false;
   for (;;) {
-    auto words = ctx.ask(tangents_prompt);
+    const auto words = ctx.ask_words(tangents_prompt);
     if (words.empty()) return automatic;
     if (is_auto_entry(words)) {
       apply_auto_tangents(nocur, nostr, inppn, inptg, edits);
@@ -218,7 +219,7 @@ bool ask_tangent_entries(Context& ctx, int nocur, int nostr, const Array& inppn,
 
 Density ask_density(Context& ctx, int nocur, int nostr) {
   for (;;) {
-    auto words = ctx.ask(density_prompt);
+    const auto words = ctx.ask_words(density_prompt);
     if (words.empty()) continue;
     try {
       return parse_density(words, nocur, nostr);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands/context.h"
@@ -18,13 +19,14 @@ namespace igds {
 // `k x y z [x y z ...]`: the triplets go to points k, k+1, ... of `inppn` ((NOCUR*NOSTR) x 3).
 // Throws EntryError (INCORRECT ENTRY with what is wrong); only a correct entry changes anything.
 // The elements it changed are added to `edits` when given.
-void apply_point_entry(std::span<const std::string> words, Array& inppn, Edits* edits = nullptr);
+void apply_point_entry(std::span<const std::string_view> words, Array& inppn,
+                       Edits* edits = nullptr);
 
 // `k tx ty tz` at a border point that is not a corner, `k tx ty tz f` at a corner (f = 1 along
 // the curve, 0 along the stringer): sets the matching row of `inptg` (docs/interp.md, "The
 // questions"). Throws EntryError. The row it changed is added to `edits` when given.
-void apply_tangent_entry(std::span<const std::string> words, int nocur, int nostr, Array& inptg,
-                         Edits* edits = nullptr);
+void apply_tangent_entry(std::span<const std::string_view> words, int nocur, int nostr,
+                         Array& inptg, Edits* edits = nullptr);
 
 // AUTO at TANGENTS? (docs/marks.md): every border tangent of `inptg` set by Marks's rule from
 // the points of `inppn`, per unit of chord so that PATCHES holds Marks's vectors. Entries typed
@@ -32,19 +34,19 @@ void apply_tangent_entry(std::span<const std::string> words, int nocur, int nost
 void apply_auto_tangents(int nocur, int nostr, const Array& inppn, Array& inptg,
                          Edits* edits = nullptr);
 // True when `words` is the AUTO entry (the word AUTO or a prefix of it, case ignored).
-bool is_auto_entry(std::span<const std::string> words);
+bool is_auto_entry(std::span<const std::string_view> words);
 
 // NOCUR NOSTR: two whole numbers >= 1, at least two points, at most max_input_points.
 struct GridSize {
   int nocur = 0, nostr = 0;
 };
-GridSize parse_grid_size(std::span<const std::string> words);  // throws EntryError
+GridSize parse_grid_size(std::span<const std::string_view> words);  // throws EntryError
 
 // INTCU INTST: two whole numbers >= 0 giving at most max_grid_points points of INTPN.
 struct Density {
   int intcu = 0, intst = 0;
 };
-Density parse_density(std::span<const std::string> words, int nocur, int nostr);  // EntryError
+Density parse_density(std::span<const std::string_view> words, int nocur, int nostr);  // EntryError
 
 // The INPTG row of the tangent at point k (1-based) along the curve (along_curve) or along the
 // stringer; -1 when k is not a border point of that kind. A line of one point has no tangent:

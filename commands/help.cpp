@@ -132,7 +132,7 @@ std::vector<std::string> command_syntax(const Command& c) {
   return forms;
 }
 
-HelpRequest help_request(std::span<const std::string> words) {
+HelpRequest help_request(std::span<const std::string_view> words) {
   if (words.empty() || words.size() > 2) return {};
   const Choice help_word{help_command.name};
   if (!choose({&help_word, 1}, words[0])) return {};

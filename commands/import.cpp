@@ -52,7 +52,7 @@ int own_count(const std::vector<double>& knots, double first, double last) {
 GridSize ask_import_size(Context& ctx, GridSize own) {
   for (;;) {
     const bool on_the_line = ctx.pending_from_command_line();
-    const std::vector<std::string> words = ctx.ask(import_size_prompt);
+    const auto words = ctx.ask_words(import_size_prompt);
     if (words.empty()) return own;
     try {
       const GridSize size = parse_grid_size(words);

@@ -23,7 +23,7 @@ std::span<const Choice> pick_choices() {
   return pick_word;
 }
 
-bool is_pick(const std::vector<std::string>& words) {
+bool is_pick(std::span<const std::string_view> words) {
   return words.size() == 1 && choose(pick_word, words[0]) != nullptr;
 }
 

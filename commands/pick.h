@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "commands/context.h"
@@ -45,7 +46,7 @@ std::optional<std::array<double, 3>> placed_in_view(const Description& desim,
 // The word PICK typed where a pick can answer (ZOOM PICK, PICK at POINTS? and NEW X Y Z?): its
 // declaration, for completion, and whether `words` are it.
 std::span<const Choice> pick_choices();
-bool is_pick(const std::vector<std::string>& words);
+bool is_pick(std::span<const std::string_view> words);
 
 // The questions of pointing: the point, and where it goes.
 extern const Prompt pick_point_prompt;

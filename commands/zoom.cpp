@@ -55,7 +55,7 @@ Window corners(double ax, double ay, double bx, double by) {
   return w;
 }
 
-std::vector<double> numbers_of(const std::vector<std::string>& words) {
+std::vector<double> numbers_of(std::span<const std::string_view> words) {
   std::vector<double> v;
   for (const auto& w : words) {
     const auto n = parse_typed_number(w);
@@ -96,7 +96,7 @@ void run_zoom(Context& ctx, const Choice*) {
   const Image& shown = *ws.image;
   std::optional<Window> window;
   if (ctx.has_pending()) {
-    const std::vector<std::string> words = ctx.ask({});
+    const auto words = ctx.ask_words({});
     if (is_pick(words)) {
       window = by_picks(ctx, shown);
     } else {

@@ -177,22 +177,27 @@ void Interpreter::run_with(const Command& command, const Choice* option) {
   command.run(*this, option);
 }
 
-std::vector<std::string> Interpreter::ask(const Prompt& prompt) {
-  if (!pending_.empty()) return std::exchange(pending_, {});
+std::span<const std::string_view> Interpreter::ask_words(const Prompt& prompt) {
+  if (!pending_.empty()) {
+    reply_pending_ = std::exchange(pending_, {});
+    reply_.assign(reply_pending_.begin(), reply_pending_.end());
+    return reply_;
+  }
   const std::string shown = prompt.text.empty() ? "" : std::string(prompt.text) + " ";
   asking_ = &prompt;
   for (;;) {
-    const Event e = terminal_.read_line(shown);
+    Event e = terminal_.read_line(shown);
     if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind != Event::Kind::line) throw EndOfInput{};
-    auto words = split_words(e.text);
-    if (answer_help(words, prompt)) continue;
+    reply_line_ = std::move(e.text);
+    split_words(reply_line_, reply_);
+    if (answer_help(reply_, prompt)) continue;
     on_line_ = false;
-    return words;
+    return reply_;
   }
 }
 
-bool Interpreter::answer_help(const std::vector<std::string>& words, const Prompt& prompt) {
+bool Interpreter::answer_help(std::span<const std::string_view> words, const Prompt& prompt) {
   const HelpRequest help = help_request(words);
   if (!help.asked) return false;
   // HELP SHORT and HELP LONG change the setting (STATUS[1]); HELP alone keeps it.
@@ -242,8 +247,10 @@ std::optional<PickedAddress> Interpreter::pick(const Prompt& prompt) {
     if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind == Event::Kind::pick) return PickedAddress{{e.x, e.y}, e.layout};
     if (e.kind == Event::Kind::end) throw EndOfInput{};
-    if (e.kind == Event::Kind::line && !answer_help(split_words(e.text), prompt))
-      return std::nullopt;
+    if (e.kind != Event::Kind::line) continue;
+    std::vector<std::string_view> words;
+    split_words(e.text, words);
+    if (!answer_help(words, prompt)) return std::nullopt;
   }
 }
 

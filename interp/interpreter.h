@@ -61,7 +61,7 @@ class Interpreter final : public Context {
   const Options& options() const override { return options_; }
   const Disk& disk() const override { return disk_; }
   Journal& journal() override { return journal_; }
-  std::vector<std::string> ask(const Prompt& prompt) override;
+  std::span<const std::string_view> ask_words(const Prompt& prompt) override;
   void unread(std::vector<std::string> words) override;
   bool has_pending() const override { return !pending_.empty(); }
   bool pending_from_command_line() const override { return !pending_.empty() && on_line_; }
@@ -87,7 +87,7 @@ class Interpreter final : public Context {
   // conversation ends there.
   std::optional<Outcome> after_command(int errors_before);
   // HELP, HELP SHORT or HELP LONG typed at a question: answered, true.
-  bool answer_help(const std::vector<std::string>& words, const Prompt& prompt);
+  bool answer_help(std::span<const std::string_view> words, const Prompt& prompt);
   Outcome apl_environment();
 
   Options options_;
@@ -104,7 +104,11 @@ class Interpreter final : public Context {
   std::unique_ptr<AplEnvironment> apl_;
   bool running_ = false;              // a command is running: a --strict stop abandons it
   std::vector<std::string> pending_;  // unread words
-  bool on_line_ = false;              // the unread words are the command line's
+  // The last reply, which ask_words's views show: the line typed, or the words that were unread.
+  std::string reply_line_;
+  std::vector<std::string> reply_pending_;
+  std::vector<std::string_view> reply_;
+  bool on_line_ = false;  // the unread words are the command line's
   Ending ending_ = Ending::none;
   bool input_ended_ = false;  // the input ended inside a command
   bool interrupted_ = false;  // the last command was abandoned by Ctrl-C

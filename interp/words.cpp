@@ -32,9 +32,9 @@ bool is_comment_line(std::string_view line) {
   return line.starts_with('*') || line.starts_with(lamp);
 }
 
-std::vector<std::string> split_words(std::string_view line) {
-  std::vector<std::string> words;
-  if (is_comment_line(line)) return words;
+void split_words(std::string_view line, std::vector<std::string_view>& words) {
+  words.clear();
+  if (is_comment_line(line)) return;
   if (auto at = line.find(lamp); at != std::string_view::npos) line = line.substr(0, at);
   // Blanks and commas separate words.
   static constexpr auto separator = [] {
@@ -43,23 +43,21 @@ std::vector<std::string> split_words(std::string_view line) {
       table[c] = is_blank(static_cast<char>(c)) || c == ',';
     return table;
   }();
-  // Where words start and end, found without a branch per character (a line of a thousand
-  // points has three thousand words of a few characters each), then the words made.
-  std::vector<std::size_t> bounds(line.size() + 1);
-  std::size_t count = 0;
-  bool before = true;  // a separator, or the start
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const bool now = separator[static_cast<unsigned char>(line[i])];
-    bounds[count] = i;
-    count += before != now;
-    before = now;
+  auto apart = [&](std::size_t i) { return separator[static_cast<unsigned char>(line[i])]; };
+  const std::size_t n = line.size();
+  for (std::size_t i = 0;;) {
+    while (i < n && apart(i)) ++i;
+    if (i == n) return;
+    const std::size_t first = i;
+    while (i < n && !apart(i)) ++i;
+    words.push_back(line.substr(first, i - first));
   }
-  bounds[count] = line.size();
-  count += !before;
-  words.reserve(count / 2);
-  for (std::size_t k = 0; k + 1 < count; k += 2)
-    words.emplace_back(line.substr(bounds[k], bounds[k + 1] - bounds[k]));
-  return words;
+}
+
+std::vector<std::string> split_words(std::string_view line) {
+  std::vector<std::string_view> views;
+  split_words(line, views);
+  return {views.begin(), views.end()};
 }
 
 std::string upper(std::string_view text) {

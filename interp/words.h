@@ -30,6 +30,9 @@ class ReadingFor {
 // The words of `line`: separated by blanks, tabs and commas, everything from a `⍝` on dropped,
 // nothing for a comment line.
 std::vector<std::string> split_words(std::string_view line);
+// The same words as views of `line`, into `words` (its room kept from line to line): no word is
+// copied.
+void split_words(std::string_view line, std::vector<std::string_view>& words);
 
 // ASCII capitals (the words of the manual are ASCII; other characters are kept as typed).
 std::string upper(std::string_view text);

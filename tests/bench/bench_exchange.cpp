@@ -61,9 +61,11 @@ class QuietContext final : public igds::Context {
   igds::Workspace& workspace() override { return ws_; }
   const igds::Options& options() const override { return options_; }
   const igds::Disk& disk() const override { return disk_; }
-  std::vector<std::string> ask(const igds::Prompt&) override {
+  std::span<const std::string_view> ask_words(const igds::Prompt&) override {
     if (pending_.empty()) throw igds::EndOfInput{};
-    return std::exchange(pending_, {});
+    reply_ = std::exchange(pending_, {});
+    views_.assign(reply_.begin(), reply_.end());
+    return views_;
   }
   void unread(std::vector<std::string> words) override {
     words.insert(words.end(), pending_.begin(), pending_.end());
@@ -86,6 +88,8 @@ class QuietContext final : public igds::Context {
   igds::Options options_;
   igds::Disk disk_;
   igds::Journal journal_{ws_};
+  std::vector<std::string> reply_;
+  std::vector<std::string_view> views_;
   std::vector<std::string> pending_;
 };
 

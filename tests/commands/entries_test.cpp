@@ -14,7 +14,7 @@ namespace igds::test {
 
 namespace {
 
-std::vector<std::string> words(std::initializer_list<const char*> list) {
+std::vector<std::string_view> words(std::initializer_list<const char*> list) {
   return {list.begin(), list.end()};
 }
 

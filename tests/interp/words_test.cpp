@@ -10,6 +10,8 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "workspace/numbers/typed.h"
 
@@ -23,6 +25,20 @@ TEST_CASE("blanks, tabs and commas separate words") {
   CHECK(split_words("") == Words{});
   CHECK(split_words("   \r") == Words{});
   CHECK(split_words("build\r") == Words{"build"});
+}
+
+TEST_CASE("the words as views of the line, into a vector kept from line to line") {
+  const std::string line = " 1,0.5\t¯2  x ⍝ a comment";
+  std::vector<std::string_view> views{"left", "from", "before"};
+  split_words(line, views);
+  REQUIRE(views == std::vector<std::string_view>{"1", "0.5", "¯2", "x"});
+  // Views of the line itself, not copies of its words.
+  CHECK(views[1].data() == line.data() + 3);
+  CHECK(views[3].data() == line.data() + line.find('x'));
+  split_words("* a comment line", views);
+  CHECK(views.empty());
+  split_words("7", views);
+  CHECK(views == std::vector<std::string_view>{"7"});
 }
 
 TEST_CASE("comments: * or ⍝ first, or anything after ⍝") {
