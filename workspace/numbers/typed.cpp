@@ -56,25 +56,27 @@ ScannedNumber scan(const Char* const begin, const Char* const end, NumberSigns s
   std::uint64_t significand = 0;
   int significant = 0;  // digits in `significand`, its leading zeros not counted
   int scale = 0;
-  auto digits = [&](bool fraction) {
-    const Char* start = p;
-    for (; digit(p); ++p) {
-      const auto d = code(*p) - '0';
+  const bool negative = sign();
+  // The digits and the point in one loop: a loop ends with a mispredicted branch, and most
+  // numbers have a point.
+  std::size_t mantissa = 0;
+  bool point = false;
+  for (; p != end; ++p) {
+    const auto d = code(*p) - '0';
+    if (d < 10) {
+      ++mantissa;
       if (significant < 19) {
         significand = 10 * significand + d;
         significant += significand != 0;
-        scale += fraction;
+        scale += point;
       } else {
         significant = 20;  // more digits than the quick way takes
       }
+    } else if (*p == '.' && !point) {
+      point = true;
+    } else {
+      break;
     }
-    return p - start;
-  };
-  const bool negative = sign();
-  auto mantissa = digits(false);
-  if (p != end && *p == '.') {
-    ++p;
-    mantissa += digits(true);
   }
   if (mantissa == 0) return {};
   std::int64_t exponent = 0;
@@ -151,12 +153,6 @@ ScannedNumber scan_number(std::string_view utf8, NumberSigns signs) {
 
 ScannedNumber scan_number(std::u32string_view text, NumberSigns signs) {
   return scan(text.data(), text.data() + text.size(), signs);
-}
-
-std::optional<double> parse_typed_number(std::string_view word) {
-  const ScannedNumber n = scan_number(word, NumberSigns::typed);
-  if (n.length == 0 || n.length != word.size()) return std::nullopt;
-  return n.value;
 }
 
 std::string format_typed_number(double value) {
