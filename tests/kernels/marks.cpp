@@ -366,7 +366,7 @@ TEST_CASE("the sphere octant of the report agrees with Coons's quasi-sphere") {
       {H(C), H(S), T(C), T(S)},
       {H(E), H(SE), T(E), T(SE)},
   };
-  // Coons's B (the seed, "Results") for radius R, per coordinate.
+  // Coons's B (Marks's paper, "Results") for radius R, per coordinate.
   const double a = 4 * (std::sqrt(2.0) - 1);
   const double coons[3][4][4] = {
       {{0, 0, 0, 0}, {0, R, a * R, 0}, {0, a * R, a * a * R, 0}, {0, 0, 0, 0}},

@@ -1,6 +1,7 @@
-// DUCT 4.4 picture files (workspace/exchange/duct.h): a picture written by hand from the spec,
-// read and drawn item by item; the tolerant reader; damaged pictures refused with their line and
-// reason; conic arcs; the writer's fields; round trips; the golden pictures of a surface.
+// DUCT 4.4 picture files (workspace/exchange/duct.h): a picture written by hand from
+// docs/exchange.md ("The file"), read and drawn item by item; the tolerant reader; damaged
+// pictures refused with their line and reason; conic arcs; the writer's fields; round trips; the
+// golden pictures of a surface.
 #include "workspace/exchange/duct.h"
 
 #include <doctest/doctest.h>
@@ -248,7 +249,7 @@ TEST_CASE("instruction codes decompose into their six parts and back") {
   }
   // Colours 0..2, 3 arc kinds, 5 marks, 2 positions, 4 pen codes, 3 dashes.
   CHECK(valid == 3 * 3 * 5 * 2 * 4 * 3);
-  const auto a = decompose_duct_code(4897);  // the seed's example
+  const auto a = decompose_duct_code(4897);  // the DUCT format's example
   REQUIRE(a);
   CHECK(a->colour == 2);
   CHECK(a->arc == DuctArc::conic);
@@ -268,7 +269,7 @@ TEST_CASE("the dates of the exchange files") {
   CHECK(iso_date({1987, 9, 22, 9, 55, 50}) == "1987-09-22T09:55:50");
 }
 
-TEST_CASE("the hand-written picture is read as the spec says") {
+TEST_CASE("the hand-written picture is read as the format says") {
   const DuctPicture p = read_duct(hand_written());
   REQUIRE(p.header.size() == 2);
   CHECK(p.header[0] == "DUCT MARK 4.4 PICTURE FILE HANDWRITTEN 14 MAR 1988 10:15:00");
@@ -585,7 +586,7 @@ TEST_CASE("conic arcs: circles, parabolas, hyperbolas, the major arc and the fal
   }
 }
 
-TEST_CASE("the writer's lines have the spec's field widths") {
+TEST_CASE("the writer's lines have the format's field widths") {
   Drawing3 d;
   const double line[] = {0, 0, 0, 10, 0, 0};
   d.add_polyline(Vec3View(line, 2), {.pen = 2, .dash = Dash::dashed});

@@ -84,7 +84,7 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws);
 void store_image(const Disk& disk, std::string_view name, const Image& image);
 Image load_image(const Disk& disk, std::string_view name);  // FILE NOT FOUND / FILE DAMAGED
 
-// WRITE: NAME.IGDSCHAR in the card format of the spec. Returns how many values did not fit
+// WRITE: NAME.IGDSCHAR in the card format of docs/disk.md. Returns how many values did not fit
 // F10.3 and were written as ten asterisks.
 std::size_t write_char(const Disk& disk, std::string_view name, const Workspace& ws);
 

@@ -21,7 +21,7 @@ ConicSpans conic_spans(Vec3 p0, Vec3 m, Vec3 p1, double shape) {
   };
   if (c2 > 0 && std::isfinite(c2) && std::isfinite(f) && f > 0) {
     if (f < 2) {
-      // One span: the rational quadratic of the seed's equation (1) in Bernstein form.
+      // One span: the rational quadratic of docs/exchange.md ("Conic arcs") in Bernstein form.
       const double w = (2 - f) / f;
       const Vec3 q = 0.5 * (p0 + p1);
       const Vec3 control = (1 / (2 - f)) * (2 * m - f * q);
