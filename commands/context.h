@@ -63,6 +63,29 @@ struct Prompt {
 // as by Ctrl-C, then END.
 struct EndOfInput {};
 
+// The last reply as Context::ask_words gives it: views of the words that were waiting, or of a
+// line typed, kept until the next reply.
+class Reply {
+ public:
+  std::span<const std::string_view> of(std::vector<std::string> words) {
+    words_ = std::move(words);
+    views_.assign(words_.begin(), words_.end());
+    return views_;
+  }
+  // `split(line, views)` puts the views of the line's words into `views`.
+  template <class Split>
+  std::span<const std::string_view> of(std::string line, Split split) {
+    line_ = std::move(line);
+    split(line_, views_);
+    return views_;
+  }
+
+ private:
+  std::string line_;
+  std::vector<std::string> words_;
+  std::vector<std::string_view> views_;
+};
+
 class Context {
  public:
   virtual ~Context() = default;

@@ -178,22 +178,19 @@ void Interpreter::run_with(const Command& command, const Choice* option) {
 }
 
 std::span<const std::string_view> Interpreter::ask_words(const Prompt& prompt) {
-  if (!pending_.empty()) {
-    reply_pending_ = std::exchange(pending_, {});
-    reply_.assign(reply_pending_.begin(), reply_pending_.end());
-    return reply_;
-  }
+  if (!pending_.empty()) return reply_.of(std::exchange(pending_, {}));
   const std::string shown = prompt.text.empty() ? "" : std::string(prompt.text) + " ";
   asking_ = &prompt;
   for (;;) {
     Event e = terminal_.read_line(shown);
     if (e.kind == Event::Kind::interrupt) throw Interrupted{};
     if (e.kind != Event::Kind::line) throw EndOfInput{};
-    reply_line_ = std::move(e.text);
-    split_words(reply_line_, reply_);
-    if (answer_help(reply_, prompt)) continue;
+    const auto words = reply_.of(
+        std::move(e.text),
+        [](std::string_view line, std::vector<std::string_view>& w) { split_words(line, w); });
+    if (answer_help(words, prompt)) continue;
     on_line_ = false;
-    return reply_;
+    return words;
   }
 }
 

@@ -104,10 +104,7 @@ class Interpreter final : public Context {
   std::unique_ptr<AplEnvironment> apl_;
   bool running_ = false;              // a command is running: a --strict stop abandons it
   std::vector<std::string> pending_;  // unread words
-  // The last reply, which ask_words's views show: the line typed, or the words that were unread.
-  std::string reply_line_;
-  std::vector<std::string> reply_pending_;
-  std::vector<std::string_view> reply_;
+  Reply reply_;
   bool on_line_ = false;  // the unread words are the command line's
   Ending ending_ = Ending::none;
   bool input_ended_ = false;  // the input ended inside a command

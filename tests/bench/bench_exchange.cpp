@@ -63,9 +63,7 @@ class QuietContext final : public igds::Context {
   const igds::Disk& disk() const override { return disk_; }
   std::span<const std::string_view> ask_words(const igds::Prompt&) override {
     if (pending_.empty()) throw igds::EndOfInput{};
-    reply_ = std::exchange(pending_, {});
-    views_.assign(reply_.begin(), reply_.end());
-    return views_;
+    return reply_.of(std::exchange(pending_, {}));
   }
   void unread(std::vector<std::string> words) override {
     words.insert(words.end(), pending_.begin(), pending_.end());
@@ -88,8 +86,7 @@ class QuietContext final : public igds::Context {
   igds::Options options_;
   igds::Disk disk_;
   igds::Journal journal_{ws_};
-  std::vector<std::string> reply_;
-  std::vector<std::string_view> views_;
+  igds::Reply reply_;
   std::vector<std::string> pending_;
 };
 

@@ -52,20 +52,17 @@ class FakeContext final : public Context {
   const Options& options() const override { return opts; }
   const Disk& disk() const override { return disk_; }
   std::span<const std::string_view> ask_words(const Prompt& prompt) override {
-    if (!pending_.empty()) {
-      reply_pending_ = std::exchange(pending_, {});
-      reply_.assign(reply_pending_.begin(), reply_pending_.end());
-      return reply_;
-    }
+    if (!pending_.empty()) return reply_.of(std::exchange(pending_, {}));
     prompts.emplace_back(prompt.text);
     if (typed_.empty()) throw EndOfInput{};
-    reply_line_ = typed_.front();
+    std::string line = typed_.front();
     typed_.pop_front();
-    if (reply_line_ == "^C") throw Interrupted{};
+    if (line == "^C") throw Interrupted{};
     on_line_ = false;
     // The interpreter's own word splitting: blanks and commas, comments dropped.
-    split_words(reply_line_, reply_);
-    return reply_;
+    return reply_.of(std::move(line), [](std::string_view text, std::vector<std::string_view>& w) {
+      split_words(text, w);
+    });
   }
   void unread(std::vector<std::string> words) override {
     words.insert(words.end(), pending_.begin(), pending_.end());
@@ -110,10 +107,7 @@ class FakeContext final : public Context {
   Disk disk_;
   std::deque<std::string> typed_;
   std::vector<std::string> pending_;
-  // The last reply, which ask_words's views show.
-  std::string reply_line_;
-  std::vector<std::string> reply_pending_;
-  std::vector<std::string_view> reply_;
+  Reply reply_;
   bool on_line_ = false;
 };
 
