@@ -9,6 +9,8 @@
 
 #include <fmt/format.h>
 
+#include "workspace/numbers/fortran.h"
+
 namespace igds {
 
 namespace {
@@ -17,26 +19,12 @@ namespace {
   throw CadReadError(reason);
 }
 
-// A real as IGES and STEP write it: an optional sign, digits with or without a point, an exponent
-// written E or D (either case); finite.
+// A real as IGES and STEP write it, blanks around it allowed: a FORTRAN real (an optional sign,
+// digits with or without a point, an exponent written E or D in either case), finite.
 std::optional<double> parse_real(std::string_view s) {
   while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
   while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-  if (s.empty() || s.size() > 64) return std::nullopt;
-  char buffer[64];
-  std::size_t n = 0;
-  for (char c : s) {
-    if (c == 'D' || c == 'd') c = 'E';
-    if (!(std::isdigit(static_cast<unsigned char>(c)) || c == '+' || c == '-' || c == '.' ||
-          c == 'E' || c == 'e'))
-      return std::nullopt;
-    buffer[n++] = c;
-  }
-  const char* first = buffer + (buffer[0] == '+' ? 1 : 0);
-  double v = 0;
-  const auto [end, ec] = std::from_chars(first, buffer + n, v);
-  if (ec != std::errc() || end != buffer + n || !std::isfinite(v)) return std::nullopt;
-  return v;
+  return fortran::read_real(s);
 }
 
 std::optional<long long> parse_whole(std::string_view s) {
