@@ -45,10 +45,6 @@ struct HelpRequest {
   int length = -1;  // 0 SHORT, 1 LONG, -1 the setting in force
 };
 HelpRequest help_request(std::span<const std::string_view> words);
-inline HelpRequest help_request(std::span<const std::string> words) {
-  const std::vector<std::string_view> views(words.begin(), words.end());
-  return help_request(std::span<const std::string_view>(views));
-}
 std::span<const Choice> help_lengths();
 std::string_view help_word();
 

@@ -750,7 +750,9 @@ std::string AplEnvironment::read_answer(int code) {
   for (;;) {
     std::optional<std::string> line = hooks_.read("");
     if (!line) throw AplError(ErrorKind::interrupt);
-    const HelpRequest help = help_request(split_words(*line));
+    std::vector<std::string_view> words;
+    split_words(*line, words);
+    const HelpRequest help = help_request(words);
     if (!help.asked) return *line;
     if (help.length >= 0) ws_.status[0] = help.length;
     values_.erase("STATUS");

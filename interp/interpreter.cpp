@@ -402,7 +402,8 @@ std::vector<std::string> Interpreter::completions(const std::vector<std::string>
   if (current_ != nullptr) {
     // At a question: its answers, and HELP with its lengths.
     if (!before.empty()) {
-      if (help_request(before).asked) add(help_lengths());
+      const std::vector<std::string_view> words(before.begin(), before.end());
+      if (help_request(words).asked) add(help_lengths());
       return out;
     }
     if (asking_) add(asking_->answers);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
@@ -11,6 +12,17 @@
 #include "workspace/kernels/vec3.h"
 
 namespace igds::test {
+
+// The box of the `n` points x y at `xy` (2n numbers), x0 y0 x1 y1, found one point at a time: what
+// the kernels' one-pass boxes are checked against.
+inline std::array<double, 4> box_of_points(const double* xy, std::size_t n) {
+  std::array<double, 4> box{xy[0], xy[1], xy[0], xy[1]};
+  for (std::size_t k = 0; k < n; ++k) {
+    const double x = xy[2 * k], y = xy[2 * k + 1];
+    box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
+  }
+  return box;
+}
 
 // A small deterministic generator (SplitMix64) so that every run sees the same data.
 struct Random {

@@ -301,12 +301,7 @@ TEST_CASE(
     CHECK(found.not_finite == n);
     CHECK(out.d == expected.d);  // bit for bit
     // The box of the images, each side reached by an image.
-    std::array<double, 4> box{expected.d[0], expected.d[1], expected.d[0], expected.d[1]};
-    for (std::size_t k = 0; k < n; ++k) {
-      const double x = expected.d[2 * k], y = expected.d[2 * k + 1];
-      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
-    }
-    CHECK(found.extent == box);
+    CHECK(found.extent == test::box_of_points(expected.d.data(), n));
   }
   // Points near the largest numbers overflow under ISOMETRIC: the first of two, in two parts.
   Flat<Vec3> huge = in;

@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -585,14 +584,9 @@ TEST_CASE("finite_points finds the first number that is not finite, else the poi
     for (std::size_t k = 0; k < 2 * n; ++k) v[k] = (k % 3 == 0 ? -1.0 : 1.0) * double(k % 1000);
     v[0] = -5e300, v[2 * n - 1] = 7e300;
     if (n > 2) v[2 * (n / 2) + 1] = -3e300, v[2 * (n - 2)] = 4e300;
-    std::array<double, 4> box{v[0], v[1], v[0], v[1]};
-    for (std::size_t k = 0; k < n; ++k) {
-      const double x = v[2 * k], y = v[2 * k + 1];
-      box = {std::min(box[0], x), std::min(box[1], y), std::max(box[2], x), std::max(box[3], y)};
-    }
     const FinitePoints all = finite_points(v.data(), n);
     CHECK(all.not_finite == 2 * n);
-    CHECK(all.box == box);
+    CHECK(all.box == test::box_of_points(v.data(), n));
     for (const std::size_t at : {std::size_t(0), n, 2 * n / 3, 2 * n - 1}) {
       std::vector<double> w = v;
       w[at] = std::nan("");

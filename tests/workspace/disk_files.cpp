@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "tests/kernels/helpers.h"
 #include "tests/support/process.h"
 #include "tests/support/skip.h"
 #include "tests/workspace/disk_fixtures.h"
@@ -261,18 +262,19 @@ TEST_CASE("STORE FILE then DISPLAY FILE gives the image back bit for bit") {
     CHECK(
         test::same_bits(std::make_shared<const Image>(back), std::make_shared<const Image>(image)));
     // The box of the points, found as they were checked.
-    const double* p = image.points.data();
-    std::array<double, 4> box{p[0], p[1], p[0], p[1]};
-    for (std::size_t k = 0; k < image.points.size(); k += 2)
-      box = {std::min(box[0], p[k]), std::min(box[1], p[k + 1]), std::max(box[2], p[k]),
-             std::max(box[3], p[k + 1])};
-    CHECK(back.extent == box);
+    CHECK(back.extent == test::box_of_points(image.points.data(), image.points.size() / 2));
   }
+  // A box whose four sides are four points' own: x is not taken for y.
+  Image wide = test::make_image(1, Projection::orthogonal, 2, 3, 5);
+  wide.points.ravel = {0, -1, 4, 2, -3, 7, 1, 1, 2, 0, 5, -2};
+  store_image(s.disk, "WIDE", wide);
+  CHECK(load_image(s.disk, "WIDE").extent == std::array<double, 4>{-3, -2, 5, 7});
   Image empty;
   store_image(s.disk, "EMPTY", empty);
   CHECK(load_image(s.disk, "EMPTY") == empty);
   CHECK_FALSE(load_image(s.disk, "EMPTY").extent);
-  CHECK(files_in(s.dir.path()) == std::set<std::string>{"PIC.IGDSIMAG", "EMPTY.IGDSIMAG"});
+  CHECK(files_in(s.dir.path()) ==
+        std::set<std::string>{"PIC.IGDSIMAG", "WIDE.IGDSIMAG", "EMPTY.IGDSIMAG"});
 }
 
 TEST_CASE("a hidden-line image kept by STORE FILE comes back with its depths, and says so") {

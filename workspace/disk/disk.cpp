@@ -375,10 +375,8 @@ Image load_image(const Disk& disk, std::string_view name) {
   } catch (const disk::Damage& d) {
     throw damaged(n, "IGDSIMAG", d.reason(), kept);
   }
-  std::optional<std::array<double, 4>> extent;
-  if (auto p = image_problem(image, Variable::image, &extent))
+  if (auto p = image_problem(image, Variable::image, &image.extent))
     throw damaged(n, "IGDSIMAG", "FORMAT: " + p->reason, kept);
-  image.extent = extent;
   image.file = disk.path(n, "IGDSIMAG");
   image.file_sum = disk::trailing_checksum(file.bytes());
   return image;

@@ -398,9 +398,8 @@ struct Session::State {
         throw disk::Damage(fmt::format("{}: {}", name, d.reason()));
       }
     }
-    std::optional<std::array<double, 4>> extent;
-    if (auto p = image_problem(image, slot, &extent)) throw disk::Damage("IMAGE: " + p->reason);
-    image.extent = extent;
+    if (auto p = image_problem(image, slot, &image.extent))
+      throw disk::Damage("IMAGE: " + p->reason);
     return std::make_shared<const Image>(std::move(image));
   }
 
