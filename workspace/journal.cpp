@@ -68,8 +68,8 @@ ArrayChange change_of(const Array& from, const Array& to, const Edits& edits) {
     c.whole = true;
   }
   if (c.whole) {
-    c.before = from.ravel;
-    c.after = to.ravel;
+    assign_large(c.before, from.ravel);
+    assign_large(c.after, to.ravel);
   } else {
     for (const auto& [first, end] : c.ranges) {
       c.before.insert(c.before.end(), from.ravel.begin() + first, from.ravel.begin() + end);
@@ -91,7 +91,7 @@ bool apply_change(const ArrayChange& c, Array& a, bool back) {
         !same_bits(a.data(), from.data(), from.size()))
       return false;
     a.shape = to_shape;
-    a.ravel = to;
+    assign_large(a.ravel, to);
     return true;
   }
   if (from_shape != to_shape || from.size() != to.size()) return false;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/coons.h"
 
 using namespace igds;
 
@@ -81,4 +82,45 @@ TEST_CASE("a large array, made or copied, is advised before it is written; its n
   output.reshape_for_output({n});
   CHECK(output.size() == n);
   CHECK(advised(output.data() + n / 2) == kernel_has_huge_pages());
+}
+
+TEST_CASE("assign_large copies into advised memory, or into the memory the vector has") {
+  const std::size_t n = 2 * huge_page_advice_bytes / sizeof(double);
+  Ravel from(n);
+  for (std::size_t k = 0; k < n; ++k) from[k] = double(k);
+  Ravel copy;
+  assign_large(copy, from);
+  CHECK(copy == from);
+  CHECK(advised(copy.data() + n / 2) == kernel_has_huge_pages());
+  // A copy that fits is written where the vector's numbers are.
+  const double* const kept = copy.data();
+  from[7] = -1;
+  from.resize(n / 2);
+  assign_large(copy, from);
+  CHECK(copy == from);
+  CHECK(copy.data() == kept);
+  // A small block is copied as it is, and never advised.
+  const Ravel small(16, 2.5);
+  Ravel small_copy;
+  assign_large(small_copy, small);
+  CHECK(small_copy == small);
+}
+
+TEST_CASE("the tangents along a large grid's curves and stringers are advised before written") {
+  // 300 x 300 points: 2.16 MB of tangents in each family.
+  const int side = 300;
+  Array points({std::size_t(side) * side, 3});
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      double* p = points.data() + 3 * (std::size_t(i) * side + j);
+      p[0] = j, p[1] = i, p[2] = 0.01 * i * j;
+    }
+  const Array inptg({std::size_t(4) * side, 4});
+  const GridTangents t = grid_tangents(side, side, as_vec3(points), inptg);
+  REQUIRE(t.along_curves.size() * sizeof(Vec3) >= huge_page_advice_bytes);
+  CHECK(advised(t.along_curves.data() + t.along_curves.size() / 2) == kernel_has_huge_pages());
+  CHECK(advised(t.along_stringers.data() + t.along_stringers.size() / 2) ==
+        kernel_has_huge_pages());
+  // Along a curve of this grid x grows by 1 a point: the tangent's x is 1 inside.
+  CHECK(t.along_curves[side / 2].x == doctest::Approx(1));
 }

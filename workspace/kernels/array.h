@@ -31,11 +31,7 @@ struct Array {
   Array& operator=(const Array& other) {
     if (this == &other) return *this;
     shape = other.shape;
-    if (ravel.capacity() < other.ravel.size()) {
-      ravel = Ravel();
-      reserve_large(ravel, other.ravel.size());
-    }
-    ravel.assign(other.ravel.begin(), other.ravel.end());
+    assign_large(ravel, other.ravel);
     return *this;
   }
   Array(Array&&) = default;

@@ -20,6 +20,7 @@ GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& i
   // Each family's tangents are made on a thread of its own, which also writes them first.
   // INPTG rows (workspace/state.h): curve i's ends at 2i and 2i+1.
   auto curves = [&] {
+    reserve_large(t.along_curves, nc * ns);
     t.along_curves.resize(nc * ns);
     SplineScratch scratch;
     std::vector<SplineLine> lines(nc);

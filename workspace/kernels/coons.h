@@ -37,6 +37,7 @@ Vec3 border_tangent(const Array& inptg, std::size_t row);
 template <class Solve>
 void stringer_tangents(std::size_t nc, std::size_t ns, Vec3View points, std::vector<Vec3>& along,
                        const Solve& solve) {
+  reserve_large(along, nc * ns);
   along.resize(nc * ns);
   const std::size_t block = std::clamp<std::size_t>(65536 / std::max<std::size_t>(nc, 1), 1, 16);
   std::vector<double> columns(3 * block * nc);

@@ -31,8 +31,8 @@ struct UnwrittenAllocator : std::allocator<T> {
   }
 };
 
-// Blocks of at least this many bytes are advised (a huge page is 2 MB).
-inline constexpr std::size_t huge_page_advice_bytes = std::size_t(8) << 20;
+// Blocks that can hold a huge page (2 MB) are advised.
+inline constexpr std::size_t huge_page_advice_bytes = std::size_t(2) << 20;
 
 // Advises the kernel to back the whole pages of [p, p + bytes) with huge pages (madvise
 // MADV_HUGEPAGE) when the block is large. Advice only: where the kernel has no transparent huge
@@ -44,6 +44,17 @@ template <class T, class A>
 void reserve_large(std::vector<T, A>& v, std::size_t n) {
   v.reserve(n);
   advise_huge_pages(v.data(), n * sizeof(T));
+}
+
+// `v` made a copy of `from`, its memory kept when it holds the copy, else new and advised.
+template <class T, class A>
+void assign_large(std::vector<T, A>& v, const std::vector<T, A>& from) {
+  if (&v == &from) return;
+  if (v.capacity() < from.size()) {
+    v = std::vector<T, A>();
+    reserve_large(v, from.size());
+  }
+  v.assign(from.begin(), from.end());
 }
 
 }  // namespace igds
