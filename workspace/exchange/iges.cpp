@@ -14,6 +14,7 @@
 #include "workspace/exchange/surface_curves.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/interrupt.h"
+#include "workspace/kernels/memory.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/numbers/decimal.h"
 #include "workspace/numbers/fortran.h"
@@ -253,7 +254,9 @@ void knots(Records& p, const IntegerReals& reals, std::size_t first, std::size_t
 // bytes (for Records::slot_tokens).
 class RealTexts {
  public:
+  // Room for n texts, left unwritten: each is written by make (or copy) before it is read.
   void resize(std::size_t n) {
+    if (text_.capacity() < n * slot) reserve_large(text_, n * slot);
     text_.resize(n * slot);
     length_.resize(n);
   }
@@ -274,7 +277,7 @@ class RealTexts {
   From from(std::size_t k) const { return {text_.data() + k * slot, length_.data() + k}; }
 
  private:
-  std::vector<char> text_;
+  std::vector<char, UnwrittenAllocator<char>> text_;
   std::vector<std::uint8_t> length_;
 };
 
