@@ -103,6 +103,17 @@ Event FdSource::line(std::string_view) {
   }
 }
 
+bool FdSource::line_ready() const {
+  if (eof_) return true;
+  // A whole line that is not a comment (line() passes over those).
+  for (std::size_t at = start_;;) {
+    const auto end = buffer_.find('\n', at);
+    if (end == std::string::npos) return false;
+    if (!is_comment_line(std::string_view(buffer_).substr(at, end - at))) return true;
+    at = end + 1;
+  }
+}
+
 Event FdSource::key(std::optional<std::chrono::milliseconds>) {
   return line("");
 }

@@ -46,6 +46,7 @@ class FdSource final : public EventSource {
   Event line(std::string_view prompt) override;
   Event key(std::optional<std::chrono::milliseconds> timeout) override;
   bool command_file() const override { return command_file_; }
+  bool line_ready() const override;
 
  private:
   int fd_;

@@ -8,6 +8,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -58,6 +59,12 @@ int igds_main(int argc, char** argv) {
   // A reader that goes away (`igds | head -1`) is a failed write, not a death that leaves the
   // lock behind: the conversation ends and the session is saved.
   std::signal(SIGPIPE, SIG_IGN);
+  // Output that is no terminal (a pipe, a file) goes out in writes of up to 64 KB: at each READY,
+  // before igds waits for input, or when the buffer is full (Terminal::read_line). A BUILD of
+  // 250,000 points echoed line by line in 4 KB writes woke its reader some 1,500 times.
+  // (glibc takes the size only with a buffer given.)
+  static char out_buffer[std::size_t(1) << 16];
+  if (isatty(STDOUT_FILENO) != 1) std::setvbuf(stdout, out_buffer, _IOFBF, sizeof out_buffer);
   CommandLine line;
   try {
     line = parse_command_line(std::vector<std::string>(argv + 1, argv + argc));

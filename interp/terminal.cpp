@@ -236,7 +236,10 @@ Event Terminal::read_line(std::string_view prompt, std::string_view above) {
     out_.flush();
     return input_->line(prompt);
   }
-  out_.flush();
+  // What was written reaches the terminal at each READY, so that a file's progress shows command
+  // by command, and before igds waits for input; the answers to a command's questions read
+  // already (a BUILD's lines of points) go out together.
+  if (!above.empty() || !input_->line_ready()) out_.flush();
   Event e = input_->line(prompt);
   if (e.kind == Event::Kind::line) {
     // The transcript shows the line after its prompt, as on the screen.

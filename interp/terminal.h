@@ -55,6 +55,8 @@ class EventSource {
   // A command file or a pipe: lines are echoed after their prompt so that the output reads like
   // the session, --strict applies, and nothing waits for a person.
   virtual bool command_file() const = 0;
+  // The next line is read already: line() returns it without waiting for input.
+  virtual bool line_ready() const { return false; }
 };
 
 // Where output goes: the standard output, or a string in the tests.

@@ -3,8 +3,13 @@
 #include "interp/terminal.h"
 
 #include <doctest/doctest.h>
+#include <unistd.h>
+
+#include <string>
+#include <utility>
 
 #include "commands/picture.h"
+#include "interp/input.h"
 #include "tests/devices/support.h"
 #include "tests/support/scripted.h"
 #include "tests/support/tek_decoder.h"
@@ -291,6 +296,70 @@ TEST_CASE("command files: the line is echoed after its prompt, nothing waits") {
   terminal.document(text);
   CHECK(out.text.starts_with("READY\nNUMBER OF CURVES AND STRINGERS? 3 3\nX\n"));
   CHECK(out.text.find("MORE") == std::string::npos);
+}
+
+namespace {
+
+// Output kept in a string, its flushes counted.
+struct CountedOutput final : Output {
+  std::string text;
+  int flushes = 0;
+  std::size_t flushed = 0;  // the length of `text` at the last flush
+  void write(std::string_view bytes) override { text += bytes; }
+  void flush() override { ++flushes, flushed = text.size(); }
+};
+
+// A pipe: what is written to `in` is read from `out`.
+struct Pipe {
+  int out = -1, in = -1;
+  Pipe() {
+    int fds[2];
+    REQUIRE(::pipe(fds) == 0);
+    out = fds[0], in = fds[1];
+  }
+  ~Pipe() {
+    if (in >= 0) ::close(in);
+  }
+  void send(std::string_view text) const {
+    REQUIRE(::write(in, text.data(), text.size()) == static_cast<ssize_t>(text.size()));
+  }
+  void close_input() { ::close(std::exchange(in, -1)); }
+};
+
+}  // namespace
+
+TEST_CASE("a pipe's answers read already go out together; a READY and a wait flush first") {
+  Pipe pipe;
+  FdSource source(pipe.out, true);
+  CountedOutput out;
+  Terminal terminal(TermMode::none, {}, out);
+  terminal.use_input(&source);
+  CHECK_FALSE(source.line_ready());
+  pipe.send("A\n* a comment\nB\n* another\n");
+  // Nothing read yet: the output goes out before the source reads (and might wait).
+  CHECK(terminal.read_line("? ", "READY").text == "A");
+  CHECK(out.flushes == 1);
+  CHECK(out.flushed == std::string("READY\n").size());
+  // B is there already: no flush, its echo stays with the rest.
+  CHECK(source.line_ready());
+  CHECK(terminal.read_line("? ").text == "B");
+  CHECK(out.flushes == 1);
+  // Only a comment is left: line() would wait, so everything is flushed first.
+  CHECK_FALSE(source.line_ready());
+  pipe.send("C");
+  pipe.close_input();
+  CHECK(terminal.read_line("? ").text == "C");
+  CHECK(out.flushes == 2);
+  CHECK(out.text == "READY\n? A\n? B\n? C\n");
+  CHECK(out.flushed == std::string("READY\n? A\n? B\n").size());
+  // At the end of the input nothing waits either; but a command's READY always goes out.
+  CHECK(source.line_ready());
+  CHECK(terminal.read_line("? ").kind == Event::Kind::end);
+  CHECK(out.flushes == 2);
+  CHECK(terminal.read_line("", "READY").kind == Event::Kind::end);
+  CHECK(out.flushes == 3);
+  CHECK(out.flushed == out.text.size());
+  CHECK(out.text.ends_with("READY\n"));
 }
 
 }  // namespace igds::test
