@@ -312,7 +312,9 @@ struct Session::State {
     const std::size_t bytes = Array::count(s.shape) * sizeof(double);
     if (bytes != s.ravel.size()) throw disk::Damage("FORMAT");
     check_pieces(s.ravel);
-    Array a(s.shape);
+    // Every byte is read into it (else read_blob throws and it is dropped): not cleared first.
+    Array a;
+    a.reshape_for_output(s.shape);
     read_blob(s.ravel, reinterpret_cast<char*>(a.data()), bytes);
     return a;
   }
