@@ -98,8 +98,10 @@ bool same_bytes(const Array& a, const RawArray& raw) {
          (raw.bytes.empty() || std::memcmp(a.data(), raw.bytes.data(), raw.bytes.size()) == 0);
 }
 
+// Its every byte copied (raw_array checked that they fill the shape): not cleared first.
 Array copied(const RawArray& raw) {
-  Array a(raw.shape);
+  Array a;
+  a.reshape_for_output(raw.shape);
   if (!raw.bytes.empty()) std::memcpy(a.data(), raw.bytes.data(), raw.bytes.size());
   return a;
 }
