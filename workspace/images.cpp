@@ -24,8 +24,7 @@ namespace {
 std::pair<Array, ProjectedImage> projected(Vec3View points, std::vector<std::size_t> shape,
                                            const View& view, Vec3 centre) {
   // Every point's image is written by the projection (or the array dropped): not cleared first.
-  Array out;
-  out.reshape_for_output(std::move(shape));
+  Array out = Array::for_output(std::move(shape));
   const ProjectedImage found = project_image(view, centre, points, as_point2(out));
   return {std::move(out), found};
 }

@@ -82,6 +82,10 @@ TEST_CASE("a large array, made or copied, is advised before it is written; its n
   output.reshape_for_output({n});
   CHECK(output.size() == n);
   CHECK(advised(output.data() + n / 2) == kernel_has_huge_pages());
+  const Array made = Array::for_output({n / 2, 2});
+  CHECK(made.shape == std::vector<std::size_t>{n / 2, 2});
+  CHECK(made.size() == n);
+  CHECK(advised(made.data() + n / 2) == kernel_has_huge_pages());
 }
 
 TEST_CASE("assign_large copies into advised memory, or into the memory the vector has") {

@@ -100,8 +100,7 @@ bool same_bytes(const Array& a, const RawArray& raw) {
 
 // Its every byte copied (raw_array checked that they fill the shape): not cleared first.
 Array copied(const RawArray& raw) {
-  Array a;
-  a.reshape_for_output(raw.shape);
+  Array a = Array::for_output(raw.shape);
   if (!raw.bytes.empty()) std::memcpy(a.data(), raw.bytes.data(), raw.bytes.size());
   return a;
 }

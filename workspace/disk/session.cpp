@@ -313,8 +313,7 @@ struct Session::State {
     if (bytes != s.ravel.size()) throw disk::Damage("FORMAT");
     check_pieces(s.ravel);
     // Every byte is read into it (else read_blob throws and it is dropped): not cleared first.
-    Array a;
-    a.reshape_for_output(s.shape);
+    Array a = Array::for_output(s.shape);
     read_blob(s.ravel, reinterpret_cast<char*>(a.data()), bytes);
     return a;
   }

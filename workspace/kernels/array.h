@@ -62,6 +62,13 @@ struct Array {
     ravel.resize(n);
   }
 
+  // A new array of shape `s` for an output that writes every number: none written before.
+  static Array for_output(std::vector<std::size_t> s) {
+    Array a;
+    a.reshape_for_output(std::move(s));
+    return a;
+  }
+
   friend bool operator==(const Array&, const Array&) = default;
 };
 
