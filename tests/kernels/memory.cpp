@@ -103,14 +103,15 @@ TEST_CASE("assign_large copies into advised memory, or into the memory the vecto
   assign_large(copy, from);
   CHECK(copy == from);
   CHECK(copy.data() == kept);
-  // A small block is copied as it is, and never advised.
+  // A small block is copied as it is.
   const Ravel small(16, 2.5);
   Ravel small_copy;
   assign_large(small_copy, small);
   CHECK(small_copy == small);
 }
 
-TEST_CASE("the tangents along a large grid's curves and stringers are advised before written") {
+TEST_CASE(
+    "the tangents along a large grid's curves and stringers are advised before they are written") {
   // 300 x 300 points: 2.16 MB of tangents in each family.
   const int side = 300;
   Array points({std::size_t(side) * side, 3});
