@@ -78,6 +78,12 @@ TEST_CASE("a large array, made or copied, is advised before it is written; its n
   assigned = a;
   CHECK(assigned == a);
   CHECK(advised(assigned.data() + n / 2) == kernel_has_huge_pages());
+  // Assigned to itself, it stays as it was, in its own memory.
+  const double* const before = assigned.data();
+  const Array& itself = assigned;
+  assigned = itself;
+  CHECK(assigned == a);
+  CHECK(assigned.data() == before);
   Array output;
   output.reshape_for_output({n});
   CHECK(output.size() == n);

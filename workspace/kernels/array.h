@@ -24,14 +24,10 @@ struct Array {
     ravel.resize(count(shape), 0.0);
   }
   // Copies are large arrays too (workspace/kernels/memory.h).
-  Array(const Array& other) : shape(other.shape) {
-    reserve_large(ravel, other.ravel.size());
-    ravel.assign(other.ravel.begin(), other.ravel.end());
-  }
+  Array(const Array& other) : shape(other.shape) { assign_large(ravel, other.ravel); }
   Array& operator=(const Array& other) {
-    if (this == &other) return *this;
     shape = other.shape;
-    assign_large(ravel, other.ravel);
+    assign_large(ravel, other.ravel);  // a ravel assigned to itself is left as it is
     return *this;
   }
   Array(Array&&) = default;
