@@ -22,7 +22,8 @@ bool same_bits(const double* a, const double* b, std::size_t n) {
 // Runs of differing elements closer than this are kept as one range (fewer ranges to store).
 constexpr std::size_t range_gap = 8;
 
-// What changed from `from` to `to`; `edits` (the Edits since the last save) covers every change.
+// What changed from `from` to `to`, without its values (take_values); `edits` (the Edits since
+// the last save) covers every change.
 ArrayChange change_of(const Array& from, const Array& to, const Edits& edits) {
   ArrayChange c;
   c.shape_before = from.shape;
@@ -67,16 +68,27 @@ ArrayChange change_of(const Array& from, const Array& to, const Edits& edits) {
   } else {
     c.whole = true;
   }
+  return c;
+}
+
+// The bytes change_of's `c` keeps once take_values gave it its values.
+std::size_t bytes_with_values(const ArrayChange& c, const Array& from, const Array& to) {
+  std::size_t values = c.whole ? from.size() + to.size() : 0;
+  for (const auto& [first, end] : c.ranges) values += 2 * (end - first);
+  return values * sizeof(double) + c.ranges.size() * 2 * sizeof(std::uint64_t);
+}
+
+// The values of change_of's `c`, from the two arrays it was found between.
+void take_values(ArrayChange& c, const Array& from, const Array& to) {
   if (c.whole) {
     assign_large(c.before, from.ravel);
     assign_large(c.after, to.ravel);
-  } else {
-    for (const auto& [first, end] : c.ranges) {
-      c.before.insert(c.before.end(), from.ravel.begin() + first, from.ravel.begin() + end);
-      c.after.insert(c.after.end(), to.ravel.begin() + first, to.ravel.begin() + end);
-    }
+    return;
   }
-  return c;
+  for (const auto& [first, end] : c.ranges) {
+    c.before.insert(c.before.end(), from.ravel.begin() + first, from.ravel.begin() + end);
+    c.after.insert(c.after.end(), to.ravel.begin() + first, to.ravel.begin() + end);
+  }
 }
 
 // `a` made from `from` (its shape, the values where the change applies) to `to`.
@@ -168,6 +180,20 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
   if (surface) {
     step.inppn = change_of(current_.inppn, ws.inppn, ws.changes.inppn);
     step.inptg = change_of(current_.inptg, ws.inptg, ws.changes.inptg);
+    if (step.bytes() + bytes_with_values(step.inppn, current_.inppn, ws.inppn) +
+            bytes_with_values(step.inptg, current_.inptg, ws.inptg) >
+        max_bytes) {
+      // A step that cannot be undone (bound() would drop it, and every step before it): the
+      // journal starts again from `ws`, and the step's values are never copied.
+      steps_.clear();
+      position_ = 0;
+      bytes_ = 0;
+      current_ = {settings, ws.inppn, ws.inptg, ws.changes.surface};
+      images_ = images;
+      return true;
+    }
+    take_values(step.inppn, current_.inppn, ws.inppn);
+    take_values(step.inptg, current_.inptg, ws.inptg);
   } else {
     step.inppn.shape_before = step.inppn.shape_after = current_.inppn.shape;
     step.inptg.shape_before = step.inptg.shape_after = current_.inptg.shape;

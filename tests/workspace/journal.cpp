@@ -121,6 +121,12 @@ TEST_CASE("a step keeps what its command changed; the journal is bounded in step
   CHECK(j.undo_count() == 0);
   CHECK(j.bytes() == 0);
   CHECK(j.undo(ws) == std::nullopt);
+  // ... from the state that step left: the next step is recorded from it, and undone to it.
+  const Array built = ws.inppn;
+  CHECK(command(j, ws, "CHANGE POINTS", [&] { change_point(ws, 5, 1.5); }));
+  CHECK(j.undo_count() == 1);
+  CHECK(j.undo(ws) == "CHANGE POINTS");
+  CHECK(ws.inppn == built);
 }
 
 TEST_CASE("the journal on the disk: images by slot, by recipe or by their points, read back") {
