@@ -1,6 +1,7 @@
 // An IGDS command declares its words, options, questions, help texts and handler once
-// (style.md). The interpreter, HELP, completion, the 2250 menu, the manual page and the
-// abbreviation table are all generated from these records, never written a second time.
+// (docs/architecture.md, "The command declarations"). The interpreter, HELP, completion, the
+// 2250 menu, the manual page and the abbreviation table are all generated from these records,
+// never written a second time.
 #pragma once
 
 #include <span>

@@ -1,4 +1,4 @@
-// The interface every output device implements (style.md, Devices): integer device
+// The interface every output device implements (docs/devices.md, step 4): integer device
 // coordinates, and a device that remembers its own state so that it emits nothing redundant.
 #pragma once
 

@@ -1,6 +1,6 @@
-// The generic layer between a drawing and a device (style.md, Devices): one scale that keeps the
-// aspect, curves flattened and marks made into strokes in device units, clipping in floating
-// point before rounding. Encoders (tek4013, hpgl, svg) only see integer device points.
+// The generic layer between a drawing and a device (docs/devices.md, steps 2 and 3): one scale
+// that keeps the aspect, curves flattened and marks made into strokes in device units, clipping
+// in floating point before rounding. Encoders (tek4013, hpgl, svg) only see integer device points.
 #pragma once
 
 #include <string>

@@ -1,6 +1,7 @@
 // The tree: each layer includes nothing of a layer above it (interp -> commands -> devices ->
 // workspace; workspace/kernels and workspace/numbers -> nothing of igds), the libraries of their
-// own include only what they are linked with, and every source file of a layer is built.
+// own include only what they are linked with, every source file of a layer is built, and every
+// document a comment cites is in the repository.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -103,6 +104,33 @@ TEST_CASE("every source file is listed in CMakeLists.txt, and every listed file 
     CAPTURE(file);
     CHECK(std::filesystem::exists(source_dir() / file));
   }
+}
+
+TEST_CASE("every document a comment cites is in the repository") {
+  // A name ending in .md in a comment: a path from the top of the tree (docs/kernels.md).
+  const std::regex cited(R"re(([\w./-]+\.md)\b)re");
+  std::vector<std::string> files = sources();
+  for (const auto& e : std::filesystem::recursive_directory_iterator(source_dir() / "tests")) {
+    const auto ext = e.path().extension();
+    if (ext == ".cpp" || ext == ".h") files.push_back(e.path().lexically_relative(source_dir()));
+  }
+  std::size_t citations = 0;
+  for (const auto& file : files) {
+    const std::string text = read_file(source_dir() / file);
+    for (std::size_t at = text.find("//"); at != std::string::npos; at = text.find("//", at)) {
+      const std::size_t end = std::min(text.find('\n', at), text.size());
+      const std::string comment = text.substr(at, end - at);
+      for (std::sregex_iterator it(comment.begin(), comment.end(), cited), stop; it != stop; ++it) {
+        const std::string document = (*it)[1];
+        CAPTURE(file);
+        CAPTURE(document);
+        CHECK(std::filesystem::is_regular_file(source_dir() / document));
+        ++citations;
+      }
+      at = end;
+    }
+  }
+  CHECK(citations > 100);  // the sources do cite docs/
 }
 
 }  // namespace igds::test

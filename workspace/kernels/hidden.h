@@ -43,9 +43,9 @@ struct Raster {
 
 // The visible pieces of every curve, then every stringer, in order along each line. The
 // surface is the grid's quadrilaterals, each two triangles; a point of a line is hidden when a
-// triangle covering its cell's centre is nearer than it by more than the tolerance (docs/
-// kernels.md). A segment with a point that is not finite is not drawn; a part outside the raster
-// is visible. Cost: linear in the points and in the raster's cells.
+// triangle covering its cell's centre is nearer than it by more than the tolerance
+// (docs/kernels.md). A segment with a point that is not finite is not drawn; a part outside the
+// raster is visible. Cost: linear in the points and in the raster's cells.
 std::vector<VisiblePiece> visible_pieces(const SeenGrid& grid, const Raster& raster);
 
 // The most cells a raster has across its larger side (the 4014's 4096 addresses are fewer).
