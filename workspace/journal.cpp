@@ -188,7 +188,10 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
       steps_.clear();
       position_ = 0;
       bytes_ = 0;
-      current_ = {settings, ws.inppn, ws.inptg, ws.changes.surface};
+      current_.settings = settings;
+      current_.inppn = ws.inppn;  // into the memory it has, when that holds it
+      current_.inptg = ws.inptg;
+      current_.generation = ws.changes.surface;
       images_ = images;
       return true;
     }
