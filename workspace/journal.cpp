@@ -71,11 +71,12 @@ ArrayChange change_of(const Array& from, const Array& to, const Edits& edits) {
   return c;
 }
 
-// The bytes change_of's `c` keeps once take_values gave it its values.
-std::size_t bytes_with_values(const ArrayChange& c, const Array& from, const Array& to) {
+// The bytes of the values take_values gives change_of's `c` (ArrayChange::bytes() counts them
+// once they are there).
+std::size_t value_bytes(const ArrayChange& c, const Array& from, const Array& to) {
   std::size_t values = c.whole ? from.size() + to.size() : 0;
   for (const auto& [first, end] : c.ranges) values += 2 * (end - first);
-  return values * sizeof(double) + c.ranges.size() * 2 * sizeof(std::uint64_t);
+  return values * sizeof(double);
 }
 
 // The values of change_of's `c`, from the two arrays it was found between.
@@ -180,8 +181,8 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
   if (surface) {
     step.inppn = change_of(current_.inppn, ws.inppn, ws.changes.inppn);
     step.inptg = change_of(current_.inptg, ws.inptg, ws.changes.inptg);
-    if (step.bytes() + bytes_with_values(step.inppn, current_.inppn, ws.inppn) +
-            bytes_with_values(step.inptg, current_.inptg, ws.inptg) >
+    if (step.bytes() + value_bytes(step.inppn, current_.inppn, ws.inppn) +
+            value_bytes(step.inptg, current_.inptg, ws.inptg) >
         max_bytes) {
       // A step that cannot be undone (bound() would drop it, and every step before it): the
       // journal starts again from `ws`, and the step's values are never copied.

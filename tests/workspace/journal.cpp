@@ -129,6 +129,40 @@ TEST_CASE("a step keeps what its command changed; the journal is bounded in step
   CHECK(ws.inppn == built);
 }
 
+TEST_CASE("a step of the journal's bound in bytes is kept, and one of a double more is not") {
+  // Replaced whole (another shape): the step keeps both arrays whole, before and after.
+  const std::string name = "BUILD";
+  const std::size_t room =
+      (Journal::max_bytes - name.size() - 2 * sizeof(Settings)) / sizeof(double);
+  for (const std::size_t extra : {0, 1}) {
+    Workspace ws = test::make_interpolated(10, 10, 0, 0);
+    saved(ws);
+    Journal j(ws);
+    CHECK(command(j, ws, "CHANGE POINTS", [&] { change_point(ws, 5, 1.5, false); }));
+    // INPTG of one row; INPPN of as many rows as fill the room (a row of 4 doubles less or more
+    // where 3 does not divide what is left).
+    const std::size_t before = ws.inppn.size() + ws.inptg.size(), left = room + extra - before;
+    const std::size_t rows_tg = 1 + (left - 4) % 3, rows_pn = (left - 4 * rows_tg) / 3;
+    REQUIRE(3 * rows_pn + 4 * rows_tg == left);
+    CHECK(command(j, ws, name, [&] {
+      ws.inppn = Array({rows_pn, 3});
+      ws.inptg = Array({rows_tg, 4});
+      ws.changes.replaced();
+    }));
+    CAPTURE(extra);
+    if (extra == 0) {
+      // Kept, and the step before it made room for it.
+      CHECK(j.undo_count() == 1);
+      CHECK(j.bytes() <= Journal::max_bytes);
+      CHECK(j.bytes() > Journal::max_bytes - sizeof(double));
+      CHECK(j.undo(ws) == name);
+    } else {
+      CHECK(j.undo_count() == 0);
+      CHECK(j.bytes() == 0);
+    }
+  }
+}
+
 TEST_CASE("the journal on the disk: images by slot, by recipe or by their points, read back") {
   Workspace ws = test::make_interpolated(20, 20, 4, 4);
   saved(ws);
