@@ -298,11 +298,12 @@ Code compile(const Statement& statement, const Resolver& resolve) {
         e.function->glyph == U'/' && !e.function->axis) {
       const auto [l, r] = c.arguments(*e.left, *e.right);
       // →(I<N)/L: the comparison's result goes to the frame's scratch place, not the stack.
-      Instr& before = code.instrs.back();
-      const bool test = l.from == Operand::stack && r.from != Operand::stack &&
-                        before.op == Op::dyadic && before.result.from == Operand::stack &&
-                        !(before.flags & has_axis);
-      if (test) before.result.from = Operand::scratch;
+      // (→N/L, both operands where they are, has no instruction before it.)
+      Instr* before = code.instrs.empty() ? nullptr : &code.instrs.back();
+      const bool test = before && l.from == Operand::stack && r.from != Operand::stack &&
+                        before->op == Op::dyadic && before->result.from == Operand::stack &&
+                        !(before->flags & has_axis);
+      if (test) before->result.from = Operand::scratch;
       c.emit(Op::branch_compress, e.column);
       code.instrs.back().left = l;
       code.instrs.back().right = r;

@@ -307,6 +307,14 @@ TEST_CASE("the loops' shortcuts give APL's results whatever the arguments") {
   a("→");
   a.run({"∇Z←CH;I", "I←'A'", "→(I='A')/3", "Z←1", "Z←2∇"});
   CHECK(a("CH") == Lines{"2"});
+  // →N/L with both where they are (a name, a label, a number): nothing computed before the
+  // branch.
+  a.run({"∇Z←SKIP N", "Z←1", "→N/L", "Z←2", "L:Z←Z+10∇"});
+  CHECK(a("SKIP 1") == Lines{"11"});
+  CHECK(a("SKIP 0") == Lines{"12"});
+  a.run({"∇Z←OUT N", "Z←1", "→(N)/0", "Z←2∇"});
+  CHECK(a("OUT 100") == Lines{"1"});
+  CHECK(a("OUT 0") == Lines{"2"});
 }
 
 }  // namespace igds::apl::test
