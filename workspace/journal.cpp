@@ -178,26 +178,19 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
   step.name = std::string(name);
   step.before = current_.settings;
   step.after = settings;
+  // A step larger than the bound alone cannot be undone (bound() would drop it, and every step
+  // before it): its values are never copied, and the journal starts again from `ws`.
+  bool kept = true;
   if (surface) {
     step.inppn = change_of(current_.inppn, ws.inppn, ws.changes.inppn);
     step.inptg = change_of(current_.inptg, ws.inptg, ws.changes.inptg);
-    if (step.bytes() + value_bytes(step.inppn, current_.inppn, ws.inppn) +
-            value_bytes(step.inptg, current_.inptg, ws.inptg) >
-        max_bytes) {
-      // A step that cannot be undone (bound() would drop it, and every step before it): the
-      // journal starts again from `ws`, and the step's values are never copied.
-      steps_.clear();
-      position_ = 0;
-      bytes_ = 0;
-      current_.settings = settings;
-      current_.inppn = ws.inppn;  // into the memory it has, when that holds it
-      current_.inptg = ws.inptg;
-      current_.generation = ws.changes.surface;
-      images_ = images;
-      return true;
+    kept = step.bytes() + value_bytes(step.inppn, current_.inppn, ws.inppn) +
+               value_bytes(step.inptg, current_.inptg, ws.inptg) <=
+           max_bytes;
+    if (kept) {
+      take_values(step.inppn, current_.inppn, ws.inppn);
+      take_values(step.inptg, current_.inptg, ws.inptg);
     }
-    take_values(step.inppn, current_.inppn, ws.inppn);
-    take_values(step.inptg, current_.inptg, ws.inptg);
   } else {
     step.inppn.shape_before = step.inppn.shape_after = current_.inppn.shape;
     step.inptg.shape_before = step.inptg.shape_after = current_.inptg.shape;
@@ -207,17 +200,30 @@ bool Journal::record(const Workspace& ws, std::string_view name) {
   step.generation_before = current_.generation;
   step.generation_after = ws.changes.surface;
 
-  // The current state follows `ws`, copying only what changed.
-  for (auto [c, mine] : {std::pair{&step.inppn, &current_.inppn}, {&step.inptg, &current_.inptg}}) {
-    if (!c->forward(*mine)) {
-      // Never expected (the Edits cover every change): the journal starts again from `ws`.
-      *this = Journal(ws);
-      return false;
+  // The current state follows `ws`, copying only what changed (all of it, into the memory it
+  // has, after a step not kept).
+  if (!kept) {
+    current_.inppn = ws.inppn;
+    current_.inptg = ws.inptg;
+  } else {
+    for (auto [c, mine] :
+         {std::pair{&step.inppn, &current_.inppn}, {&step.inptg, &current_.inptg}}) {
+      if (!c->forward(*mine)) {
+        // Never expected (the Edits cover every change): the journal starts again from `ws`.
+        *this = Journal(ws);
+        return false;
+      }
     }
   }
   current_.settings = settings;
   current_.generation = ws.changes.surface;
   images_ = images;
+  if (!kept) {
+    steps_.clear();
+    position_ = 0;
+    bytes_ = 0;
+    return true;
+  }
   // A surface made again equal to itself (RESTORE of the same file) is no step.
   if (step.inppn.unchanged() && step.inptg.unchanged() && step.before == step.after &&
       step.images_before == step.images_after)

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <regex>
 #include <set>
@@ -27,9 +28,11 @@ int rank(const std::string& path) {
   return -1;
 }
 
-std::vector<std::string> sources() {
+// The sources of the layers, or of `folders`.
+std::vector<std::string> sources(std::initializer_list<const char*> folders = {
+                                     "workspace", "devices", "commands", "interp"}) {
   std::vector<std::string> out;
-  for (const char* folder : {"workspace", "devices", "commands", "interp"})
+  for (const char* folder : folders)
     for (const auto& e : std::filesystem::recursive_directory_iterator(source_dir() / folder)) {
       const auto ext = e.path().extension();
       if (ext == ".cpp" || ext == ".h") out.push_back(e.path().lexically_relative(source_dir()));
@@ -109,13 +112,8 @@ TEST_CASE("every source file is listed in CMakeLists.txt, and every listed file 
 TEST_CASE("every document a comment cites is in the repository") {
   // A name ending in .md in a comment: a path from the top of the tree (docs/kernels.md).
   const std::regex cited(R"re(([\w./-]+\.md)\b)re");
-  std::vector<std::string> files = sources();
-  for (const auto& e : std::filesystem::recursive_directory_iterator(source_dir() / "tests")) {
-    const auto ext = e.path().extension();
-    if (ext == ".cpp" || ext == ".h") files.push_back(e.path().lexically_relative(source_dir()));
-  }
   std::size_t citations = 0;
-  for (const auto& file : files) {
+  for (const auto& file : sources({"workspace", "devices", "commands", "interp", "tests"})) {
     const std::string text = read_file(source_dir() / file);
     for (std::size_t at = text.find("//"); at != std::string::npos; at = text.find("//", at)) {
       const std::size_t end = std::min(text.find('\n', at), text.size());
