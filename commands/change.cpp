@@ -203,6 +203,7 @@ void run_change(Context& ctx, const Choice* option) {
   const Changes changes = ws.changes;
   SurfaceInput input{ws.nocur, ws.nostr, density.intcu,     density.intst,
                      &inppn,   &inptg,   modes.marks_twists};
+  // PATCHES of the workspace's own (FIT's, END APL's) are kept, and INTPN made from them.
   const bool refitted = what == grid && !ws.patches.empty();
   Surface surface = interpolate_surface(ws, input, refitted);
   make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),

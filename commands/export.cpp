@@ -172,7 +172,11 @@ Report not_finite_in_picture(const Drawing& drawing, const DataError& e) {
 bool duct_file(const Workspace& ws, const std::string& name, bool image, TextOut& out) {
   const std::string date = duct_date(export_date());
   if (!image) {
-    const Drawing3 drawing = surface_curves(input_of(ws), ws.patches, ws.intpn);
+    // PATCHES made for the curves are let go before the file is written.
+    const Drawing3 drawing = [&] {
+      Array made;
+      return surface_curves(input_of(ws), patches_of(ws, made), ws.intpn);
+    }();
     const std::string title =
         fmt::format("SURFACE {} X {}, INTCU {}, INTST {}", ws.nocur, ws.nostr, ws.intcu, ws.intst);
     try {
@@ -194,8 +198,8 @@ bool duct_file(const Workspace& ws, const std::string& name, bool image, TextOut
 
 // The patch (row by row from 1) whose Bézier controls are not finite (finite patches near the
 // largest numbers), the first that holds the control; 0 when there is none.
-std::size_t overflowing_patch(const Workspace& ws) {
-  const BezierNet net = surface_net(input_of(ws), ws.patches);
+std::size_t overflowing_patch(const Workspace& ws, const Array& patches) {
+  const BezierNet net = surface_net(input_of(ws), patches);
   const std::size_t k = first_not_finite(net.xyz.data(), net.xyz.size());
   if (k == net.xyz.size()) return 0;
   const std::size_t row = k / 3 / net.cols, column = k / 3 % net.cols;
@@ -212,15 +216,17 @@ void cad_file(const Workspace& ws, const std::string& name, Option option, CadCh
   if (!ws.has_surface()) throw Report(reports::surface_not_found);
   const CadHeader header{
       name, fmt::format("{}.{}", name, types[option]), export_date(), "", "", choice.unit};
+  Array made;
+  const Array& patches = patches_of(ws, made);
   try {
     if (option == iges)
-      write_iges(input_of(ws), ws.patches, header, out, choice.form);
+      write_iges(input_of(ws), patches, header, out, choice.form);
     else
-      write_step(input_of(ws), ws.patches, header, out, choice.form);
+      write_step(input_of(ws), patches, header, out, choice.form);
   } catch (const DataError& e) {
     // The writers say a patch's Bézier controls are not finite without saying which.
     if (e.problem != DataError::Problem::patch_not_finite) throw;
-    if (const std::size_t patch = overflowing_patch(ws))
+    if (const std::size_t patch = overflowing_patch(ws, patches))
       throw Report(reports::incorrect_entry,
                    fmt::format("PATCH {} HAS BEZIER CONTROLS THAT ARE NOT FINITE NUMBERS; NO FILE "
                                "WRITTEN",

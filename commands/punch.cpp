@@ -24,17 +24,18 @@ const Prompt file_prompt{"FILE NAME?",
 void run_punch(Context& ctx, const Choice*) {
   const Workspace& ws = ctx.workspace();
   if (!ws.has_input()) throw Report(reports::input_not_found);
-  if (ws.patches.rank() != 5 || ws.patches.empty())
+  if (ws.nocur < 2 || ws.nostr < 2)
     throw Report("A SINGLE CURVE OR STRINGER HAS NO PATCHES TO PUNCH");
   // The tape numbers its patches in 18 bits, the number as any other.
-  const std::size_t count = ws.patches.shape[0] * ws.patches.shape[1];
+  const std::size_t count = std::size_t(ws.nocur - 1) * std::size_t(ws.nostr - 1);
   if (count > std::size_t(exchange::tape_max))
     throw Report(fmt::format("{} PATCHES: THE TAPE NUMBERS AT MOST {}; NO FILE WRITTEN", count,
                              exchange::tape_max));
   const std::string name = ask_file_name(ctx, file_prompt);
   std::string tape;
   try {
-    tape = exchange::write_tape(ws.patches);
+    Array made;
+    tape = exchange::write_tape(patches_of(ws, made));
   } catch (const TapeError& e) {
     if (e.problem == TapeError::Problem::out_of_range)
       throw Report(fmt::format(
@@ -43,10 +44,9 @@ void run_punch(Context& ctx, const Choice*) {
     throw Report("PATCHES IS NOT NOCUR-1 BY NOSTR-1 BY 3 BY 4 BY 4; NO FILE WRITTEN");
   }
   write_user_file(ctx.disk(), name, "MPDPTAPE", tape);
-  const std::size_t patches = ws.patches.shape[0] * ws.patches.shape[1];
-  ctx.say(fmt::format("{}.MPDPTAPE: {} {}, {} FRAMES", name, patches,
-                      patches == 1 ? "PATCH" : "PATCHES", tape.size()));
-  if (patches > mpdp_patches)
+  ctx.say(fmt::format("{}.MPDPTAPE: {} {}, {} FRAMES", name, count,
+                      count == 1 ? "PATCH" : "PATCHES", tape.size()));
+  if (count > mpdp_patches)
     ctx.say(fmt::format("MPDP HOLDS ABOUT {} PATCHES AT A TIME", mpdp_patches));
 }
 

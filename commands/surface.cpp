@@ -23,7 +23,7 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
   std::optional<DataError> overflow;
   try {
     overflow = refit_only ? refit_into(input, surface.patches, surface.intpn)
-                          : interpolate_into(input, surface);
+                          : interpolate_into(input, surface, PatchesOut::dropped);
   } catch (const DataError& e) {
     give_back();
     throw worded(e, "THE SURFACE IS NOT CHANGED");
@@ -39,7 +39,7 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
       if (refit_only)
         (void)refit_into(before, surface.patches, surface.intpn);
       else
-        (void)interpolate_into(before, surface);
+        (void)interpolate_into(before, surface, PatchesOut::dropped);
     }
     give_back();
     throw worded(*overflow, "THE SURFACE IS NOT CHANGED");

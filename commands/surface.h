@@ -14,10 +14,11 @@ struct SurfaceModes {
   bool auto_tangents = false;  // the border tangents were set by AUTO
 };
 
-// COONS then FIT (FIT alone when `refit_only`: the patches do not depend on the grid) into the
-// memory of the workspace's PATCHES and INTPN, taken out of it when they are its interpolation
-// (made again if need be): a new surface of about the same size writes no fresh pages, which on
-// a large grid cost more than the interpolation. The kernels check everything first, and the
+// COONS then FIT, the patches not kept (Workspace::patches), or FIT alone from the workspace's own
+// PATCHES when `refit_only` (the patches do not depend on the grid), into the memory of the
+// workspace's INTPN, taken out of it when it is its interpolation (made again if need be): a new
+// surface of about the same size writes no fresh pages, which on a large grid cost more than the
+// interpolation. The kernels check everything first, and the
 // result is checked to be finite; when either refuses, the workspace's arrays are as they were
 // and the report is followed by `; THE SURFACE IS NOT CHANGED`.
 Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only = false);

@@ -143,8 +143,12 @@ std::optional<Array> workspace_variable(const Workspace& ws, std::string_view ty
       return ws.inppn;
     case Variable::inptg:
       return ws.inptg;
-    case Variable::patches:
-      return ws.patches;
+    case Variable::patches: {
+      Array made;
+      const Array& patches = patches_of(ws, made);
+      if (&patches == &made) return made;
+      return patches;
+    }
     case Variable::intpn:
       return ws.intpn;
     case Variable::status:
@@ -160,8 +164,11 @@ std::optional<Array> workspace_variable(const Workspace& ws, std::string_view ty
 
 std::vector<std::string> defined_variables(const Workspace& ws) {
   std::vector<std::string> names;
-  for (const auto& v : variables())
-    if (workspace_variable(ws, v.name)) names.emplace_back(v.name);
+  // Every variable has a value but an image slot that is empty (workspace_variable).
+  for (const auto& v : variables()) {
+    const ImageRef* image = image_slot(const_cast<Workspace&>(ws), v.id);
+    if (!image || *image) names.emplace_back(v.name);
+  }
   std::sort(names.begin(), names.end());
   return names;
 }
@@ -328,6 +335,12 @@ void AplEnvironment::check(std::string_view name, const Value& value) {
 void AplEnvironment::set(std::string_view name, const Value& value) {
   const VariableInfo& info = *find_variable(name);
   Array a = apl::to_array(value);
+  // PATCHES are those of the surface before END APL until START makes them again: the
+  // interpolation's are made (state.h) before the first change of a variable of the surface.
+  if (info.id != Variable::patches &&
+      (info.kept == Kept::surface_number || info.kept == Kept::input ||
+       info.kept == Kept::derived || info.kept == Kept::status))
+    keep_patches(ws_);
   switch (info.id) {
     case Variable::nocur:
       ws_.nocur = static_cast<int>(a.ravel[0]);
@@ -504,6 +517,7 @@ std::optional<std::string> AplEnvironment::start() {
     // igds's interpolation when PATCHES was made here, or was and is kept (a FIT's stays its own).
     ws_.changes.replaced(!own_patches && !own_intpn && (remake_patches || ws_.changes.derived));
   }
+  drop_derived_patches(ws_);
   for (Variable v : {Variable::image, Variable::temp1, Variable::temp2}) {
     const ImageRef& slot = *image_slot(ws_, v);
     if (slot)

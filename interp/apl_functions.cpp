@@ -316,9 +316,11 @@ void AplEnvironment::define_line_functions() {
   session_.define_native(
       "FIT", 0,
       [this, surface_input](Args, Args) -> std::optional<Value> {
-        if (ws_.patches.empty()) throw AplError(ErrorKind::value);
+        Array made;
+        const Array& patches = patches_of(ws_, made);
+        if (patches.empty()) throw AplError(ErrorKind::value);
         try {
-          return apl::to_value(refit(surface_input(), ws_.patches));
+          return apl::to_value(refit(surface_input(), patches));
         } catch (const DataError& e) {
           refuse(e);
         }
@@ -328,7 +330,7 @@ void AplEnvironment::define_line_functions() {
       "COONS", 0,
       [this, surface_input](Args, Args) -> std::optional<Value> {
         try {
-          session_.assign("PATCHES", apl::to_value(interpolate(surface_input()).patches));
+          session_.assign("PATCHES", apl::to_value(surface_patches(surface_input())));
         } catch (const DataError& e) {
           refuse(e);
         }

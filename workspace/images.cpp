@@ -152,7 +152,8 @@ double comb_scale_for(double extent, double most) {
 Image comb_image(const Workspace& ws, const View& view) {
   Image image = surface_image(ws, view);
   image.desim.what = 3;
-  Array bends = grid_curvature(surface_input(ws), ws.patches);
+  Array made;
+  Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
   require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
   const auto points = as_vec3(ws.intpn);
   Vec3 low = points[0], high = low;
@@ -233,7 +234,8 @@ namespace {
 Image made_from(Workspace from, const Description& desim) {
   if (desim.what != 0) {
     Surface s;
-    if (auto overflow = interpolate_into(surface_input(from), s)) throw *overflow;
+    if (auto overflow = interpolate_into(surface_input(from), s, PatchesOut::dropped))
+      throw *overflow;
     from.patches = std::move(s.patches);
     from.intpn = std::move(s.intpn);
   }

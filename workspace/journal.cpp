@@ -288,10 +288,11 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
                             ws.has_surface() && !new_inppn && !new_inptg && to.nocur == ws.nocur &&
                             to.nostr == ws.nostr && to.intcu == ws.intcu && to.intst == ws.intst &&
                             marks == ws.marks_twists();
-  // Else PATCHES and INTPN are made again (the kernels are deterministic: bit for bit the same),
-  // with the state's twists, into the memory of the current ones when those are the interpolation
-  // of the current inputs (a 4 M-point surface then writes no fresh pages); on DataError, or a
-  // result that is not finite (a state read from a forged file), they are as they were.
+  // Else INTPN is made again (the kernels are deterministic: bit for bit the same), with the
+  // state's twists and PATCHES not kept (state.h), into the memory of the current one when it is
+  // the interpolation of the current inputs (a 4 M-point surface then writes no fresh pages); on
+  // DataError, or a result that is not finite (a state read from a forged file), PATCHES and
+  // INTPN are as they were.
   const bool lend = ws.changes.derived && ws.has_surface();
   Surface surface;
   if (same_surface) {
@@ -300,12 +301,13 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
     if (lend) surface = {std::move(ws.patches), std::move(ws.intpn)};
     try {
       if (auto overflow = interpolate_into(
-              {to.nocur, to.nostr, to.intcu, to.intst, &to_inppn, &to_inptg, marks}, surface)) {
+              {to.nocur, to.nostr, to.intcu, to.intst, &to_inppn, &to_inptg, marks}, surface,
+              PatchesOut::dropped)) {
         // The surface kept: finite when it was made.
         if (lend)
           (void)interpolate_into(
               {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()},
-              surface);
+              surface, PatchesOut::dropped);
         throw *overflow;
       }
     } catch (...) {

@@ -196,7 +196,7 @@ struct Changes {
   std::uint64_t surface = new_generation();
   // PATCHES and INTPN are the interpolation of the inputs by igds's kernels (false once the APL
   // environment assigned one of them): the session does not save them then, it computes them
-  // again at start.
+  // again at start. Such a surface keeps no PATCHES either (patches_of below).
   bool derived = true;
   Edits inppn, inptg;
 
@@ -214,11 +214,6 @@ struct Changes {
     derived = true;
     inppn.add(points);
     inptg.add(tangents);
-  }
-  // PATCHES or INTPN given other values than the interpolation's (the APL environment).
-  void assigned() {
-    surface = new_generation();
-    derived = false;
   }
 };
 
@@ -242,7 +237,10 @@ struct Workspace {
   // curve 2 place 1, ...), then the tangents along the stringers at the ends of each stringer
   // (stringer 1 curve 1, stringer 1 curve NOCUR, stringer 2 curve 1, ...). Corners appear twice.
   Array inptg;
-  Array patches;   // PATCHES: (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4
+  // PATCHES: (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4, kept only when they are not the interpolation's
+  // (Changes::derived false: FIT's, END APL's); else without a shape, or the empty array of a
+  // single curve or stringer, and read through patches_of.
+  Array patches;
   Array intpn;     // INTPN: (NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3
   ImageRef image;  // IMAGE / DESIM: the current image
   ImageRef temp1;  // TEMP1 / DEST1: STORE FIRST
@@ -282,6 +280,30 @@ struct Workspace {
 // What the kernels interpolate for the surface of `ws`: its inputs, density and twists.
 inline SurfaceInput surface_input(const Workspace& ws) {
   return {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()};
+}
+
+// PATCHES of the surface of `ws`: those it keeps, or, for a surface that is the interpolation of
+// its inputs (which keeps none: only a few commands read them, docs/kernels.md), made into
+// `made` from the inputs, bit for bit those the interpolation evaluated.
+inline const Array& patches_of(const Workspace& ws, Array& made) {
+  if (!ws.changes.derived || ws.patches.size() > 0 || ws.nocur < 2 || ws.nostr < 2 ||
+      !ws.has_surface())
+    return ws.patches;
+  made = surface_patches(surface_input(ws));
+  return made;
+}
+
+// PATCHES kept in the workspace from now on, made first if need be (END APL: the patches of the
+// inputs before an input changes).
+inline void keep_patches(Workspace& ws) {
+  Array made;
+  if (&patches_of(ws, made) == &made) ws.patches = std::move(made);
+}
+
+// A surface that is the interpolation of its inputs keeps no PATCHES (those of a single curve or
+// stringer hold no number and stay): after a kernel kept them, to compare them with a file's.
+inline void drop_derived_patches(Workspace& ws) {
+  if (ws.changes.derived && ws.patches.size() > 0) ws.patches = Array();
 }
 
 }  // namespace igds

@@ -223,7 +223,11 @@ std::optional<VariableProblem> surface_problem(const Workspace& ws, bool allow_e
   const bool none =
       ws.patches.empty() && ws.intpn.empty() && ws.patches.shape.empty() && ws.intpn.shape.empty();
   if (none && allow_empty_surface) return std::nullopt;
-  if (auto p = wrong_shape(Variable::patches, ws.patches, expected_shape(ws, Variable::patches)))
+  // The interpolation's surface keeps no PATCHES (state.h).
+  const bool made_when_read =
+      ws.changes.derived && ws.patches.shape.empty() && ws.nocur > 1 && ws.nostr > 1;
+  if (auto p = wrong_shape(Variable::patches, ws.patches, expected_shape(ws, Variable::patches));
+      p && !made_when_read)
     return p;
   return wrong_shape(Variable::intpn, ws.intpn, expected_shape(ws, Variable::intpn));
 }

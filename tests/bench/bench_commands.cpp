@@ -263,7 +263,8 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
   const int side = n + density * (n - 1);
   const double points = double(side) * side;
   fmt::print("{}_points {:.0f}\n", prefix, points);
-  // The live variables: INPPN, INPTG, PATCHES, INTPN and three images of the surface.
+  // The variables: INPPN, INPTG, PATCHES (made when a command reads them), INTPN and three images
+  // of the surface.
   const double variables =
       8.0 * (3.0 * n * n + 16.0 * n + 48.0 * (n - 1) * (n - 1) + 3 * points + 3 * 2 * points);
   fmt::print("{}_variables_mb {:.1f}\n", prefix, variables / 1e6);

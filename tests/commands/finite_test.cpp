@@ -42,11 +42,11 @@ const std::vector<std::string> saddle{"3 3",
 Workspace huge_second_patch() {
   Workspace ws = make_interpolated(2, 3, 1, 1);
   ws.image = ws.temp1 = ws.temp2 = nullptr;
+  own_surface(ws);
   for (std::size_t k = 0; k < 48; ++k) ws.patches.ravel[48 + k] = 1.5e308;
   for (std::size_t row = 0; row < 3; ++row)
     for (std::size_t column = 3; column < 5; ++column)
       for (std::size_t c = 0; c < 3; ++c) ws.intpn.ravel[3 * (5 * row + column) + c] = 1.7e308;
-  ws.changes.derived = false;
   return ws;
 }
 
@@ -86,8 +86,8 @@ TEST_CASE("a surface whose patches are FIT's keeps them when a CHANGE overflows"
   FakeContext ctx(dir.path());
   ctx.type(saddle);
   ctx.run(build_command, "");
+  own_surface(ctx.ws);
   for (double& v : ctx.ws.patches.ravel) v *= 1.0000001;
-  ctx.ws.changes.assigned();
   const Workspace before = ctx.ws;
   ctx.type({"1 1E308 0 0 1", "", "N"});
   CHECK(report_of(ctx, change_command, "T").ends_with("THE SURFACE IS NOT CHANGED"));

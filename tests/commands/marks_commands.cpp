@@ -13,6 +13,7 @@
 #include "commands/picture.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
+#include "tests/workspace/disk_fixtures.h"
 #include "workspace/disk/disk.h"
 #include "workspace/disk/session.h"
 #include "workspace/error.h"
@@ -129,13 +130,14 @@ TEST_CASE("AUTO at TANGENTS? sets every border tangent by Marks's rule, per unit
   CHECK(ws.inptg == marks_border_tangents(nocur, nostr, as_vec3(ws.inppn)));
   // PATCHES holds Marks's vectors themselves at the border: Pu at the first corner of patch 1.
   const GridTangents marks = marks_grid_tangents(nocur, nostr, as_vec3(ws.inppn));
+  const Array patches = given_patches(ws);
   for (int k = 0; k < 3; ++k) {
     const double along_curve[3] = {marks.along_curves[0].x, marks.along_curves[0].y,
                                    marks.along_curves[0].z};
     const double along_stringer[3] = {marks.along_stringers[0].x, marks.along_stringers[0].y,
                                       marks.along_stringers[0].z};
-    CHECK(element(ws.patches, 0, k, 2, 0) == doctest::Approx(along_curve[k]).epsilon(1e-12));
-    CHECK(element(ws.patches, 0, k, 0, 2) == doctest::Approx(along_stringer[k]).epsilon(1e-12));
+    CHECK(element(patches, 0, k, 2, 0) == doctest::Approx(along_curve[k]).epsilon(1e-12));
+    CHECK(element(patches, 0, k, 0, 2) == doctest::Approx(along_stringer[k]).epsilon(1e-12));
   }
   // Lowercase and a prefix are the same word; HELP and DISPLAY INPUT say so.
   FakeContext again(dir.path());
@@ -203,7 +205,7 @@ TEST_CASE("CHANGE TWISTS: ZERO or MARKS into PATCHES and the grid") {
   TempDir dir;
   FakeContext ctx(dir.path());
   build_wavy(ctx, {"AUTO"});
-  const Array zero_patches = ctx.ws.patches, zero_grid = ctx.ws.intpn;
+  const Array zero_patches = given_patches(ctx.ws), zero_grid = ctx.ws.intpn;
   for (std::size_t p = 0; p < 12; ++p)
     for (int k = 0; k < 3; ++k) CHECK(element(zero_patches, p, k, 2, 2) == 0);
 
@@ -215,19 +217,20 @@ TEST_CASE("CHANGE TWISTS: ZERO or MARKS into PATCHES and the grid") {
   SurfaceInput input = surface_input(ws);
   CHECK(input.marks_twists);
   const Surface expected = interpolate(input);
-  CHECK(ws.patches == expected.patches);
+  const Array patches = given_patches(ws);
+  CHECK(patches == expected.patches);
   CHECK(ws.intpn == expected.intpn);
   CHECK(ws.intpn != zero_grid);
   // The twist of point 7 (curve 2, place 2) is Marks's, unscaled, at M[2][2] of patch (1, 1).
   const Array twists = marks_twists(nocur, nostr, as_vec3(ws.inppn));
   const Vec3 t7 = as_vec3(twists)[6];
   CHECK(t7 != Vec3{});
-  CHECK(element(ws.patches, 5, 0, 2, 2) == t7.x);
-  CHECK(element(ws.patches, 5, 2, 2, 2) == t7.z);
+  CHECK(element(patches, 5, 0, 2, 2) == t7.x);
+  CHECK(element(patches, 5, 2, 2, 2) == t7.z);
   // Everything but the twist block is as before.
-  for (std::size_t i = 0; i < ws.patches.size(); ++i) {
+  for (std::size_t i = 0; i < patches.size(); ++i) {
     const std::size_t r = (i / 4) % 4, c = i % 4;
-    if (r < 2 || c < 2) CHECK(ws.patches.ravel[i] == zero_patches.ravel[i]);
+    if (r < 2 || c < 2) CHECK(patches.ravel[i] == zero_patches.ravel[i]);
   }
   // Asked when not on the line; a wrong answer is asked again; back to ZERO.
   ctx.type({"SOME", "Z"});
@@ -235,7 +238,7 @@ TEST_CASE("CHANGE TWISTS: ZERO or MARKS into PATCHES and the grid") {
   CHECK(ctx.prompts.back() == "TWISTS? (ZERO OR MARKS)");
   CHECK(ctx.said.back() == "INCORRECT ENTRY: ANSWER ZERO OR MARKS");
   CHECK(!ctx.ws.marks_twists());
-  CHECK(ctx.ws.patches == zero_patches);
+  CHECK(given_patches(ctx.ws) == zero_patches);
   // A wrong word on the command line ends the command.
   CHECK(report_of(ctx, change_command, "TW", {"ONE"}) == "INCORRECT ENTRY: ANSWER ZERO OR MARKS");
   // A new surface has the manual's zero twists again.
@@ -321,7 +324,7 @@ TEST_CASE("PUNCH writes the tape; read back it is PATCHES number by number, MPDP
   CHECK(tape.size() == 12 * 162 + 3);
   const auto patches = exchange::read_tape(tape);
   REQUIRE(patches.size() == 12);
-  const Array& m = ctx.ws.patches;
+  const Array m = given_patches(ctx.ws);
   bool some_negative = false, some_twist = false;
   for (std::size_t p = 0; p < 12; ++p) {
     CAPTURE(p);
@@ -390,7 +393,7 @@ TEST_CASE("the twists and AUTO mark are kept by SAVE and RESTORE and by the sess
     CHECK(ws.auto_tangents());
     CHECK(ws.changes.derived);
     CHECK(ws == saved);
-    CHECK(ws.patches == interpolate(surface_input(saved)).patches);
+    CHECK(given_patches(ws) == interpolate(surface_input(saved)).patches);
     CHECK(*ws.temp1 == *saved.temp1);
     CHECK(*ws.image == *saved.image);
     // RESTORE into a workspace without the modes gives them back with the patches.
@@ -398,7 +401,7 @@ TEST_CASE("the twists and AUTO mark are kept by SAVE and RESTORE and by the sess
     restore_surface(disk, "MODES", other);
     CHECK(other.marks_twists());
     CHECK(other.auto_tangents());
-    CHECK(other.patches == saved.patches);
+    CHECK(same_patches(other, saved));
     CHECK(other.changes.derived);
     CHECK(other.status[0] == 1);  // the HELP setting is not the surface's
   }

@@ -140,6 +140,24 @@ TEST_CASE("an assignment of the wrong kind is refused at once; what came before 
   CHECK(!apl.env.start());
 }
 
+TEST_CASE("PATCHES in END APL are the surface's before an input changed, until START") {
+  Apl apl(surface(3, 3, 1, 1));
+  REQUIRE(apl.ws.patches.empty());  // the interpolation's: made when read
+  const Array before = interpolate(surface_input(apl.ws)).patches;
+  CHECK(apl("INPPN[5;3]←7").empty());
+  CHECK(apl.ws.patches == before);
+  // The corner of patch (2, 2) is point 5 as it was.
+  CHECK(apl("PATCHES[2;2;3;1;1]=7") == Lines{"0"});
+  REQUIRE(!apl.env.start());
+  CHECK(apl("PATCHES[2;2;3;1;1]") == Lines{"7"});
+  // Made again from the new inputs, and not kept.
+  CHECK(apl.ws.changes.derived);
+  CHECK(apl.ws.patches.empty());
+  CHECK(given_patches(apl.ws) == interpolate(surface_input(apl.ws)).patches);
+  CHECK(given_patches(apl.ws) != before);
+  CHECK(apl("INTPN[3;3;3]") == Lines{"7"});
+}
+
 TEST_CASE("START makes PATCHES and INTPN again from changed inputs") {
   Apl apl(surface(3, 2, 1, 1));
   CHECK(apl("INPPN[5;3]←2.5").empty());
@@ -147,7 +165,7 @@ TEST_CASE("START makes PATCHES and INTPN again from changed inputs") {
   CHECK(apl("INTCU←2").empty());
   REQUIRE(!apl.env.start());
   const Surface expected = interpolate({3, 2, 2, 1, &apl.ws.inppn, &apl.ws.inptg});
-  CHECK(apl.ws.patches == expected.patches);
+  CHECK(given_patches(apl.ws) == expected.patches);
   CHECK(apl.ws.intpn == expected.intpn);
   CHECK(apl.ws.changes.derived);
   CHECK(apl("⍴INTPN") == Lines{"7 3 3"});
@@ -163,16 +181,16 @@ TEST_CASE("STATUS[3] and STATUS[4] assigned change the surface: other twists mak
   CHECK(apl("STATUS[3]←1").empty());
   REQUIRE(!apl.env.start());
   const Surface marks = interpolate(surface_input(apl.ws));
-  CHECK(apl.ws.patches == marks.patches);
+  CHECK(given_patches(apl.ws) == marks.patches);
   CHECK(apl.ws.intpn == marks.intpn);
-  CHECK(apl.ws.patches != zero.patches);
+  CHECK(given_patches(apl.ws) != given_patches(zero));
   CHECK(apl.ws.changes.derived);
   CHECK(apl.ws.changes.surface != zero.changes.surface);
   // The AUTO mark: the same PATCHES, another surface.
   std::uint64_t generation = apl.ws.changes.surface;
   CHECK(apl("STATUS[4]←1").empty());
   REQUIRE(!apl.env.start());
-  CHECK(apl.ws.patches == marks.patches);
+  CHECK(given_patches(apl.ws) == marks.patches);
   CHECK(apl.ws.changes.surface != generation);
   // Given back before START: nothing changed.
   generation = apl.ws.changes.surface;
@@ -191,7 +209,7 @@ TEST_CASE("STATUS[3] and STATUS[4] assigned change the surface: other twists mak
   CHECK(!apl.ws.changes.derived);
   CHECK(apl("STATUS[3]←0").empty());
   REQUIRE(!apl.env.start());
-  CHECK(apl.ws.patches == interpolate(surface_input(apl.ws)).patches);
+  CHECK(given_patches(apl.ws) == interpolate(surface_input(apl.ws)).patches);
   CHECK(apl.ws.changes.derived);
 }
 
@@ -231,7 +249,7 @@ TEST_CASE("START refuses a workspace that does not agree with itself, with the r
   CHECK(apl("PATCHES←⍳0").empty());
   REQUIRE(!apl.env.start());
   const Surface expected = interpolate({3, 2, 1, 1, &apl.ws.inppn, &apl.ws.inptg});
-  CHECK(apl.ws.patches == expected.patches);
+  CHECK(given_patches(apl.ws) == expected.patches);
   CHECK(apl.ws.intpn == expected.intpn);
   CHECK(apl.ws.changes.derived);
 }
@@ -324,7 +342,7 @@ TEST_CASE("START after COONS: INTPN made again from the new PATCHES, never left 
   CHECK(apl("COONS").empty());
   REQUIRE(!apl.env.start());
   const Surface expected = interpolate({3, 3, 1, 1, &apl.ws.inppn, &apl.ws.inptg});
-  CHECK(apl.ws.patches == expected.patches);
+  CHECK(given_patches(apl.ws) == expected.patches);
   CHECK(apl.ws.intpn == expected.intpn);
   CHECK(apl("INTPN[3;3;3]") == Lines{"7"});
   // PATCHES of its own: INTPN is made from them, and they must hold the input points.

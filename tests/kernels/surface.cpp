@@ -636,6 +636,16 @@ TEST_CASE("COONS and FIT find the first number that is not finite as they make i
       Surface s;
       CHECK(said(interpolate_into(in, s)) == "finite");
       CHECK(said(read_again(s)) == "finite");
+      // PATCHES not kept: each row made as FIT comes to it, the same grid bit for bit; COONS
+      // alone makes the same PATCHES.
+      Surface dropped;
+      dropped.patches = s.patches;
+      CHECK(said(interpolate_into(in, dropped, PatchesOut::dropped)) == "finite");
+      CHECK(dropped.patches.shape.empty());
+      CHECK(std::memcmp(dropped.intpn.data(), s.intpn.data(), s.intpn.size() * sizeof(double)) ==
+            0);
+      CHECK(dropped.intpn.shape == s.intpn.shape);
+      CHECK(surface_patches(in) == s.patches);
 
       // Finite patches so large that the grid overflows, in two parts of the rows: the first.
       Array patches = s.patches;
@@ -659,7 +669,23 @@ TEST_CASE("COONS and FIT find the first number that is not finite as they make i
       REQUIRE(patch);
       CHECK(patch->problem == DataError::Problem::patch_not_finite);
       CHECK(said(patch) == said(read_again(s)));
+      // Not kept, the same patch is named: the least of the rows the threads made.
+      const auto unkept = interpolate_into({40, 40, density, density, &huge.inppn, &huge.inptg},
+                                           dropped, PatchesOut::dropped);
+      REQUIRE(unkept);
+      CHECK(said(unkept) == said(patch));
     }
   }
   use_fit_code(FitCode::best);
+}
+
+TEST_CASE("a single curve or stringer keeps its empty PATCHES when patches are not kept") {
+  const Grid g = wavy_grid(1, 6, 5);
+  const SurfaceInput in{1, 6, 0, 3, &g.inppn, &g.inptg};
+  Surface kept, dropped;
+  CHECK(!interpolate_into(in, kept));
+  CHECK(!interpolate_into(in, dropped, PatchesOut::dropped));
+  CHECK(dropped == kept);
+  CHECK(dropped.patches.shape == std::vector<std::size_t>{0, 5, 3, 4, 4});
+  CHECK(surface_patches(in) == kept.patches);
 }

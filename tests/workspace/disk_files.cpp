@@ -92,7 +92,8 @@ TEST_CASE("SAVE stores PATCHES and INTPN only when they are not the interpolatio
   Workspace made = test::make_interpolated(30, 30, 4, 4);
   REQUIRE(made.changes.derived);
   save_surface(s.disk, "MADE", made);
-  const std::size_t arrays = (made.patches.size() + made.intpn.size()) * sizeof(double);
+  const std::size_t arrays =
+      (test::given_patches(made).size() + made.intpn.size()) * sizeof(double);
   const std::string file = test::read_file(s.disk.path("MADE", "IGDSDATA"));
   CHECK(file.size() < arrays / 10);
   Workspace ws = test::make_workspace(2, 3, 0, 0);
@@ -101,8 +102,8 @@ TEST_CASE("SAVE stores PATCHES and INTPN only when they are not the interpolatio
   CHECK(ws.changes.derived);
   // Arrays of their own (as END APL assigns them) are stored, and come back as they were.
   Workspace own = made;
+  test::own_surface(own);
   own.intpn.ravel[7] += 1;
-  own.changes.assigned();
   save_surface(s.disk, "OWN", own);
   CHECK(test::read_file(s.disk.path("OWN", "IGDSDATA")).size() > arrays);
   restore_surface(s.disk, "OWN", ws);
@@ -122,9 +123,10 @@ TEST_CASE("a version 1 IGDSDATA, PATCHES and INTPN always in it, is read as befo
   Scratch s;
   const Workspace made = test::make_interpolated(6, 5, 2, 3);
   auto version_1 = [&](const Workspace& from, bool modes) {
+    const Array patches = test::given_patches(from);  // igds 1.0 kept them
     disk::Writer w;
     w.i32(from.nocur), w.i32(from.nostr), w.i32(from.intcu), w.i32(from.intst);
-    w.array(from.inppn), w.array(from.inptg), w.array(from.patches), w.array(from.intpn);
+    w.array(from.inppn), w.array(from.inptg), w.array(patches), w.array(from.intpn);
     if (modes) w.i32(0), w.i32(1);
     test::rewrite_file(s.disk.path("OLD", "IGDSDATA"), disk::frame("IGDSDATA", w.str(), 1));
     Workspace ws;
@@ -140,6 +142,7 @@ TEST_CASE("a version 1 IGDSDATA, PATCHES and INTPN always in it, is read as befo
   CHECK(!ws.auto_tangents());
   // Arrays that are not the interpolation are kept.
   Workspace own = made;
+  keep_patches(own);
   own.patches.ravel[3] = 0.5;
   ws = version_1(own, false);
   CHECK(ws.patches == own.patches);

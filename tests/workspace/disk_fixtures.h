@@ -97,7 +97,8 @@ inline Workspace make_workspace(int nocur, int nostr, int intcu, int intst, bool
 }
 
 // A surface as BUILD makes it (PATCHES and INTPN its interpolation: the session does not save
-// them) with images drawn from it as DISPLAY draws them (recipes for the session).
+// them, and PATCHES are not kept) with images drawn from it as DISPLAY draws them (recipes for the
+// session).
 inline Workspace make_interpolated(int nocur, int nostr, int intcu, int intst) {
   Workspace ws;
   ws.nocur = nocur;
@@ -122,7 +123,9 @@ inline Workspace make_interpolated(int nocur, int nostr, int intcu, int intst) {
     ws.inptg.ravel[4 * (2 * cu + r) + 1] = 1;
     ws.inptg.ravel[4 * (2 * cu + r) + 3] = double((r % 2 ? (cu - 1) * st : 0) + r / 2 + 1);
   }
-  Surface s = interpolate({nocur, nostr, intcu, intst, &ws.inppn, &ws.inptg});
+  Surface s;
+  (void)interpolate_into({nocur, nostr, intcu, intst, &ws.inppn, &ws.inptg}, s,
+                         PatchesOut::dropped);
   ws.patches = std::move(s.patches);
   ws.intpn = std::move(s.intpn);
   ws.image =
@@ -154,13 +157,31 @@ inline void rewrite_file(const std::filesystem::path& path, std::string_view byt
   write_file(path, bytes);
 }
 
+// PATCHES as the workspace gives them (made from the inputs when it keeps none).
+inline Array given_patches(const Workspace& ws) {
+  Array made;
+  return patches_of(ws, made);
+}
+
+// PATCHES and INTPN made the workspace's own, as END APL leaves them when one of them is assigned:
+// PATCHES kept first (state.h), then another surface whose arrays the session keeps.
+inline void own_surface(Workspace& ws) {
+  keep_patches(ws);
+  ws.changes.surface = new_generation();
+  ws.changes.derived = false;
+}
+
+// PATCHES as each workspace gives them, bit for bit.
+inline bool same_patches(const Workspace& a, const Workspace& b) {
+  return same_bits(given_patches(a), given_patches(b));
+}
+
 // Every variable, bit for bit, as one answer (for searching a list of states).
 inline bool same_workspace(const Workspace& a, const Workspace& b) {
   return a.nocur == b.nocur && a.nostr == b.nostr && a.intcu == b.intcu && a.intst == b.intst &&
-         same_bits(a.inppn, b.inppn) && same_bits(a.inptg, b.inptg) &&
-         same_bits(a.patches, b.patches) && same_bits(a.intpn, b.intpn) &&
-         same_bits(a.image, b.image) && same_bits(a.temp1, b.temp1) &&
-         same_bits(a.temp2, b.temp2) && a.status == b.status;
+         same_bits(a.inppn, b.inppn) && same_bits(a.inptg, b.inptg) && same_patches(a, b) &&
+         same_bits(a.intpn, b.intpn) && same_bits(a.image, b.image) &&
+         same_bits(a.temp1, b.temp1) && same_bits(a.temp2, b.temp2) && a.status == b.status;
 }
 
 // Every variable, bit for bit (operator== would call -0.0 and 0.0 equal and NaN unequal).
@@ -171,7 +192,7 @@ inline void check_same_surface(const Workspace& a, const Workspace& b) {
   CHECK(a.intst == b.intst);
   CHECK(same_bits(a.inppn, b.inppn));
   CHECK(same_bits(a.inptg, b.inptg));
-  CHECK(same_bits(a.patches, b.patches));
+  CHECK(same_patches(a, b));
   CHECK(same_bits(a.intpn, b.intpn));
 }
 

@@ -205,14 +205,14 @@ TEST_CASE("RESTORE of a surface that overflows, or holds numbers that are not fi
   // PATCHES and INTPN of the file, kept as they are when they are not the interpolation's (as
   // END APL assigns them).
   Workspace odd = test::make_interpolated(3, 3, 1, 1);
+  test::own_surface(odd);
   odd.patches.ravel[48 + 5] = std::numeric_limits<double>::quiet_NaN();
-  odd.changes.assigned();
   CHECK(restored(odd) ==
         "FILE DAMAGED: F.IGDSDATA (PATCH 2 OF PATCHES IS NOT A FINITE NUMBER); CURRENT SURFACE "
         "KEPT");
   odd = test::make_interpolated(3, 3, 1, 1);
+  test::own_surface(odd);
   odd.intpn.ravel[3 * (5 * 2 + 3) + 1] = -std::numeric_limits<double>::infinity();
-  odd.changes.assigned();
   CHECK(restored(odd) ==
         "FILE DAMAGED: F.IGDSDATA (ROW 3 COLUMN 4 OF INTPN IS NOT A FINITE NUMBER); CURRENT "
         "SURFACE KEPT");
@@ -237,7 +237,7 @@ TEST_CASE("a session whose inputs overflow, or whose kept arrays are not finite,
   // PATCHES kept by the session (as END APL or FIT leaves them), one of them made a NaN.
   Workspace kept = test::make_interpolated(3, 3, 1, 1);
   kept.image = kept.temp1 = kept.temp2 = nullptr;
-  kept.changes.assigned();
+  test::own_surface(kept);
   save(s.disk, kept);
   disk::SessionTable t = test::forge::session_table(s.disk);
   REQUIRE(!t.derived);

@@ -52,8 +52,9 @@ std::size_t put_char_cards(const Workspace& ws, TextOut& out) {
   *w++ = '\n';
   out.commit(w);
   std::atomic<std::size_t> overflow = 0;
+  Array made;
   for (const auto& array :
-       {std::pair{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&ws.patches, 5}}) {
+       {std::pair{&ws.inppn, 2}, {&ws.inptg, 2}, {&ws.intpn, 3}, {&patches_of(ws, made), 5}}) {
     const Array* a = array.first;
     const auto rank = std::size_t(array.second);
     out.commit(shape_card(out.room(rank * i5 + 1), *a, rank));

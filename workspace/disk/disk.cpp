@@ -251,7 +251,8 @@ void save_surface(const Disk& disk, std::string_view name, const Workspace& ws) 
   w.array(ws.inptg);
   // PATCHES and INTPN that are the interpolation of the inputs are made again when the file is
   // read, as the session's are: 1 then, else 0 and the arrays.
-  const bool derived = ws.changes.derived && !ws.patches.empty();
+  // (A single curve or stringer's arrays are written: its PATCHES hold no number.)
+  const bool derived = ws.changes.derived && ws.nocur > 1 && ws.nostr > 1;
   w.i32(derived ? 1 : 0);
   if (!derived) {
     w.array(ws.patches);
@@ -322,7 +323,10 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   // overflow).
   Surface surface;
   try {
-    if (auto overflow = interpolate_into(surface_input(in), surface)) throw *overflow;
+    // PATCHES kept only to be compared with the file's.
+    if (auto overflow = interpolate_into(surface_input(in), surface,
+                                         stored ? PatchesOut::kept : PatchesOut::dropped))
+      throw *overflow;
   } catch (const DataError& e) {
     const bool overflow = e.problem == DataError::Problem::patch_not_finite ||
                           e.problem == DataError::Problem::grid_point_not_finite;
@@ -353,6 +357,7 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   ws.intpn = std::move(in.intpn);
   ws.set_surface_modes(in.marks_twists(), in.auto_tangents());
   ws.changes.replaced(derived);
+  drop_derived_patches(ws);
 }
 
 void store_image(const Disk& disk, std::string_view name, const Image& image) {

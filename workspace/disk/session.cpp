@@ -486,7 +486,8 @@ Workspace Session::State::read_session() {
   if (t.current != 0 && t.derived) {
     try {
       Surface made;
-      if (auto overflow = interpolate_into(surface_input(ws), made)) throw *overflow;
+      if (auto overflow = interpolate_into(surface_input(ws), made, PatchesOut::dropped))
+        throw *overflow;
       ws.patches = std::move(made.patches);
       ws.intpn = std::move(made.intpn);
     } catch (const DataError& e) {
@@ -590,6 +591,7 @@ Workspace Session::State::read_legacy(std::string_view payload) {
     disk::Reader v(bytes);
     if (i < 4) {
       Array* a[] = {&ws.inppn, &ws.inptg, &ws.patches, &ws.intpn};
+      ws.changes.derived = false;  // PATCHES and INTPN as read, until compared below
       *a[i] = v.array();
     } else {
       auto image = std::make_shared<const Image>(v.image());
@@ -614,6 +616,7 @@ Workspace Session::State::read_legacy(std::string_view payload) {
     }
   }
   ws.changes.replaced(derived || !ws.has_input());
+  drop_derived_patches(ws);
   next_number = std::max(next_number, next > 0 && next < disk::file_numbers ? next : 1);
   obsolete = files;
   saved_known = false;

@@ -57,6 +57,20 @@ void stringer_tangents(std::size_t nc, std::size_t ns, Vec3View points, std::vec
 // by the border tangents of INPTG (2(NOCUR+NOSTR) x 4, row order as in workspace/state.h).
 GridTangents grid_tangents(int nocur, int nostr, Vec3View points, const Array& inptg);
 
+// What a row of patch matrices is made from: the NOCUR x NOSTR input points, their tangents and
+// twists (empty: the zero twists of the manual), as coons_patches takes them.
+struct PatchSource {
+  std::size_t nocur = 0, nostr = 0;
+  Vec3View points;
+  const GridTangents* tangents = nullptr;
+  Vec3View twists;
+};
+
+// Patch row `i` of PATCHES (its NOSTR-1 matrices, 48 numbers each, as coons_patches writes them)
+// into `out`. Returns the offset in the row of its first number that is not finite, or
+// (NOSTR-1) x 48 when every one is.
+std::size_t coons_patch_row(const PatchSource& source, std::size_t i, double* out);
+
 // PATCHES, (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4: per patch and coordinate the matrix M of
 // docs/kernels.md, corners, then the tangents (per_chord: scaled by the chord length of their arc;
 // per_parameter: as they are, but zero along a zero-length arc, which is its point), then the

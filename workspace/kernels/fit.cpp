@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/project.h"
@@ -52,16 +53,18 @@ constexpr std::size_t chunk = 2048;
 constexpr std::size_t streaming = std::size_t(1) << 22;
 
 struct FitJob;
-using CurvePolynomials = void (*)(const FitJob&, std::size_t, std::size_t, std::size_t, double*,
+using CurvePolynomials = void (*)(const FitJob&, const double*, std::size_t, std::size_t, double*,
                                   double*, double*, double*);
 using Combine = bool (*)(const double*, std::size_t, const double*, const double*, const double*,
                          const double*, const double*, double*);
 
 struct FitJob {
   std::size_t nc, ns, ic, is, rows, cols;
-  const double* patches;
-  const double* wv;  // (ic+2) x 4
-  const double* wu;  // (is+2) x 4
+  const double* patches;      // PATCHES, or null: each row made from `source` when needed
+  const PatchSource* source;  // when `patches` is null
+  std::atomic<std::size_t>* patch_not_finite;  // the least index found in the rows made
+  const double* wv;                            // (ic+2) x 4
+  const double* wu;                            // (is+2) x 4
   double centre[3];
   double* intpn;
   CurvePolynomials polynomials;
@@ -69,12 +72,12 @@ struct FitJob {
   Vec3View points;  // the input points, written over their places in INTPN
 };
 
-// The four curve polynomials of patch row i over output columns [j0, j1): q[c] holds, point by
-// point (x y z), W_u M[.][c] with M's corners relative to the local origin. Row b of the patch
-// row is then sum_c W_v[b][c] q[c]: a 4-term combination of contiguous memory.
+// The four curve polynomials of a patch row (`row`: its matrices) over output columns [j0, j1):
+// q[c] holds, point by point (x y z), W_u M[.][c] with M's corners relative to the local origin.
+// Row b of the patch row is then sum_c W_v[b][c] q[c]: a 4-term combination of contiguous memory.
 template <class = void>
 [[gnu::always_inline]] inline void curve_polynomials_body(
-    const FitJob& job, std::size_t i, std::size_t j0, std::size_t j1, double* __restrict q0,
+    const FitJob& job, const double* row, std::size_t j0, std::size_t j1, double* __restrict q0,
     double* __restrict q1, double* __restrict q2, double* __restrict q3) {
   // One vector holds a row of M (its 4 columns c), so each output column costs 12 FMAs.
   typedef double v4 __attribute__((vector_size(32)));
@@ -83,7 +86,7 @@ template <class = void>
     const std::size_t first = col - j * (job.is + 1);
     const std::size_t count = j + 2 == job.ns ? job.is + 2 : job.is + 1;
     const std::size_t last = std::min(count, first + (j1 - col));
-    const double* src = job.patches + (i * (job.ns - 1) + j) * 48;
+    const double* src = row + j * 48;
     v4 m[3][4];
     for (int k = 0; k < 3; ++k) {
       for (int r = 0; r < 4; ++r) std::memcpy(&m[k][r], src + 16 * k + 4 * r, sizeof(v4));
@@ -139,9 +142,9 @@ template <class = void>
   return seen[0] + seen[1] + seen[2] + seen[3] + rest == 0;
 }
 
-void curve_polynomials_base(const FitJob& job, std::size_t i, std::size_t j0, std::size_t j1,
+void curve_polynomials_base(const FitJob& job, const double* row, std::size_t j0, std::size_t j1,
                             double* q0, double* q1, double* q2, double* q3) {
-  curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
+  curve_polynomials_body(job, row, j0, j1, q0, q1, q2, q3);
 }
 
 bool combine_base(const double* fv, std::size_t n, const double* origin, const double* q0,
@@ -150,11 +153,12 @@ bool combine_base(const double* fv, std::size_t n, const double* origin, const d
 }
 
 #if IGDS_X86
-__attribute__((target("avx2,fma"))) void curve_polynomials_avx2(const FitJob& job, std::size_t i,
-                                                                std::size_t j0, std::size_t j1,
-                                                                double* q0, double* q1, double* q2,
+__attribute__((target("avx2,fma"))) void curve_polynomials_avx2(const FitJob& job,
+                                                                const double* row, std::size_t j0,
+                                                                std::size_t j1, double* q0,
+                                                                double* q1, double* q2,
                                                                 double* q3) {
-  curve_polynomials_body(job, i, j0, j1, q0, q1, q2, q3);
+  curve_polynomials_body(job, row, j0, j1, q0, q1, q2, q3);
 }
 
 __attribute__((target("avx2,fma"))) bool combine_avx2(const double* fv, std::size_t n,
@@ -251,13 +255,15 @@ void choose_kernels(FitJob& job, std::size_t doubles) {
 #endif
 }
 
-// Output rows [first, last): for each patch row and chunk of columns, the curve polynomials
-// once, then every output row of that patch row in the chunk. Returns the index in INTPN of the
-// first stretch written that holds a number not finite, or the size of INTPN.
+// Output rows [first, last): for each patch row (made first when PATCHES are not kept) and chunk
+// of columns, the curve polynomials once, then every output row of that patch row in the chunk.
+// Returns the index in INTPN of the first stretch written that holds a number not finite, or the
+// size of INTPN.
 std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
   std::size_t not_finite = job.rows * job.cols * 3;
   const std::size_t width = std::min(chunk, job.cols);
-  std::vector<double> buffer(5 * 3 * width);
+  const std::size_t row_size = (job.ns - 1) * 48;
+  std::vector<double> buffer(5 * 3 * width), made(job.patches ? 0 : row_size);
   double* q[4] = {buffer.data(), buffer.data() + 3 * width, buffer.data() + 6 * width,
                   buffer.data() + 9 * width};
   double* origin = buffer.data() + 12 * width;
@@ -265,9 +271,14 @@ std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
   for (std::size_t row = first; row < last;) {
     const std::size_t i = std::min(row / (job.ic + 1), job.nc - 2);
     const std::size_t end = std::min(last, i + 2 == job.nc ? job.rows : (i + 1) * (job.ic + 1));
+    const double* patch_row = job.patches ? job.patches + i * row_size : made.data();
+    if (!job.patches) {
+      const std::size_t k = coons_patch_row(*job.source, i, made.data());
+      if (k < row_size) keep_least(*job.patch_not_finite, i * row_size + k);
+    }
     for (std::size_t j0 = 0; j0 < job.cols; j0 += width) {
       const std::size_t j1 = std::min(job.cols, j0 + width);
-      job.polynomials(job, i, j0, j1, q[0], q[1], q[2], q[3]);
+      job.polynomials(job, patch_row, j0, j1, q[0], q[1], q[2], q[3]);
       for (std::size_t r = row; r < end; ++r) {
         if (!job.combine(job.wv + 4 * (r - i * (job.ic + 1)), 3 * (j1 - j0), origin, q[0], q[1],
                          q[2], q[3], job.intpn + 3 * (r * job.cols + j0)))
@@ -307,27 +318,33 @@ const char* fit_code_in_use() {
 #endif
 }
 
-std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
-                Array& intpn) {
+namespace {
+
+// FIT from stored patches (`patches`) or from rows made as they are needed (`source`).
+std::size_t fit_grid(int intcu, int intst, const double* patches, const PatchSource& source,
+                     std::atomic<std::size_t>* patch_not_finite, Array& intpn) {
+  const int nocur = int(source.nocur), nostr = int(source.nostr);
   const GridShape shape = intpn_shape(nocur, nostr, intcu, intst);
   const unsigned threads = threads_for(shape.rows * shape.cols * 3);
   intpn.reshape_for_output({shape.rows, shape.cols, 3});
   const std::vector<double> wv = weights(intcu), wu = weights(intst);
-  const Vec3 c = bounding_box_centre(points);
-  FitJob job{std::size_t(nocur),
-             std::size_t(nostr),
+  const Vec3 c = bounding_box_centre(source.points);
+  FitJob job{source.nocur,
+             source.nostr,
              std::size_t(intcu),
              std::size_t(intst),
              shape.rows,
              shape.cols,
-             patches.data(),
+             patches,
+             &source,
+             patch_not_finite,
              wv.data(),
              wu.data(),
              {c.x, c.y, c.z},
              intpn.data(),
              nullptr,
              nullptr,
-             points};
+             source.points};
   choose_kernels(job, intpn.size());
   std::atomic<std::size_t> not_finite{intpn.size()};
   parallel_for(shape.rows, threads, [&](std::size_t first, std::size_t last) {
@@ -338,6 +355,20 @@ std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches
   const std::size_t from = not_finite.load();
   if (from == intpn.size()) return from;
   return from + first_not_finite(intpn.data() + from, intpn.size() - from);
+}
+
+}  // namespace
+
+std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
+                Array& intpn) {
+  const PatchSource source{std::size_t(nocur), std::size_t(nostr), points, nullptr, {}};
+  return fit_grid(intcu, intst, patches.data(), source, nullptr, intpn);
+}
+
+FitResult fit(int intcu, int intst, const PatchSource& source, Array& intpn) {
+  std::atomic<std::size_t> patch_not_finite{(source.nocur - 1) * (source.nostr - 1) * 48};
+  const std::size_t k = fit_grid(intcu, intst, nullptr, source, &patch_not_finite, intpn);
+  return {patch_not_finite.load(), k};
 }
 
 }  // namespace igds

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/coons.h"
 #include "workspace/kernels/vec3.h"
 
 namespace igds {
@@ -25,6 +26,15 @@ GridShape intpn_shape(int nocur, int nostr, int intcu, int intst);
 // or its size when every one is: found as the numbers are made, not by reading INTPN again.
 std::size_t fit(int nocur, int nostr, int intcu, int intst, const Array& patches, Vec3View points,
                 Array& intpn);
+
+// The same without PATCHES: each row of patch matrices is made from `source` (coons.h) when FIT
+// comes to it, on the thread that evaluates it, and not kept; the grid is the same bit for bit.
+// Returned: the index PATCHES' first number that is not finite would have ((NOCUR-1)(NOSTR-1)48
+// when every one is) and that of INTPN's, as fit returns it.
+struct FitResult {
+  std::size_t patch_not_finite = 0, intpn_not_finite = 0;
+};
+FitResult fit(int intcu, int intst, const PatchSource& source, Array& intpn);
 
 // Which compiled form of the FIT loops runs: the best the processor allows (the default), or the
 // baseline one everywhere (so that tests exercise both on a machine that has AVX2).

@@ -65,11 +65,11 @@ void check_tangents(const SurfaceInput& in) {
   }
 }
 
-// The error of a surface whose first number not finite is PATCHES' `kp` or INTPN's `ki` (the
-// array's size: none).
-std::optional<DataError> not_finite(const Array& patches, std::size_t kp, const Array& intpn,
+// The error of a surface whose first number not finite is PATCHES' `kp` (of `patch_numbers`) or
+// INTPN's `ki` (the array's size: none).
+std::optional<DataError> not_finite(std::size_t patch_numbers, std::size_t kp, const Array& intpn,
                                     std::size_t ki) {
-  if (kp < patches.size()) {
+  if (kp < patch_numbers) {
     DataError e(DataError::Problem::patch_not_finite);
     e.number = kp / 48 + 1;
     return e;
@@ -135,21 +135,21 @@ Surface interpolate(const SurfaceInput& input) {
   return s;
 }
 
-std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out) {
+std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out,
+                                          PatchesOut patches) {
   check_grid(input);
   check_tangents(input);
   if (input.nocur == 1 || input.nostr == 1) {
     Surface line;
     interpolate_line(input, line);
     out = std::move(line);
-    return not_finite(out.patches, 0, out.intpn,
-                      first_not_finite(out.intpn.data(), out.intpn.size()));
+    return not_finite(0, 0, out.intpn, first_not_finite(out.intpn.data(), out.intpn.size()));
   }
   if (&out.patches == input.inppn || &out.patches == input.inptg || &out.intpn == input.inppn ||
       &out.intpn == input.inptg) {
     // The output would overwrite the input while it is read: compute apart.
     Surface apart;
-    auto error = interpolate_into(input, apart);
+    auto error = interpolate_into(input, apart, patches);
     out = std::move(apart);
     return error;
   }
@@ -157,12 +157,36 @@ std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& ou
   // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
   const Array twists =
       input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
-  const std::size_t kp = coons_patches(
-      input.nocur, input.nostr, points,
-      grid_tangents(input.nocur, input.nostr, points, *input.inptg), out.patches, as_vec3(twists));
+  const GridTangents tangents = grid_tangents(input.nocur, input.nostr, points, *input.inptg);
+  const std::size_t patch_numbers =
+      std::size_t(input.nocur - 1) * std::size_t(input.nostr - 1) * 48;
+  if (patches == PatchesOut::dropped) {
+    out.patches = Array();
+    const FitResult made = fit(
+        input.intcu, input.intst,
+        {std::size_t(input.nocur), std::size_t(input.nostr), points, &tangents, as_vec3(twists)},
+        out.intpn);
+    return not_finite(patch_numbers, made.patch_not_finite, out.intpn, made.intpn_not_finite);
+  }
+  const std::size_t kp =
+      coons_patches(input.nocur, input.nostr, points, tangents, out.patches, as_vec3(twists));
   const std::size_t ki =
       fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
-  return not_finite(out.patches, kp, out.intpn, ki);
+  return not_finite(patch_numbers, kp, out.intpn, ki);
+}
+
+Array surface_patches(const SurfaceInput& input) {
+  check_grid(input);
+  check_tangents(input);
+  Array patches({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
+  if (input.nocur == 1 || input.nostr == 1) return patches;
+  const auto points = as_vec3(*input.inppn);
+  const Array twists =
+      input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
+  (void)coons_patches(input.nocur, input.nostr, points,
+                      grid_tangents(input.nocur, input.nostr, points, *input.inptg), patches,
+                      as_vec3(twists));  // finite: they were when the surface was made
+  return patches;
 }
 
 Array refit(const SurfaceInput& input, const Array& patches) {
@@ -172,7 +196,6 @@ Array refit(const SurfaceInput& input, const Array& patches) {
 }
 
 std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patches, Array& intpn) {
-  static const Array none;
   check_grid(input);
   if (input.nocur == 1 || input.nostr == 1) {
     // A line has no patches: its grid comes from its points and end tangents.
@@ -180,7 +203,7 @@ std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patc
     Surface line;
     interpolate_line(input, line);
     intpn = std::move(line.intpn);
-    return not_finite(none, 0, intpn, first_not_finite(intpn.data(), intpn.size()));
+    return not_finite(0, 0, intpn, first_not_finite(intpn.data(), intpn.size()));
   }
   check_patches(input, patches);
   if (&intpn == input.inppn || &intpn == &patches) {
@@ -190,7 +213,7 @@ std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patc
     return error;
   }
   // PATCHES are finite (check_patches): INTPN alone can overflow.
-  return not_finite(none, 0, intpn,
+  return not_finite(0, 0, intpn,
                     fit(input.nocur, input.nostr, input.intcu, input.intst, patches,
                         as_vec3(*input.inppn), intpn));
 }

@@ -46,6 +46,10 @@ LineSpline line_spline(const SurfaceInput& in);
 // it is (interpolate_into says so).
 Surface interpolate(const SurfaceInput& input);
 
+// COONS alone: the PATCHES interpolate keeps, for a surface made with PatchesOut::dropped whose
+// patches are asked for later. Throws DataError as interpolate does.
+Array surface_patches(const SurfaceInput& input);
+
 // FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
 // points are copied bit-exactly to their places in the grid. A single curve or stringer has no
 // patches: its grid is made from INPPN and INPTG again.
@@ -60,7 +64,12 @@ Array refit(const SurfaceInput& input, const Array& patches);
 // or grid_point_not_finite naming INTPN's row and column, found by the kernels as they make the
 // numbers (nullopt: every one is finite). The output is overwritten then: a surface that overflowed
 // is never kept.
-[[nodiscard]] std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out);
+// With PatchesOut::dropped the patch matrices are made a row at a time as FIT evaluates them and
+// not kept: `out.patches` is left without a shape (a single curve or stringer's empty PATCHES
+// excepted), INTPN is the same bit for bit, and a patch that is not finite is still reported.
+enum class PatchesOut { kept, dropped };
+[[nodiscard]] std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out,
+                                                        PatchesOut patches = PatchesOut::kept);
 [[nodiscard]] std::optional<DataError> refit_into(const SurfaceInput& input, const Array& patches,
                                                   Array& intpn);
 
