@@ -18,9 +18,9 @@ struct SurfaceModes {
 // PATCHES when `refit_only` (the patches do not depend on the grid), into the memory of the
 // workspace's INTPN, taken out of it when it is its interpolation (made again if need be): a new
 // surface of about the same size writes no fresh pages, which on a large grid cost more than the
-// interpolation. The kernels check everything first, and the
-// result is checked to be finite; when either refuses, the workspace's arrays are as they were
-// and the report is followed by `; THE SURFACE IS NOT CHANGED`.
+// interpolation. The kernels check everything first, and the result is checked to be finite;
+// when either refuses, the workspace's arrays are as they were and the report is followed by
+// `; THE SURFACE IS NOT CHANGED`.
 Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only = false);
 
 // Makes an interpolated surface the current one: the only change BUILD and CHANGE make to the

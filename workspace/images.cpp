@@ -238,6 +238,7 @@ Image made_from(Workspace from, const Description& desim) {
       throw *overflow;
     from.patches = std::move(s.patches);
     from.intpn = std::move(s.intpn);
+    from.changes.derived = true;  // its PATCHES are made when read (state.h)
   }
   return image_of(from, desim);
 }

@@ -253,4 +253,18 @@ TEST_CASE("a session whose inputs overflow, or whose kept arrays are not finite,
   CHECK(notices == std::vector<std::string>{
                        "SESSION FILE BINSAVE.IGDSCONT DAMAGED (PATCH 1 OF PATCHES IS NOT A FINITE "
                        "NUMBER): KEPT AS BINSAVE.IGDSBAD; THE WORKSPACE STARTS EMPTY"});
+  fs::remove(s.disk.path("BINSAVE", "IGDSBAD"));
+
+  // A session that says it keeps its arrays, without PATCHES: an interpolated surface keeps none,
+  // but this one is not the interpolation.
+  save(s.disk, kept);
+  t = test::forge::session_table(s.disk);
+  REQUIRE(!t.derived);
+  t.patches = disk::StoredArray{};
+  test::forge::write_session(s.disk, t);
+  notices.clear();
+  CHECK(load_fresh(s.disk, &notices) == Workspace{});
+  CHECK(notices == std::vector<std::string>{
+                       "SESSION FILE BINSAVE.IGDSCONT DAMAGED (SHAPES: PATCHES IS EMPTY, NOT 2 BY "
+                       "2 BY 3 BY 4 BY 4): KEPT AS BINSAVE.IGDSBAD; THE WORKSPACE STARTS EMPTY"});
 }

@@ -470,6 +470,7 @@ Workspace Session::State::read_session() {
       }
       ws.patches = read_array(t.patches);
       ws.intpn = read_array(t.intpn);
+      ws.changes.derived = false;  // PATCHES are then the session's: they must be there
       if (auto p = surface_problem(ws)) throw disk::Damage("SHAPES: " + p->reason);
       for (auto [v, a] : {std::pair{Variable::patches, &ws.patches}, {Variable::intpn, &ws.intpn}})
         if (auto p = finite_problem(v, *a)) throw disk::Damage(p->reason);
