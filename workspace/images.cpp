@@ -12,6 +12,7 @@
 #include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/hidden.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/kernels/surface.h"
 
 namespace igds {
@@ -156,26 +157,45 @@ Image comb_image(const Workspace& ws, const View& view) {
   Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
   require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
   const auto points = as_vec3(ws.intpn);
-  Vec3 low = points[0], high = low;
-  double most = 0;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const Vec3 p = points[k];
-    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-    for (std::size_t d = 0; d < 2; ++d) {
-      const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
-      if (std::isfinite(bend)) most = std::max(most, bend);
+  // The box of the points and the largest curvature, a part of the points on each core.
+  struct Found {
+    Vec3 low, high;
+    double most = 0;
+  };
+  const unsigned parts = threads_for(6 * points.size());
+  std::vector<Found> found_in(parts, Found{points[0], points[0]});
+  in_parallel(parts, [&](unsigned part) {
+    Found& f = found_in[part];
+    for (std::size_t k = points.size() * part / parts; k < points.size() * (part + 1) / parts;
+         ++k) {
+      const Vec3 p = points[k];
+      f.low = {std::min(f.low.x, p.x), std::min(f.low.y, p.y), std::min(f.low.z, p.z)};
+      f.high = {std::max(f.high.x, p.x), std::max(f.high.y, p.y), std::max(f.high.z, p.z)};
+      for (std::size_t d = 0; d < 2; ++d) {
+        const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
+        if (std::isfinite(bend)) f.most = std::max(f.most, bend);
+      }
     }
+  });
+  Found all = found_in[0];
+  for (const Found& f : found_in) {
+    all.low = {std::min(all.low.x, f.low.x), std::min(all.low.y, f.low.y),
+               std::min(all.low.z, f.low.z)};
+    all.high = {std::max(all.high.x, f.high.x), std::max(all.high.y, f.high.y),
+                std::max(all.high.z, f.high.z)};
+    all.most = std::max(all.most, f.most);
   }
-  const Vec3 size = high - low;
-  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  const Vec3 size = all.high - all.low;
+  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), all.most);
   // The comb's end in space, away from the centre of curvature (so that a comb stands outside
   // the surface's convex side and combs do not cross in a tight bend), written over its vector
   // (a large grid holds no second array of them), then projected.
   auto ends = as_vec3(bends);
-  for (std::size_t k = 0; k < points.size(); ++k)
-    for (std::size_t d = 0; d < 2; ++d)
-      ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  parallel_for(points.size(), parts, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k < last; ++k)
+      for (std::size_t d = 0; d < 2; ++d)
+        ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  });
   ProjectedImage found;
   std::tie(image.combs, found) =
       projected(as_vec3(std::as_const(bends)), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,

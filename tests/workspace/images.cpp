@@ -6,7 +6,10 @@
 #include <fmt/format.h>
 
 #include "tests/workspace/disk_fixtures.h"
+#include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/parallel.h"
+#include "workspace/kernels/project.h"
 
 namespace igds {
 namespace {
@@ -37,6 +40,48 @@ TEST_CASE("a deferred image is made once, at its first look; a failed make again
   CHECK(makes == 2);
   CHECK(shared.made());
   CHECK(ref.recipe() == std::pair{std::uint64_t{5}, desim});
+}
+
+TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pass makes them") {
+  // 274 x 274 points: more than threads_for makes one part of (six numbers a point). The last
+  // curve zigzags: the highest points and the sharpest bends are in the last part.
+  Workspace ws = test::make_interpolated(40, 40, 6, 6);
+  for (std::size_t j = 0; j < 40; ++j) ws.inppn.ravel[3 * (39 * 40 + j) + 2] += j % 2 ? 50 : 0;
+  Surface s;
+  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
+  ws.intpn = std::move(s.intpn);
+  const auto points = as_vec3(std::as_const(ws.intpn));
+  REQUIRE(threads_for(6 * points.size()) == cores());
+  const View view{Projection::isometric, {3, 30, 0}};
+  const Image image = comb_image(ws, view);
+  // One pass over the points: the box, the largest curvature, then each comb's end.
+  Array made;
+  Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  Vec3 low = points[0], high = low;
+  double most = 0;
+  std::size_t where = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    low = {std::min(low.x, points[k].x), std::min(low.y, points[k].y),
+           std::min(low.z, points[k].z)};
+    high = {std::max(high.x, points[k].x), std::max(high.y, points[k].y),
+            std::max(high.z, points[k].z)};
+    for (std::size_t d = 0; d < 2; ++d) {
+      const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
+      if (bend > most) most = bend, where = k;
+    }
+  }
+  CHECK(where >= points.size() / 2);
+  const Vec3 size = high - low;
+  CHECK(image.comb_scale == comb_scale_for(std::max({size.x, size.y, size.z}), most));
+  auto ends = as_vec3(bends);
+  for (std::size_t k = 0; k < points.size(); ++k)
+    for (std::size_t d = 0; d < 2; ++d)
+      ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  std::vector<double> xy(2 * ends.size());
+  project(view, bounding_box_centre(as_vec3(ws.inppn)), as_vec3(std::as_const(bends)),
+          MutablePoint2View(xy.data(), ends.size()));
+  REQUIRE(image.combs.size() == xy.size());
+  CHECK(std::equal(xy.begin(), xy.end(), image.combs.ravel.begin()));
 }
 
 TEST_CASE("a projection that overflows is refused, naming the point, row or tangent it came from") {

@@ -78,7 +78,7 @@ Array grid_curvature(const SurfaceInput& in, const Array& patches) {
   const GridShape shape = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
   require_shape("PATCHES", &patches,
                 {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
-  Array out({shape.rows, shape.cols, 6});
+  Array out = Array::for_output({shape.rows, shape.cols, 6});  // every number written below
   const std::size_t pc = std::size_t(in.nostr) - 1;
   // The blending functions of every column once: columns share them row after row.
   std::vector<Blend> columns(shape.cols);
