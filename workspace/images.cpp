@@ -153,8 +153,11 @@ double comb_scale_for(double extent, double most) {
 Image comb_image(const Workspace& ws, const View& view) {
   Image image = surface_image(ws, view);
   image.desim.what = 3;
-  Array made;
-  Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  // PATCHES made for the curvature are let go before the combs are projected.
+  Array bends = [&] {
+    Array made;
+    return grid_curvature(surface_input(ws), patches_of(ws, made));
+  }();
   require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
   const auto points = as_vec3(ws.intpn);
   // The box of the points and the largest curvature, a part of the points on each core.
