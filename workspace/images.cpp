@@ -1,7 +1,9 @@
 #include "workspace/images.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -11,6 +13,7 @@
 #include "workspace/exchange/duct.h"
 #include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/fit.h"
 #include "workspace/kernels/hidden.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/surface.h"
@@ -153,59 +156,108 @@ double comb_scale_for(double extent, double most) {
 Image comb_image(const Workspace& ws, const View& view) {
   Image image = surface_image(ws, view);
   image.desim.what = 3;
-  // PATCHES made for the curvature are let go before the combs are projected.
-  Array bends = [&] {
-    Array made;
-    return grid_curvature(surface_input(ws), patches_of(ws, made));
-  }();
-  require_shape("INTPN", &ws.intpn, {bends.shape[0], bends.shape[1], 3});
+  const SurfaceInput in = surface_input(ws);
+  const GridShape shape = intpn_shape(ws.nocur, ws.nostr, ws.intcu, ws.intst);
+  require_shape("INTPN", &ws.intpn, {shape.rows, shape.cols, 3});
+  const std::size_t rows = shape.rows, cols = shape.cols;
   const auto points = as_vec3(ws.intpn);
-  // The box of the points and the largest curvature, a part of the points on each core.
-  struct Found {
+  // A single curve or stringer's curvature is made whole (grid_curvature_rows is for grids); a
+  // grid's PATCHES are read where the workspace keeps them, or made a row at a time.
+  const bool line = ws.nocur == 1 || ws.nostr == 1;
+  const Array line_bends = line ? grid_curvature(in, ws.patches) : Array{};
+  std::optional<PatchMaker> maker;
+  if (!line && patches_made_when_read(ws)) maker.emplace(in);
+  const PatchSource* source = maker ? &maker->source() : nullptr;
+  // The curvature vectors (6 numbers a point) are made a few rows at a time, on every core, and
+  // never kept whole (192 MB at 4 M points): `each(part, first, last, bends)` has rows [first,
+  // last) in `bends`. About 32,000 points at a time, so that their projection runs where it is
+  // called (kernels/project.h).
+  const unsigned parts = threads_for(6 * points.size());
+  const std::size_t chunk = std::max<std::size_t>(1, (std::size_t(1) << 15) / cols);
+  auto by_rows = [&](const auto& each) {
+    in_parallel(parts, [&](unsigned part) {
+      std::vector<double> bends(6 * cols * std::min(chunk, rows));
+      const std::size_t end = rows * (part + 1) / parts;
+      for (std::size_t first = rows * part / parts; first < end; first += chunk) {
+        const std::size_t last = std::min(end, first + chunk);
+        if (line)
+          std::copy(line_bends.data() + 6 * cols * first, line_bends.data() + 6 * cols * last,
+                    bends.data());
+        else
+          grid_curvature_rows(in, ws.patches, first, last, bends.data(), source);
+        each(part, first, last, bends.data());
+      }
+    });
+  };
+  // The box of the points and the largest curvature.
+  struct Box {
     Vec3 low, high;
     double most = 0;
+    void add(Vec3 p) {
+      low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+      high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+    void add(const Box& b) {
+      add(b.low);
+      add(b.high);
+      most = std::max(most, b.most);
+    }
   };
-  const unsigned parts = threads_for(6 * points.size());
-  std::vector<Found> found_in(parts, Found{points[0], points[0]});
-  in_parallel(parts, [&](unsigned part) {
-    Found& f = found_in[part];
-    for (std::size_t k = points.size() * part / parts; k < points.size() * (part + 1) / parts;
-         ++k) {
-      const Vec3 p = points[k];
-      f.low = {std::min(f.low.x, p.x), std::min(f.low.y, p.y), std::min(f.low.z, p.z)};
-      f.high = {std::max(f.high.x, p.x), std::max(f.high.y, p.y), std::max(f.high.z, p.z)};
+  std::vector<Box> found(parts, Box{points[0], points[0]});
+  by_rows([&](unsigned part, std::size_t first, std::size_t last, const double* bends) {
+    for (std::size_t k = first * cols; k < last * cols; ++k) {
+      found[part].add(points[k]);
       for (std::size_t d = 0; d < 2; ++d) {
-        const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
-        if (std::isfinite(bend)) f.most = std::max(f.most, bend);
+        const double bend = norm(Vec3::load(bends + 6 * (k - first * cols) + 3 * d));
+        if (std::isfinite(bend)) found[part].most = std::max(found[part].most, bend);
       }
     }
   });
-  Found all = found_in[0];
-  for (const Found& f : found_in) {
-    all.low = {std::min(all.low.x, f.low.x), std::min(all.low.y, f.low.y),
-               std::min(all.low.z, f.low.z)};
-    all.high = {std::max(all.high.x, f.high.x), std::max(all.high.y, f.high.y),
-                std::max(all.high.z, f.high.z)};
-    all.most = std::max(all.most, f.most);
-  }
-  const Vec3 size = all.high - all.low;
-  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), all.most);
+  for (const Box& b : found) found[0].add(b);
+  const Vec3 size = found[0].high - found[0].low;
+  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), found[0].most);
   // The comb's end in space, away from the centre of curvature (so that a comb stands outside
-  // the surface's convex side and combs do not cross in a tight bend), written over its vector
-  // (a large grid holds no second array of them), then projected.
-  auto ends = as_vec3(bends);
-  parallel_for(points.size(), parts, [&](std::size_t first, std::size_t last) {
-    for (std::size_t k = first; k < last; ++k)
-      for (std::size_t d = 0; d < 2; ++d)
-        ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
+  // the surface's convex side and combs do not cross in a tight bend), written over its vector.
+  auto to_ends = [&](std::size_t first, std::size_t last, double* bends) {
+    for (std::size_t k = first * cols; k < last * cols; ++k)
+      for (std::size_t d = 0; d < 2; ++d) {
+        double* at = bends + 6 * (k - first * cols) + 3 * d;
+        (points[k] - image.comb_scale * Vec3::load(at)).store(at);
+      }
+  };
+  // CONIC refuses a view point inside the box of the combs' ends, as for any image
+  // (project_image), before anything is projected: their box first.
+  const Vec3 eye{view.parameters[0], view.parameters[1], view.parameters[2]};
+  if (view.projection == Projection::conic) {
+    std::vector<Box> ends(parts, Box{eye, eye});
+    std::vector<char> some(parts, 0);
+    by_rows([&](unsigned part, std::size_t first, std::size_t last, double* bends) {
+      to_ends(first, last, bends);
+      if (!some[part]) ends[part] = Box{Vec3::load(bends), Vec3::load(bends)}, some[part] = 1;
+      for (std::size_t k = 0; k < 2 * (last - first) * cols; ++k)
+        ends[part].add(Vec3::load(bends + 3 * k));
+    });
+    std::optional<Box> all;
+    for (unsigned part = 0; part < parts; ++part)
+      if (some[part]) all ? all->add(ends[part]) : void(all = ends[part]);
+    if (all && all->low.x <= eye.x && eye.x <= all->high.x && all->low.y <= eye.y &&
+        eye.y <= all->high.y && all->low.z <= eye.z && eye.z <= all->high.z)
+      throw DataError(DataError::Problem::view_inside_box);
+  }
+  image.combs = Array::for_output({rows, cols, 4});  // every comb's image is written below
+  const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
+  std::atomic<std::size_t> not_finite{2 * points.size()};
+  by_rows([&](unsigned, std::size_t first, std::size_t last, double* bends) {
+    to_ends(first, last, bends);
+    const std::size_t n = 2 * (last - first) * cols;
+    const ProjectedImage f =
+        project_image(view, centre, Vec3View(bends, n),
+                      MutablePoint2View(image.combs.data() + 4 * cols * first, n));
+    if (f.not_finite < n) keep_least(not_finite, 2 * cols * first + f.not_finite);
   });
-  ProjectedImage found;
-  std::tie(image.combs, found) =
-      projected(as_vec3(std::as_const(bends)), {ws.intpn.shape[0], ws.intpn.shape[1], 4}, view,
-                bounding_box_centre(as_vec3(ws.inppn)));
   // A comb that overflowed is named by its point of INTPN (two combs a point).
-  if (found.not_finite < ends.size())
-    check_projected(found.not_finite / 2, points.size(), "INTPN", ws.intpn.shape[1]);
+  if (not_finite.load() < 2 * points.size())
+    check_projected(not_finite.load() / 2, points.size(), "INTPN", cols);
   return image;
 }
 

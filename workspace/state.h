@@ -282,13 +282,17 @@ inline SurfaceInput surface_input(const Workspace& ws) {
   return {ws.nocur, ws.nostr, ws.intcu, ws.intst, &ws.inppn, &ws.inptg, ws.marks_twists()};
 }
 
-// PATCHES of the surface of `ws`: those it keeps, or, for a surface that is the interpolation of
-// its inputs (which keeps none: only a few commands read them, docs/kernels.md), made into
-// `made` from the inputs, bit for bit those the interpolation evaluated.
+// True when the surface of `ws` is the interpolation of its inputs and keeps no PATCHES: only a
+// few commands read them (docs/kernels.md), which make them from the inputs.
+inline bool patches_made_when_read(const Workspace& ws) {
+  return ws.changes.derived && ws.patches.size() == 0 && ws.nocur > 1 && ws.nostr > 1 &&
+         ws.has_surface();
+}
+
+// PATCHES of the surface of `ws`: those it keeps, or made into `made` from the inputs
+// (patches_made_when_read), bit for bit those the interpolation evaluated.
 inline const Array& patches_of(const Workspace& ws, Array& made) {
-  if (!ws.changes.derived || ws.patches.size() > 0 || ws.nocur < 2 || ws.nostr < 2 ||
-      !ws.has_surface())
-    return ws.patches;
+  if (!patches_made_when_read(ws)) return ws.patches;
   made = surface_patches(surface_input(ws));
   return made;
 }

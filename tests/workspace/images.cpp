@@ -42,15 +42,21 @@ TEST_CASE("a deferred image is made once, at its first look; a failed make again
   CHECK(ref.recipe() == std::pair{std::uint64_t{5}, desim});
 }
 
-TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pass makes them") {
-  // 274 x 274 points: more than threads_for makes one part of (six numbers a point). The last
-  // curve zigzags: the highest points and the sharpest bends are in the last part.
+// 274 x 274 points: more than threads_for makes one part of (six numbers a point), and more than
+// DISPLAY COMBS takes at a time. The last curve zigzags: the highest points and the sharpest
+// bends are in the last rows.
+Workspace zigzag_surface() {
   Workspace ws = test::make_interpolated(40, 40, 6, 6);
   for (std::size_t j = 0; j < 40; ++j) ws.inppn.ravel[3 * (39 * 40 + j) + 2] += j % 2 ? 50 : 0;
   Surface s;
   REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
   ws.intpn = std::move(s.intpn);
-  const auto points = as_vec3(std::as_const(ws.intpn));
+  return ws;
+}
+
+TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pass makes them") {
+  const Workspace ws = zigzag_surface();
+  const auto points = as_vec3(ws.intpn);
   REQUIRE(threads_for(6 * points.size()) == cores());
   const View view{Projection::isometric, {3, 30, 0}};
   const Image image = comb_image(ws, view);
@@ -82,6 +88,31 @@ TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pas
           MutablePoint2View(xy.data(), ends.size()));
   REQUIRE(image.combs.size() == xy.size());
   CHECK(std::equal(xy.begin(), xy.end(), image.combs.ravel.begin()));
+}
+
+TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only among the points") {
+  const Workspace ws = zigzag_surface();
+  const auto points = as_vec3(ws.intpn);
+  Vec3 low = points[0], high = low;
+  for (const Vec3& p : points) {
+    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+  }
+  // Just above the highest point, over the first curve: outside the surface's box, inside the
+  // box of the combs (those above the zigzag's crests reach higher), but in the box of none of
+  // the rows DISPLAY COMBS projects at a time.
+  const View view{Projection::conic,
+                  {(low.x + high.x) / 2, low.y + 1, high.z + 1e-3 * (high.z - low.z)}};
+  CHECK_NOTHROW((void)surface_image(ws, view));
+  try {
+    (void)comb_image(ws, view);
+    FAIL("a view point among the combs was taken");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::view_inside_box);
+  }
+  // From far above, the same combs are drawn.
+  const View above{Projection::conic, {view.parameters[0], view.parameters[1], 100 * high.z}};
+  CHECK(comb_image(ws, above).combs.size() == 4 * points.size());
 }
 
 TEST_CASE("a projection that overflows is refused, naming the point, row or tangent it came from") {

@@ -73,14 +73,14 @@ Vec3 curvature_vector(Vec3 d1, Vec3 d2) {
   return (1 / speed2) * (d2 - (dot(d2, d1) / speed2) * d1);
 }
 
-Array grid_curvature(const SurfaceInput& in, const Array& patches) {
-  if (in.nocur == 1 || in.nostr == 1) return line_curvature(in);
+void grid_curvature_rows(const SurfaceInput& in, const Array& patches, std::size_t first,
+                         std::size_t last, double* out, const PatchSource* source) {
   const GridShape shape = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
-  require_shape("PATCHES", &patches,
-                {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
-  Array out = Array::for_output({shape.rows, shape.cols, 6});  // every number written below
+  if (!source)
+    require_shape("PATCHES", &patches,
+                  {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
   const std::size_t pc = std::size_t(in.nostr) - 1;
-  // The blending functions of every column once: columns share them row after row.
+  // The blending functions of every column once: the rows share them.
   std::vector<Blend> columns(shape.cols);
   std::vector<std::size_t> column_patch(shape.cols);
   for (std::size_t j = 0; j < shape.cols; ++j) {
@@ -88,42 +88,59 @@ Array grid_curvature(const SurfaceInput& in, const Array& patches) {
     columns[j] = blend(at.s);
     column_patch[j] = at.patch;
   }
+  // A row of patch matrices made from `source` when it is needed, in `made`.
+  std::vector<double> made(source ? pc * 48 : 0);
+  std::size_t made_row = std::size_t(-1);
+  // Per patch of the row, M times v's blends and their derivatives, per coordinate: then each
+  // point costs four products of length 4 per coordinate.
+  std::vector<double> mv(pc * 3 * 3 * 4);
+  for (std::size_t i = first; i < last; ++i) {
+    const Place row = place(i, std::size_t(in.nocur), std::size_t(in.intcu));
+    const Blend v = blend(row.s);
+    if (source && made_row != row.patch) {
+      (void)coons_patch_row(*source, row.patch, made.data());  // finite: the surface was made
+      made_row = row.patch;
+    }
+    const double* patch_row = source ? made.data() : patches.data() + 48 * row.patch * pc;
+    for (std::size_t j = 0; j < pc; ++j) {
+      const double* m = patch_row + 48 * j;
+      double* out_j = mv.data() + 36 * j;
+      for (const double* b : {v.f, v.d1, v.d2}) {
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 4; ++r, ++out_j) {
+            const double* mr = m + 16 * c + 4 * r;
+            *out_j = mr[0] * b[0] + mr[1] * b[1] + mr[2] * b[2] + mr[3] * b[3];
+          }
+      }
+    }
+    double* o = out + 6 * shape.cols * (i - first);
+    for (std::size_t j = 0; j < shape.cols; ++j, o += 6) {
+      const Blend& u = columns[j];
+      const double* f = mv.data() + 36 * column_patch[j];  // M F(v)
+      const double *f1 = f + 12, *f2 = f + 24;             // M F'(v), M F''(v)
+      auto times = [](const double* a, const double* mb) {
+        double x[3];
+        for (int c = 0; c < 3; ++c)
+          x[c] =
+              a[0] * mb[4 * c] + a[1] * mb[4 * c + 1] + a[2] * mb[4 * c + 2] + a[3] * mb[4 * c + 3];
+        return Vec3{x[0], x[1], x[2]};
+      };
+      // u runs along the curves, v along the stringers (docs/kernels.md).
+      store(o, curvature_vector(times(u.d1, f), times(u.d2, f)));
+      store(o + 3, curvature_vector(times(u.f, f1), times(u.f, f2)));
+    }
+  }
+}
+
+Array grid_curvature(const SurfaceInput& in, const Array& patches) {
+  if (in.nocur == 1 || in.nostr == 1) return line_curvature(in);
+  const GridShape shape = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
+  require_shape("PATCHES", &patches,
+                {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
+  Array out = Array::for_output({shape.rows, shape.cols, 6});  // every number written below
   parallel_for(shape.rows, threads_for(shape.rows * shape.cols * 6),
                [&](std::size_t first, std::size_t last) {
-                 // Per patch of the row, M times v's blends and their derivatives, per
-                 // coordinate: then each point costs four products of length 4 per coordinate.
-                 std::vector<double> mv(pc * 3 * 3 * 4);
-                 for (std::size_t i = first; i < last; ++i) {
-                   const Place row = place(i, std::size_t(in.nocur), std::size_t(in.intcu));
-                   const Blend v = blend(row.s);
-                   for (std::size_t j = 0; j < pc; ++j) {
-                     const double* m = patches.data() + 48 * (row.patch * pc + j);
-                     double* out_j = mv.data() + 36 * j;
-                     for (const double* b : {v.f, v.d1, v.d2}) {
-                       for (int c = 0; c < 3; ++c)
-                         for (int r = 0; r < 4; ++r, ++out_j) {
-                           const double* mr = m + 16 * c + 4 * r;
-                           *out_j = mr[0] * b[0] + mr[1] * b[1] + mr[2] * b[2] + mr[3] * b[3];
-                         }
-                     }
-                   }
-                   double* o = out.data() + 6 * shape.cols * i;
-                   for (std::size_t j = 0; j < shape.cols; ++j, o += 6) {
-                     const Blend& u = columns[j];
-                     const double* f = mv.data() + 36 * column_patch[j];  // M F(v)
-                     const double *f1 = f + 12, *f2 = f + 24;             // M F'(v), M F''(v)
-                     auto times = [](const double* a, const double* mb) {
-                       double x[3];
-                       for (int c = 0; c < 3; ++c)
-                         x[c] = a[0] * mb[4 * c] + a[1] * mb[4 * c + 1] + a[2] * mb[4 * c + 2] +
-                                a[3] * mb[4 * c + 3];
-                       return Vec3{x[0], x[1], x[2]};
-                     };
-                     // u runs along the curves, v along the stringers (docs/kernels.md).
-                     store(o, curvature_vector(times(u.d1, f), times(u.d2, f)));
-                     store(o + 3, curvature_vector(times(u.f, f1), times(u.f, f2)));
-                   }
-                 }
+                 grid_curvature_rows(in, patches, first, last, out.data() + 6 * shape.cols * first);
                });
   return out;
 }

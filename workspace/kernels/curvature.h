@@ -3,6 +3,7 @@
 #pragma once
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/coons.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
 
@@ -20,5 +21,11 @@ Vec3 curvature_vector(Vec3 d1, Vec3 d2);
 // direction has no curvature. `patches` is PATCHES of `input` (not read for a single line). Throws
 // DataError for arrays of another shape.
 Array grid_curvature(const SurfaceInput& input, const Array& patches);
+
+// The same for rows [first, last) of INTPN alone, into `out` (6 (last - first) cols numbers), on
+// the calling thread: for work on a large grid a few rows at a time. Not for a single line. With
+// `source`, each row of patch matrices is made from it as it is needed and `patches` is not read.
+void grid_curvature_rows(const SurfaceInput& input, const Array& patches, std::size_t first,
+                         std::size_t last, double* out, const PatchSource* source = nullptr);
 
 }  // namespace igds

@@ -1,7 +1,9 @@
 #include "workspace/kernels/surface.h"
 
+#include <cassert>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
@@ -153,26 +155,32 @@ std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& ou
     out = std::move(apart);
     return error;
   }
-  const auto points = as_vec3(*input.inppn);
-  // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
-  const Array twists =
-      input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
-  const GridTangents tangents = grid_tangents(input.nocur, input.nostr, points, *input.inptg);
+  const PatchMaker maker(input);
+  const PatchSource& source = maker.source();
   const std::size_t patch_numbers =
       std::size_t(input.nocur - 1) * std::size_t(input.nostr - 1) * 48;
   if (patches == PatchesOut::dropped) {
     out.patches = Array();
-    const FitResult made = fit(
-        input.intcu, input.intst,
-        {std::size_t(input.nocur), std::size_t(input.nostr), points, &tangents, as_vec3(twists)},
-        out.intpn);
+    const FitResult made = fit(input.intcu, input.intst, source, out.intpn);
     return not_finite(patch_numbers, made.patch_not_finite, out.intpn, made.intpn_not_finite);
   }
-  const std::size_t kp =
-      coons_patches(input.nocur, input.nostr, points, tangents, out.patches, as_vec3(twists));
-  const std::size_t ki =
-      fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches, points, out.intpn);
+  const std::size_t kp = coons_patches(input.nocur, input.nostr, source.points, *source.tangents,
+                                       out.patches, source.twists);
+  const std::size_t ki = fit(input.nocur, input.nostr, input.intcu, input.intst, out.patches,
+                             source.points, out.intpn);
   return not_finite(patch_numbers, kp, out.intpn, ki);
+}
+
+PatchMaker::PatchMaker(const SurfaceInput& input) {
+  check_grid(input);
+  check_tangents(input);
+  assert(input.nocur > 1 && input.nostr > 1);
+  const auto points = as_vec3(*input.inppn);
+  // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
+  if (input.marks_twists) twists_ = marks_twists(input.nocur, input.nostr, points);
+  tangents_ = grid_tangents(input.nocur, input.nostr, points, *input.inptg);
+  source_ = {std::size_t(input.nocur), std::size_t(input.nostr), points, &tangents_,
+             as_vec3(std::as_const(twists_))};
 }
 
 Array surface_patches(const SurfaceInput& input) {
@@ -180,12 +188,11 @@ Array surface_patches(const SurfaceInput& input) {
   check_tangents(input);
   Array patches({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
   if (input.nocur == 1 || input.nostr == 1) return patches;
-  const auto points = as_vec3(*input.inppn);
-  const Array twists =
-      input.marks_twists ? marks_twists(input.nocur, input.nostr, points) : Array{};
-  (void)coons_patches(input.nocur, input.nostr, points,
-                      grid_tangents(input.nocur, input.nostr, points, *input.inptg), patches,
-                      as_vec3(twists));  // finite: they were when the surface was made
+  const PatchMaker maker(input);
+  const PatchSource& source = maker.source();
+  // Finite: they were when the surface was made.
+  (void)coons_patches(input.nocur, input.nostr, source.points, *source.tangents, patches,
+                      source.twists);
   return patches;
 }
 

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/vec3.h"
 
@@ -45,6 +46,22 @@ LineSpline line_spline(const SurfaceInput& in);
 // tangent (naming the point), shapes that do not match. A result that overflowed is returned as
 // it is (interpolate_into says so).
 Surface interpolate(const SurfaceInput& input);
+
+// What makes the patch matrices of a grid (not a single curve or stringer) a row at a time
+// (coons.h, PatchSource): the tangents of its input points and its twists, made here. Throws
+// DataError as interpolate does.
+class PatchMaker {
+ public:
+  explicit PatchMaker(const SurfaceInput& input);
+  PatchMaker(const PatchMaker&) = delete;  // the source points into the maker
+  PatchMaker& operator=(const PatchMaker&) = delete;
+  const PatchSource& source() const { return source_; }
+
+ private:
+  GridTangents tangents_;
+  Array twists_;
+  PatchSource source_;
+};
 
 // COONS alone: the PATCHES interpolate keeps, for a surface made with PatchesOut::dropped whose
 // patches are asked for later. Throws DataError as interpolate does.
