@@ -229,17 +229,16 @@ Image comb_image(const Workspace& ws, const View& view) {
   // (project_image), before anything is projected: their box first.
   const Vec3 eye{view.parameters[0], view.parameters[1], view.parameters[2]};
   if (view.projection == Projection::conic) {
-    std::vector<Box> ends(parts, Box{eye, eye});
-    std::vector<char> some(parts, 0);
+    auto add = [](std::optional<Box>& box, Vec3 p) { box ? box->add(p) : void(box = Box{p, p}); };
+    std::vector<std::optional<Box>> ends(parts);
     by_rows([&](unsigned part, std::size_t first, std::size_t last, double* bends) {
       to_ends(first, last, bends);
-      if (!some[part]) ends[part] = Box{Vec3::load(bends), Vec3::load(bends)}, some[part] = 1;
       for (std::size_t k = 0; k < 2 * (last - first) * cols; ++k)
-        ends[part].add(Vec3::load(bends + 3 * k));
+        add(ends[part], Vec3::load(bends + 3 * k));
     });
     std::optional<Box> all;
-    for (unsigned part = 0; part < parts; ++part)
-      if (some[part]) all ? all->add(ends[part]) : void(all = ends[part]);
+    for (const std::optional<Box>& box : ends)
+      if (box) add(all, box->low), add(all, box->high);
     if (all && all->low.x <= eye.x && eye.x <= all->high.x && all->low.y <= eye.y &&
         eye.y <= all->high.y && all->low.z <= eye.z && eye.z <= all->high.z)
       throw DataError(DataError::Problem::view_inside_box);
