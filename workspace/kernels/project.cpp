@@ -94,7 +94,9 @@ template <bool conic = false, class Image>
 Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye = {},
                 Vec3 ahead = {}) {
   const std::size_t n = in.size();
-  const unsigned parts = threads_for(2 * n);
+  // Counted in points: a point's image costs about what a number costs most kernels (a few
+  // nanoseconds), so that the 250,000 input points of a large grid stay on one thread.
+  const unsigned parts = threads_for(n);
   std::vector<Pass> found(parts, Pass{n});
   in_parallel(parts, [&](unsigned part) {
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
