@@ -161,7 +161,7 @@ Image comb_image(const Workspace& ws, const View& view) {
   require_shape("INTPN", &ws.intpn, {shape.rows, shape.cols, 3});
   const std::size_t rows = shape.rows, cols = shape.cols;
   const auto points = as_vec3(ws.intpn);
-  // A single curve or stringer's curvature is made whole (grid_curvature_rows is for grids); a
+  // A single curve or stringer's curvature is made whole (CurvatureRows is for grids); a
   // grid's PATCHES are read where the workspace keeps them, or made a row at a time.
   const bool line = ws.nocur == 1 || ws.nostr == 1;
   const Array line_bends = line ? grid_curvature(in, ws.patches) : Array{};
@@ -170,13 +170,17 @@ Image comb_image(const Workspace& ws, const View& view) {
   const PatchSource* source = maker ? &maker->source() : nullptr;
   // The curvature vectors (6 numbers a point) are made a few rows at a time, on every core, and
   // never kept whole (192 MB at 4 M points): `each(part, first, last, bends)` has rows [first,
-  // last) in `bends`. About 32,000 points at a time, so that their projection runs where it is
-  // called (kernels/project.h).
+  // last) in `bends`. About 8,000 points at a time (their 384 KB stay in a core's cache while
+  // they are read), whole rows of patches (each made once).
   const unsigned parts = threads_for(6 * points.size());
-  const std::size_t chunk = std::max<std::size_t>(1, (std::size_t(1) << 15) / cols);
+  const std::size_t patch_rows = std::size_t(ws.intcu) + 1;
+  const std::size_t chunk =
+      std::max<std::size_t>(1, (std::size_t(1) << 13) / cols / patch_rows) * patch_rows;
   auto by_rows = [&](const auto& each) {
     in_parallel(parts, [&](unsigned part) {
       std::vector<double> bends(6 * cols * std::min(chunk, rows));
+      std::optional<CurvatureRows> curvature;
+      if (!line) curvature.emplace(in, ws.patches, source);
       const std::size_t end = rows * (part + 1) / parts;
       for (std::size_t first = rows * part / parts; first < end; first += chunk) {
         const std::size_t last = std::min(end, first + chunk);
@@ -184,77 +188,105 @@ Image comb_image(const Workspace& ws, const View& view) {
           std::copy(line_bends.data() + 6 * cols * first, line_bends.data() + 6 * cols * last,
                     bends.data());
         else
-          grid_curvature_rows(in, ws.patches, first, last, bends.data(), source);
+          (*curvature)(first, last, bends.data());
         each(part, first, last, bends.data());
       }
     });
   };
-  // The box of the points and the largest curvature.
-  struct Box {
-    Vec3 low, high;
-    double most = 0;
-    void add(Vec3 p) {
-      low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-      high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-    }
-    void add(const Box& b) {
-      add(b.low);
-      add(b.high);
-      most = std::max(most, b.most);
-    }
+  // The box of the points, the largest curvature and, for a parallel projection, the image of
+  // every curvature vector in place of its comb's. Squares are compared (a curvature whose square
+  // overflows is measured as it is).
+  const bool parallel = view.projection != Projection::conic;
+  image.combs = Array::for_output({rows, cols, 4});  // every comb's image is written below
+  struct Found {
+    Box3 box;
+    double most2 = 0, most = 0;
   };
-  std::vector<Box> found(parts, Box{points[0], points[0]});
+  std::vector<Found> found(parts);
+  // A parallel projection is linear (its map has no constant term, kernels/project.h).
+  const ProjectiveMap map = parallel ? projection_map(view, {}) : ProjectiveMap{};
   by_rows([&](unsigned part, std::size_t first, std::size_t last, const double* bends) {
-    for (std::size_t k = first * cols; k < last * cols; ++k) {
-      found[part].add(points[k]);
+    Found& f = found[part];
+    double* xy = image.combs.data() + 4 * cols * first;
+    for (std::size_t k = 0; k < (last - first) * cols; ++k) {
+      f.box.add(points[first * cols + k]);
       for (std::size_t d = 0; d < 2; ++d) {
-        const double bend = norm(Vec3::load(bends + 6 * (k - first * cols) + 3 * d));
-        if (std::isfinite(bend)) found[part].most = std::max(found[part].most, bend);
+        const Vec3 bend = Vec3::load(bends + 6 * k + 3 * d);
+        if (parallel) {
+          const auto& m = map.m;
+          xy[4 * k + 2 * d] = m[0][0] * bend.x + m[0][1] * bend.y + m[0][2] * bend.z;
+          xy[4 * k + 2 * d + 1] = m[1][0] * bend.x + m[1][1] * bend.y + m[1][2] * bend.z;
+        }
+        const double bend2 = dot(bend, bend);
+        if (bend2 <= f.most2) continue;
+        if (std::isfinite(bend2))
+          f.most2 = bend2;
+        else if (const double length = norm(bend); std::isfinite(length))
+          f.most = std::max(f.most, length);
       }
     }
   });
-  for (const Box& b : found) found[0].add(b);
-  const Vec3 size = found[0].high - found[0].low;
-  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), found[0].most);
-  // The comb's end in space, away from the centre of curvature (so that a comb stands outside
-  // the surface's convex side and combs do not cross in a tight bend), written over its vector.
-  auto to_ends = [&](std::size_t first, std::size_t last, double* bends) {
-    for (std::size_t k = first * cols; k < last * cols; ++k)
-      for (std::size_t d = 0; d < 2; ++d) {
-        double* at = bends + 6 * (k - first * cols) + 3 * d;
-        (points[k] - image.comb_scale * Vec3::load(at)).store(at);
-      }
+  Box3 box;
+  double most = 0;
+  for (const Found& f : found) {
+    box.add(f.box);
+    most = std::max({most, std::sqrt(f.most2), f.most});
+  }
+  const Vec3 size = box.hi - box.lo;
+  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  const double scale = image.comb_scale;
+  // The first comb (two a point) whose image is not finite, named by its point of INTPN.
+  std::atomic<std::size_t> not_finite{2 * points.size()};
+  auto check = [&](std::size_t first_comb, std::size_t count, const double* xy) {
+    const std::size_t bad = first_not_finite(xy, 2 * count);
+    if (bad < 2 * count) keep_least(not_finite, first_comb + bad / 2);
   };
-  // CONIC refuses a view point inside the box of the combs' ends, as for any image
-  // (project_image), before anything is projected: their box first.
-  const Vec3 eye{view.parameters[0], view.parameters[1], view.parameters[2]};
-  if (view.projection == Projection::conic) {
-    auto add = [](std::optional<Box>& box, Vec3 p) { box ? box->add(p) : void(box = Box{p, p}); };
-    std::vector<std::optional<Box>> ends(parts);
+  if (parallel) {
+    // The image of a comb's end p - s k is the image of p less s times that of k: the curvature
+    // is made once (docs/kernels.md, "Curvature").
+    parallel_for(rows, parts, [&](std::size_t first, std::size_t last) {
+      double* comb = image.combs.data() + 4 * cols * first;
+      const double* at = image.points.data() + 2 * cols * first;
+      const std::size_t n = 4 * (last - first) * cols;
+      // A block at a time, checked while it is in the cache.
+      for (std::size_t from = 0; from < n; from += 4096) {
+        const std::size_t to = std::min(n, from + 4096);
+        for (std::size_t k = from; k < to; ++k)
+          comb[k] = at[(k >> 2) * 2 + (k & 1)] - scale * comb[k];
+        check(2 * cols * first + from / 2, (to - from) / 2, comb + from);
+      }
+    });
+  } else {
+    // The comb's end in space, away from the centre of curvature (so that a comb stands outside
+    // the surface's convex side and combs do not cross in a tight bend), written over its vector.
+    auto to_ends = [&](std::size_t first, std::size_t last, double* bends) {
+      for (std::size_t k = first * cols; k < last * cols; ++k)
+        for (std::size_t d = 0; d < 2; ++d) {
+          double* at = bends + 6 * (k - first * cols) + 3 * d;
+          (points[k] - scale * Vec3::load(at)).store(at);
+        }
+    };
+    // CONIC refuses a view point inside the box of the combs' ends, as for any image
+    // (project_image), before anything is projected: their box first.
+    std::vector<Box3> ends(parts);
     by_rows([&](unsigned part, std::size_t first, std::size_t last, double* bends) {
       to_ends(first, last, bends);
       for (std::size_t k = 0; k < 2 * (last - first) * cols; ++k)
-        add(ends[part], Vec3::load(bends + 3 * k));
+        ends[part].add(Vec3::load(bends + 3 * k));
     });
-    std::optional<Box> all;
-    for (const std::optional<Box>& box : ends)
-      if (box) add(all, box->low), add(all, box->high);
-    if (all && all->low.x <= eye.x && eye.x <= all->high.x && all->low.y <= eye.y &&
-        eye.y <= all->high.y && all->low.z <= eye.z && eye.z <= all->high.z)
+    Box3 all;
+    for (const Box3& b : ends) all.add(b);
+    if (all.contains({view.parameters[0], view.parameters[1], view.parameters[2]}))
       throw DataError(DataError::Problem::view_inside_box);
+    const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
+    by_rows([&](unsigned, std::size_t first, std::size_t last, double* bends) {
+      to_ends(first, last, bends);
+      const std::size_t n = 2 * (last - first) * cols;
+      double* xy = image.combs.data() + 4 * cols * first;
+      (void)project_image(view, centre, Vec3View(bends, n), MutablePoint2View(xy, n));
+      check(2 * cols * first, n, xy);
+    });
   }
-  image.combs = Array::for_output({rows, cols, 4});  // every comb's image is written below
-  const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
-  std::atomic<std::size_t> not_finite{2 * points.size()};
-  by_rows([&](unsigned, std::size_t first, std::size_t last, double* bends) {
-    to_ends(first, last, bends);
-    const std::size_t n = 2 * (last - first) * cols;
-    const ProjectedImage f =
-        project_image(view, centre, Vec3View(bends, n),
-                      MutablePoint2View(image.combs.data() + 4 * cols * first, n));
-    if (f.not_finite < n) keep_least(not_finite, 2 * cols * first + f.not_finite);
-  });
-  // A comb that overflowed is named by its point of INTPN (two combs a point).
   if (not_finite.load() < 2 * points.size())
     check_projected(not_finite.load() / 2, points.size(), "INTPN", cols);
   return image;
@@ -267,7 +299,7 @@ Image picture_image(std::string name, std::string text, const View& view) {
 
 Image picture_image(std::string name, std::string text, const Drawing3& drawing, const View& view) {
   const Box3 box = bounding_box(drawing);
-  const Vec3 centre = box.lo.x <= box.hi.x ? box.centre() : Vec3{};
+  const Vec3 centre = box.empty() ? Vec3{} : box.centre();
   if (view.projection == Projection::conic &&
       box.contains({view.parameters[0], view.parameters[1], view.parameters[2]}))
     throw DataError(DataError::Problem::view_inside_box);

@@ -58,46 +58,65 @@ TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pas
   const Workspace ws = zigzag_surface();
   const auto points = as_vec3(ws.intpn);
   REQUIRE(threads_for(6 * points.size()) == cores());
-  const View view{Projection::isometric, {3, 30, 0}};
-  const Image image = comb_image(ws, view);
-  // One pass over the points: the box, the largest curvature, then each comb's end.
+  // One pass over the whole grid: the box, the largest curvature, each comb's end p - s k.
   Array made;
-  Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
-  Vec3 low = points[0], high = low;
+  const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  const auto bend = as_vec3(bends);  // two a point: the curve's, the stringer's
+  Box3 box;
   double most = 0;
   std::size_t where = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    low = {std::min(low.x, points[k].x), std::min(low.y, points[k].y),
-           std::min(low.z, points[k].z)};
-    high = {std::max(high.x, points[k].x), std::max(high.y, points[k].y),
-            std::max(high.z, points[k].z)};
-    for (std::size_t d = 0; d < 2; ++d) {
-      const double bend = norm(Vec3::load(bends.data() + 6 * k + 3 * d));
-      if (bend > most) most = bend, where = k;
-    }
+    box.add(points[k]);
+    for (std::size_t d = 0; d < 2; ++d)
+      if (norm(bend[2 * k + d]) > most) most = norm(bend[2 * k + d]), where = k;
   }
   CHECK(where >= points.size() / 2);
-  const Vec3 size = high - low;
-  CHECK(image.comb_scale == comb_scale_for(std::max({size.x, size.y, size.z}), most));
-  auto ends = as_vec3(bends);
-  for (std::size_t k = 0; k < points.size(); ++k)
-    for (std::size_t d = 0; d < 2; ++d)
-      ends[2 * k + d] = points[k] - image.comb_scale * Vec3(ends[2 * k + d]);
-  std::vector<double> xy(2 * ends.size());
-  project(view, bounding_box_centre(as_vec3(ws.inppn)), as_vec3(std::as_const(bends)),
-          MutablePoint2View(xy.data(), ends.size()));
-  REQUIRE(image.combs.size() == xy.size());
-  CHECK(std::equal(xy.begin(), xy.end(), image.combs.ravel.begin()));
+  const Vec3 size = box.hi - box.lo;
+  const double scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  std::vector<double> ends(bends.size());
+  for (std::size_t k = 0; k < bend.size(); ++k)
+    (points[k / 2] - scale * Vec3(bend[k])).store(ends.data() + 3 * k);
+  const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
+  auto seen = [&](const View& view, const double* in) {
+    std::vector<double> xy(2 * bend.size());
+    project(view, centre, Vec3View(in, bend.size()), MutablePoint2View(xy.data(), bend.size()));
+    return xy;
+  };
+  const View far_above{Projection::conic, {box.centre().x, box.centre().y, 100 * box.hi.z}};
+  for (const View& view :
+       {View{Projection::isometric, {3, 30, 0}}, View{Projection::assonometric, {110, 130, 120}},
+        View{Projection::orthogonal, {2, 0, 0}}, far_above}) {
+    CAPTURE(int(view.projection));
+    const Image image = comb_image(ws, view);
+    CHECK(image.comb_scale == scale);
+    const std::vector<double> xy = seen(view, ends.data());
+    REQUIRE(image.combs.size() == xy.size());
+    if (view.projection == Projection::conic) {
+      CHECK(std::equal(xy.begin(), xy.end(), image.combs.ravel.begin()));
+      continue;
+    }
+    // A parallel projection is linear: each comb is the image of its point less s times the
+    // image of its curvature vector (by the projection's map), the same as the image of its end
+    // within rounding.
+    const ProjectiveMap map = projection_map(view, {});
+    const double within = 1e-12 * std::max({size.x, size.y, size.z});
+    std::size_t same = 0, near = 0;
+    for (std::size_t k = 0; k < xy.size(); ++k) {
+      const double bent = map.apply(bend[k / 2])[k % 2];
+      const double comb = image.points.ravel[(k >> 2) * 2 + (k & 1)] - scale * bent;
+      same += image.combs.ravel[k] == comb;
+      near += std::abs(image.combs.ravel[k] - xy[k]) <= within;
+    }
+    CHECK(same == xy.size());
+    CHECK(near == xy.size());
+  }
 }
 
 TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only among the points") {
   const Workspace ws = zigzag_surface();
   const auto points = as_vec3(ws.intpn);
-  Vec3 low = points[0], high = low;
-  for (const Vec3& p : points) {
-    low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
-    high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
-  }
+  const Box3 box = bounding_box(points);
+  const Vec3 low = box.lo, high = box.hi;
   // Just above the highest point, over the first curve: outside the surface's box, inside the
   // box of the combs (those above the zigzag's crests reach higher), but in the box of none of
   // the rows DISPLAY COMBS projects at a time.
@@ -113,6 +132,16 @@ TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only am
   // From far above, the same combs are drawn.
   const View above{Projection::conic, {view.parameters[0], view.parameters[1], 100 * high.z}};
   CHECK(comb_image(ws, above).combs.size() == 4 * points.size());
+}
+
+TEST_CASE("DISPLAY COMBS CONIC from the origin, the surface away from it") {
+  Workspace ws = test::make_interpolated(3, 3, 1, 1);
+  for (double& x : ws.inppn.ravel) x += 100;
+  Surface s;
+  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
+  ws.intpn = std::move(s.intpn);
+  const View origin{Projection::conic, {0, 0, 0}};
+  CHECK(comb_image(ws, origin).combs.size() == 4 * ws.intpn.size() / 3);
 }
 
 TEST_CASE("a projection that overflows is refused, naming the point, row or tangent it came from") {
@@ -135,6 +164,43 @@ TEST_CASE("a projection that overflows is refused, naming the point, row or tang
   for (std::size_t c = 0; c < 3; ++c)
     huge.intpn.ravel[3 * (5 * 2 + 3) + c] = c == 1 ? -1.7e308 : 1.7e308;
   CHECK(refused([&] { return surface_image(huge, isometric); }) == "INTPN 3 4");
+}
+
+TEST_CASE("DISPLAY COMBS refuses a comb whose image overflows, naming its point") {
+  // Coordinates near the largest numbers and a peak at the middle point: the points' images are
+  // finite, the combs standing above the peak reach beyond the largest number.
+  Workspace ws = test::make_interpolated(3, 3, 3, 3);
+  for (double& x : ws.inppn.ravel) x *= 1e306;
+  ws.inppn.ravel[3 * 4 + 2] = 1.7e308;
+  Surface s;
+  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
+  ws.intpn = std::move(s.intpn);
+  const std::size_t cols = ws.intpn.shape[1];
+  // The first comb whose end is not finite, as one pass over the whole grid finds it.
+  Array made;
+  const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  const auto points = as_vec3(ws.intpn);
+  const auto bend = as_vec3(bends);
+  const Box3 box = bounding_box(points);
+  double most = 0;
+  for (std::size_t k = 0; k < bend.size(); ++k) most = std::max(most, norm(bend[k]));
+  const Vec3 size = box.hi - box.lo;
+  const double scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
+  std::size_t first = bend.size();
+  for (std::size_t k = 0; k < bend.size() && first == bend.size(); ++k)
+    if (!std::isfinite((points[k / 2] - scale * Vec3(bend[k])).z)) first = k;
+  REQUIRE(first < bend.size());
+  const View xz{Projection::orthogonal, {2, 0, 0}};
+  CHECK_NOTHROW((void)surface_image(ws, xz));
+  try {
+    (void)comb_image(ws, xz);
+    FAIL("a comb beyond the largest number was drawn");
+  } catch (const DataError& e) {
+    CHECK(e.problem == DataError::Problem::image_not_finite);
+    CHECK(e.variable == "INTPN");
+    CHECK(e.number == first / 2 / cols + 1);
+    CHECK(e.column == first / 2 % cols + 1);
+  }
 }
 
 TEST_CASE("images drawn from the same surface with the same DESIM are the same, unmade, unread") {

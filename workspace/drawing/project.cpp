@@ -64,15 +64,9 @@ namespace {
 
 template <class P>
 Box3 box_of(const Drawing<P>& drawing) {
-  const double inf = INFINITY;
-  Box3 box{{inf, inf, inf}, {-inf, -inf, -inf}};
-  for (const auto& item : drawing.items()) {
-    for (P point : drawing.points(item)) {
-      const Vec3 p = in_space(point);
-      box.lo = {std::min(box.lo.x, p.x), std::min(box.lo.y, p.y), std::min(box.lo.z, p.z)};
-      box.hi = {std::max(box.hi.x, p.x), std::max(box.hi.y, p.y), std::max(box.hi.z, p.z)};
-    }
-  }
+  Box3 box;
+  for (const auto& item : drawing.items())
+    for (P point : drawing.points(item)) box.add(in_space(point));
   return box;
 }
 

@@ -15,14 +15,7 @@ namespace igds {
 Drawing2 project(const Drawing3& drawing, const View& view, Vec3 centre);
 
 // The bounding box of every point of a drawing (polyline points, curve control points, marks and
-// texts); lo > hi when it has none.
-struct Box3 {
-  Vec3 lo, hi;
-  Vec3 centre() const { return {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2}; }
-  bool contains(Vec3 p) const {
-    return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
-  }
-};
+// texts); empty when it has none.
 Box3 bounding_box(const Drawing3& drawing);
 // The same for a drawing in the plane, at z = 0.
 Box3 bounding_box(const Drawing2& drawing);

@@ -37,6 +37,46 @@ Place place(std::size_t index, std::size_t inputs, std::size_t inserted) {
   return {patch, double(index - patch * step) / double(step)};
 }
 
+// a0 F0(s) + a1 F1(s) + a2 G0(s) + a3 G1(s) (docs/kernels.md) as c0 + c1 s + c2 s^2 + c3 s^3.
+struct Cubic {
+  double c0, c1, c2, c3;
+};
+Cubic cubic(const double a[4]) {
+  return {a[0], a[2], 3 * (a[1] - a[0]) - 2 * a[2] - a[3], 2 * (a[0] - a[1]) + a[2] + a[3]};
+}
+
+// curvature_vector(d1, d2) into out[0..3), written out for patch_curvature.
+inline void bend_into(const double* d1, const double* d2, double* out) {
+  const double speed2 = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
+  const double inverse = 1 / speed2;
+  const double t = (d2[0] * d1[0] + d2[1] * d1[1] + d2[2] * d1[2]) * inverse;
+  const double x = inverse * (d2[0] - t * d1[0]), y = inverse * (d2[1] - t * d1[1]),
+               z = inverse * (d2[2] - t * d1[2]);  // made in every lane, then chosen
+  const bool bends = speed2 > 0;
+  out[0] = bends ? x : 0.0;
+  out[1] = bends ? y : 0.0;
+  out[2] = bends ? z : 0.0;
+}
+
+// The curvature vectors of the points at u[0..n) of a patch: six numbers a point, into `out`
+// (u runs along the curves, v along the stringers). Written for the compiler to make the points
+// the lanes of the processor's vectors.
+void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::size_t n,
+                     double* out) {
+  for (std::size_t m = 0; m < n; ++m) {
+    const double s = u[m];
+    double du[3], duu[3], dv[3], dvv[3];
+    for (int c = 0; c < 3; ++c) {
+      du[c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
+      duu[c] = p.duu[1][c] * s + p.duu[0][c];
+      dv[c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
+      dvv[c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
+    }
+    bend_into(du, duu, out + 6 * m);
+    bend_into(dv, dvv, out + 6 * m + 3);
+  }
+}
+
 void store(double* out, Vec3 v) {
   v.store(out);
 }
@@ -70,64 +110,64 @@ Array line_curvature(const SurfaceInput& in) {
 Vec3 curvature_vector(Vec3 d1, Vec3 d2) {
   const double speed2 = dot(d1, d1);
   if (!(speed2 > 0)) return {};
-  return (1 / speed2) * (d2 - (dot(d2, d1) / speed2) * d1);
+  const double inverse = 1 / speed2;
+  return inverse * (d2 - (dot(d2, d1) * inverse) * d1);
 }
 
-void grid_curvature_rows(const SurfaceInput& in, const Array& patches, std::size_t first,
-                         std::size_t last, double* out, const PatchSource* source) {
-  const GridShape shape = intpn_shape(in.nocur, in.nostr, in.intcu, in.intst);
+CurvatureRows::CurvatureRows(const SurfaceInput& in, const Array& patches,
+                             const PatchSource* source)
+    : in_(in),
+      patches_(patches),
+      source_(source),
+      cols_(intpn_shape(in.nocur, in.nostr, in.intcu, in.intst).cols),
+      patches_in_row_(std::size_t(in.nostr) - 1),
+      step_(std::size_t(in.intst) + 1),
+      column_u_(step_ + 1),
+      made_(source ? 48 * patches_in_row_ : 0),
+      polynomials_(patches_in_row_) {
   if (!source)
     require_shape("PATCHES", &patches,
                   {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
-  const std::size_t pc = std::size_t(in.nostr) - 1;
-  // The blending functions of every column once: the rows share them.
-  std::vector<Blend> columns(shape.cols);
-  std::vector<std::size_t> column_patch(shape.cols);
-  for (std::size_t j = 0; j < shape.cols; ++j) {
-    const Place at = place(j, std::size_t(in.nostr), std::size_t(in.intst));
-    columns[j] = blend(at.s);
-    column_patch[j] = at.patch;
-  }
-  // A row of patch matrices made from `source` when it is needed, in `made`.
-  std::vector<double> made(source ? pc * 48 : 0);
-  std::size_t made_row = std::size_t(-1);
-  // Per patch of the row, M times v's blends and their derivatives, per coordinate: then each
-  // point costs four products of length 4 per coordinate.
-  std::vector<double> mv(pc * 3 * 3 * 4);
+  for (std::size_t k = 0; k <= step_; ++k) column_u_[k] = double(k) / double(step_);
+}
+
+void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out) {
+  const std::size_t pc = patches_in_row_;
   for (std::size_t i = first; i < last; ++i) {
-    const Place row = place(i, std::size_t(in.nocur), std::size_t(in.intcu));
+    const Place row = place(i, std::size_t(in_.nocur), std::size_t(in_.intcu));
     const Blend v = blend(row.s);
-    if (source && made_row != row.patch) {
-      (void)coons_patch_row(*source, row.patch, made.data());  // finite: the surface was made
-      made_row = row.patch;
+    if (source_ && made_row_ != row.patch) {
+      (void)coons_patch_row(*source_, row.patch, made_.data());  // finite: the surface was made
+      made_row_ = row.patch;
     }
-    const double* patch_row = source ? made.data() : patches.data() + 48 * row.patch * pc;
+    const double* patch_row = source_ ? made_.data() : patches_.data() + 48 * row.patch * pc;
     for (std::size_t j = 0; j < pc; ++j) {
       const double* m = patch_row + 48 * j;
-      double* out_j = mv.data() + 36 * j;
-      for (const double* b : {v.f, v.d1, v.d2}) {
-        for (int c = 0; c < 3; ++c)
-          for (int r = 0; r < 4; ++r, ++out_j) {
-            const double* mr = m + 16 * c + 4 * r;
-            *out_j = mr[0] * b[0] + mr[1] * b[1] + mr[2] * b[2] + mr[3] * b[3];
+      Polynomials& p = polynomials_[j];
+      for (int c = 0; c < 3; ++c) {
+        // a = M v-blends: the point's curve is a0 F0(u) + a1 F1(u) + a2 G0(u) + a3 G1(u).
+        double a[3][4];
+        for (int r = 0; r < 4; ++r) {
+          const double* mr = m + 16 * c + 4 * r;
+          for (int b = 0; b < 3; ++b) {
+            const double* w = b == 0 ? v.f : b == 1 ? v.d1 : v.d2;
+            a[b][r] = mr[0] * w[0] + mr[1] * w[1] + mr[2] * w[2] + mr[3] * w[3];
           }
+        }
+        const Cubic curve = cubic(a[0]), along = cubic(a[1]), bend = cubic(a[2]);
+        p.du[0][c] = curve.c1, p.du[1][c] = 2 * curve.c2, p.du[2][c] = 3 * curve.c3;
+        p.duu[0][c] = 2 * curve.c2, p.duu[1][c] = 6 * curve.c3;
+        p.dv[0][c] = along.c0, p.dv[1][c] = along.c1, p.dv[2][c] = along.c2;
+        p.dv[3][c] = along.c3;
+        p.dvv[0][c] = bend.c0, p.dvv[1][c] = bend.c1, p.dvv[2][c] = bend.c2;
+        p.dvv[3][c] = bend.c3;
       }
     }
-    double* o = out + 6 * shape.cols * (i - first);
-    for (std::size_t j = 0; j < shape.cols; ++j, o += 6) {
-      const Blend& u = columns[j];
-      const double* f = mv.data() + 36 * column_patch[j];  // M F(v)
-      const double *f1 = f + 12, *f2 = f + 24;             // M F'(v), M F''(v)
-      auto times = [](const double* a, const double* mb) {
-        double x[3];
-        for (int c = 0; c < 3; ++c)
-          x[c] =
-              a[0] * mb[4 * c] + a[1] * mb[4 * c + 1] + a[2] * mb[4 * c + 2] + a[3] * mb[4 * c + 3];
-        return Vec3{x[0], x[1], x[2]};
-      };
-      // u runs along the curves, v along the stringers (docs/kernels.md).
-      store(o, curvature_vector(times(u.d1, f), times(u.d2, f)));
-      store(o + 3, curvature_vector(times(u.f, f1), times(u.f, f2)));
+    // Every patch's columns: `step` of them, one more (u = 1) in the last patch.
+    double* o = out + 6 * cols_ * (i - first);
+    for (std::size_t j = 0; j < pc; ++j) {
+      const std::size_t n = j + 1 < pc ? step_ : step_ + 1;
+      patch_curvature(polynomials_[j], column_u_.data(), n, o + 6 * step_ * j);
     }
   }
 }
@@ -140,7 +180,7 @@ Array grid_curvature(const SurfaceInput& in, const Array& patches) {
   Array out = Array::for_output({shape.rows, shape.cols, 6});  // every number written below
   parallel_for(shape.rows, threads_for(shape.rows * shape.cols * 6),
                [&](std::size_t first, std::size_t last) {
-                 grid_curvature_rows(in, patches, first, last, out.data() + 6 * shape.cols * first);
+                 CurvatureRows(in, patches)(first, last, out.data() + 6 * shape.cols * first);
                });
   return out;
 }

@@ -2,6 +2,9 @@
 // "Curvature"): from the exact derivatives of the bicubic patches, not from differences of INTPN.
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/surface.h"
@@ -22,10 +25,33 @@ Vec3 curvature_vector(Vec3 d1, Vec3 d2);
 // DataError for arrays of another shape.
 Array grid_curvature(const SurfaceInput& input, const Array& patches);
 
-// The same for rows [first, last) of INTPN alone, into `out` (6 (last - first) cols numbers), on
-// the calling thread: for work on a large grid a few rows at a time. Not for a single line. With
-// `source`, each row of patch matrices is made from it as it is needed and `patches` is not read.
-void grid_curvature_rows(const SurfaceInput& input, const Array& patches, std::size_t first,
-                         std::size_t last, double* out, const PatchSource* source = nullptr);
+// The same for rows of INTPN, a few at a time, on the calling thread: for work on a large grid
+// (not for a single line). With `source`, each row of patch matrices is made from it as it is
+// needed and `patches` is not read. One per thread: it keeps its buffers, and the row of patch
+// matrices it made last, from one call to the next. Throws DataError for arrays of another shape.
+class CurvatureRows {
+ public:
+  CurvatureRows(const SurfaceInput& input, const Array& patches,
+                const PatchSource* source = nullptr);
+  // Rows [first, last) into `out` (6 (last - first) cols numbers).
+  void operator()(std::size_t first, std::size_t last, double* out);
+
+  // Per patch of a row and per coordinate, the polynomials in u of the curve's first and second
+  // derivatives, then of the stringer's (the curves of the first and second derivatives in v),
+  // lowest power first.
+  struct Polynomials {
+    double du[3][3], duu[2][3], dv[4][3], dvv[4][3];
+  };
+
+ private:
+  SurfaceInput in_;
+  const Array& patches_;
+  const PatchSource* source_;
+  std::size_t cols_, patches_in_row_, step_;
+  std::vector<double> column_u_;  // u of a patch's columns, the last patch's last at u = 1
+  std::vector<double> made_;      // the row of patch matrices made last from `source`
+  std::size_t made_row_ = std::size_t(-1);
+  std::vector<Polynomials> polynomials_;
+};
 
 }  // namespace igds

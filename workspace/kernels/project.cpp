@@ -362,25 +362,19 @@ void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2Vie
               out);
 }
 
+Box3 bounding_box(Vec3View points) {
+  Box3 box;
+  for (const Vec3& p : points) box.add(p);
+  return box;
+}
+
 Vec3 bounding_box_centre(Vec3View points) {
-  if (points.empty()) return {};
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& p : points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
-  }
-  // Halves first: the sum of two large coordinates could overflow.
-  return {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2};
+  const Box3 box = bounding_box(points);
+  return box.empty() ? Vec3{} : box.centre();
 }
 
 bool inside_bounding_box(Vec3View points, Vec3 p) {
-  if (points.empty()) return false;
-  Vec3 lo = points[0], hi = points[0];
-  for (const Vec3& q : points) {
-    lo = {std::min(lo.x, q.x), std::min(lo.y, q.y), std::min(lo.z, q.z)};
-    hi = {std::max(hi.x, q.x), std::max(hi.y, q.y), std::max(hi.z, q.z)};
-  }
-  return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
+  return bounding_box(points).contains(p);
 }
 
 }  // namespace igds

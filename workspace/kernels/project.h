@@ -77,6 +77,8 @@ void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2Vie
 bool isom_parameters_valid(double axis, double angle_degrees);
 bool asson_parameters_valid(std::array<double, 3> angles_degrees);
 
+// The bounding box of a set of points (empty for none).
+Box3 bounding_box(Vec3View points);
 // Centre of the bounding box of a set of points (the CONIC centre, the local origin).
 Vec3 bounding_box_centre(Vec3View points);
 // True when `p` lies inside (or on) the bounding box of `points`.

@@ -2,9 +2,11 @@
 // of the arrays of doubles that hold them (x y z, x y z, ...).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
+#include <limits>
 #include <span>
 #include <type_traits>
 
@@ -33,6 +35,25 @@ inline Vec3 cross(Vec3 a, Vec3 b) {
 inline double norm(Vec3 a) {
   return std::hypot(a.x, a.y, a.z);
 }
+
+// A box in space, its sides parallel to the axes: empty (lo above hi) until a point is added.
+struct Box3 {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  Vec3 lo{inf, inf, inf}, hi{-inf, -inf, -inf};
+  bool empty() const { return !(lo.x <= hi.x); }
+  void add(Vec3 p) {
+    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+  }
+  void add(const Box3& b) {
+    if (!b.empty()) add(b.lo), add(b.hi);
+  }
+  // Halves first: the sum of two large coordinates could overflow.
+  Vec3 centre() const { return {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2}; }
+  bool contains(Vec3 p) const {
+    return lo.x <= p.x && p.x <= hi.x && lo.y <= p.y && p.y <= hi.y && lo.z <= p.z && p.z <= hi.z;
+  }
+};
 
 struct Point2 {
   static constexpr std::size_t dimension = 2;
