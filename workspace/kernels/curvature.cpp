@@ -45,22 +45,8 @@ Cubic cubic(const double a[4]) {
   return {a[0], a[2], 3 * (a[1] - a[0]) - 2 * a[2] - a[3], 2 * (a[0] - a[1]) + a[2] + a[3]};
 }
 
-// curvature_vector(d1, d2) into out[0..3), written out for patch_curvature.
-inline void bend_into(const double* d1, const double* d2, double* out) {
-  const double speed2 = d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2];
-  const double inverse = 1 / speed2;
-  const double t = (d2[0] * d1[0] + d2[1] * d1[1] + d2[2] * d1[2]) * inverse;
-  const double x = inverse * (d2[0] - t * d1[0]), y = inverse * (d2[1] - t * d1[1]),
-               z = inverse * (d2[2] - t * d1[2]);  // made in every lane, then chosen
-  const bool bends = speed2 > 0;
-  out[0] = bends ? x : 0.0;
-  out[1] = bends ? y : 0.0;
-  out[2] = bends ? z : 0.0;
-}
-
 // The curvature vectors of the points at u[0..n) of a patch: six numbers a point, into `out`
-// (u runs along the curves, v along the stringers). Written for the compiler to make the points
-// the lanes of the processor's vectors.
+// (u runs along the curves, v along the stringers).
 void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::size_t n,
                      double* out) {
   for (std::size_t m = 0; m < n; ++m) {
@@ -72,8 +58,8 @@ void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::
       dv[c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
       dvv[c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
     }
-    bend_into(du, duu, out + 6 * m);
-    bend_into(dv, dvv, out + 6 * m + 3);
+    curvature_vector({du[0], du[1], du[2]}, {duu[0], duu[1], duu[2]}).store(out + 6 * m);
+    curvature_vector({dv[0], dv[1], dv[2]}, {dvv[0], dvv[1], dvv[2]}).store(out + 6 * m + 3);
   }
 }
 
