@@ -117,19 +117,23 @@ TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only am
   const auto points = as_vec3(ws.intpn);
   const Box3 box = bounding_box(points);
   const Vec3 low = box.lo, high = box.hi;
-  // Just above the highest point, over the first curve: outside the surface's box, inside the
-  // box of the combs (those above the zigzag's crests reach higher), but in the box of none of
-  // the rows DISPLAY COMBS projects at a time.
-  const View view{Projection::conic,
-                  {(low.x + high.x) / 2, low.y + 1, high.z + 1e-3 * (high.z - low.z)}};
-  CHECK_NOTHROW((void)surface_image(ws, view));
-  try {
-    (void)comb_image(ws, view);
-    FAIL("a view point among the combs was taken");
-  } catch (const DataError& e) {
-    CHECK(e.problem == DataError::Problem::view_inside_box);
+  // Just above the highest point: outside the surface's box, inside the box of the combs (those
+  // above the zigzag's crests reach higher). Over the first curve, in the box of none of the rows
+  // DISPLAY COMBS projects at a time; over the middle, looking down, the combs that reach above
+  // the eye are behind it too, and the report is still the box's.
+  const double z = high.z + 1e-3 * (high.z - low.z);
+  for (double y : {low.y + 1, (low.y + high.y) / 2}) {
+    const View view{Projection::conic, {(low.x + high.x) / 2, y, z}};
+    CHECK_NOTHROW((void)surface_image(ws, view));
+    try {
+      (void)comb_image(ws, view);
+      FAIL("a view point among the combs was taken");
+    } catch (const DataError& e) {
+      CHECK(e.problem == DataError::Problem::view_inside_box);
+    }
   }
   // From far above, the same combs are drawn.
+  const View view{Projection::conic, {(low.x + high.x) / 2, low.y + 1, z}};
   const View above{Projection::conic, {view.parameters[0], view.parameters[1], 100 * high.z}};
   CHECK(comb_image(ws, above).combs.size() == 4 * points.size());
 }
