@@ -5,15 +5,16 @@
 namespace igds {
 
 Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only) {
-  // The workspace's arrays are lent to the kernels only when they can be made again from its
-  // inputs (PATCHES and INTPN its own interpolation): a result refused after it was computed has
-  // overwritten them. FIT's patches, or those assigned in END APL, are never written over.
+  // INTPN is lent to the kernels only when it can be made again from the inputs (the surface is
+  // their interpolation): a result refused after it was computed has overwritten it. A refit
+  // reads the workspace's own PATCHES (FIT's, or those assigned in END APL), never written over;
+  // an interpolation makes none (they are made when read, workspace/state.h).
   const bool lend = ws.changes.derived && ws.has_surface();
   Surface surface;
-  if (lend || refit_only) surface.patches = std::move(ws.patches);
+  if (refit_only) surface.patches = std::move(ws.patches);
   if (lend) surface.intpn = std::move(ws.intpn);
   auto give_back = [&] {
-    if (lend || refit_only) ws.patches = std::move(surface.patches);
+    if (refit_only) ws.patches = std::move(surface.patches);
     if (lend) ws.intpn = std::move(surface.intpn);
   };
   // Inputs near the largest numbers can make a result that is not finite (the kernels find it as

@@ -298,7 +298,7 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
   if (same_surface) {
     surface = {std::move(ws.patches), std::move(ws.intpn)};
   } else if (to.nocur > 0) {
-    if (lend) surface = {std::move(ws.patches), std::move(ws.intpn)};
+    if (lend) surface.intpn = std::move(ws.intpn);
     try {
       if (auto overflow = interpolate_into(
               {to.nocur, to.nostr, to.intcu, to.intst, &to_inppn, &to_inptg, marks}, surface,
@@ -311,10 +311,7 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
         throw *overflow;
       }
     } catch (...) {
-      if (lend) {
-        ws.patches = std::move(surface.patches);
-        ws.intpn = std::move(surface.intpn);
-      }
+      if (lend) ws.intpn = std::move(surface.intpn);
       throw;
     }
   }
