@@ -206,7 +206,7 @@ Image comb_image(const Workspace& ws, const View& view) {
   // A parallel projection is linear (its map has no constant term, kernels/project.h).
   const ProjectiveMap map = parallel ? projection_map(view, {}) : ProjectiveMap{};
   by_rows([&](unsigned part, std::size_t first, std::size_t last, const double* bends) {
-    Found& f = found[part];
+    Found f = found[part];  // a copy, kept in registers: `xy` could alias found[part]
     double* xy = image.combs.data() + 4 * cols * first;
     for (std::size_t k = 0; k < (last - first) * cols; ++k) {
       f.box.add(points[first * cols + k]);
@@ -225,6 +225,7 @@ Image comb_image(const Workspace& ws, const View& view) {
           f.most = std::max(f.most, length);
       }
     }
+    found[part] = f;
   });
   Box3 box;
   double most = 0;
