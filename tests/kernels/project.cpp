@@ -244,6 +244,12 @@ TEST_CASE("project() is the four projections, and projection_map() the same as a
     project(view, centre, in, out);
     const ProjectiveMap map = projection_map(view, centre);
     CHECK(map.perspective == (view.projection == Projection::conic));
+    if (!map.perspective) {
+      // A parallel projection is linear, h = 1: DISPLAY COMBS relies on it.
+      CHECK(map.m[0][3] == 0);
+      CHECK(map.m[1][3] == 0);
+      CHECK((map.m[2][0] == 0 && map.m[2][1] == 0 && map.m[2][2] == 0 && map.m[2][3] == 1));
+    }
     for (std::size_t k = 0; k < in.size(); ++k) {
       auto h = map.apply(in[k]);
       CHECK(h[2] > 0);

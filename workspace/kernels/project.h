@@ -48,9 +48,10 @@ struct ProjectedImage {
 ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 
 // The same projection as a map of homogeneous coordinates: (X h, Y h, h) = M (x, y, z, 1). The
-// parallel projections have h = 1; CONIC has h the depth along the line of sight divided by D,
-// positive in front of the eye. A rational curve maps to a rational curve of the same degree with
-// its weights multiplied by h (the drawing's projection uses this to keep curves exact).
+// parallel projections are linear maps (M's last column is 0 0 1) with h = 1; CONIC has h the depth
+// along the line of sight divided by D, positive in front of the eye. A rational curve maps to a
+// rational curve of the same degree with its weights multiplied by h (the drawing's projection uses
+// this to keep curves exact).
 struct ProjectiveMap {
   double m[3][4] = {};
   bool perspective = false;
