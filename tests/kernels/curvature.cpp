@@ -80,6 +80,10 @@ TEST_CASE("the curvature vector: its length is the curvature, towards the centre
   const Vec3 same = curvature_vector({0, 3, 0}, {-9.0 / 4, 5, 0});
   CHECK(norm(same - k) < 1e-15);
   CHECK(norm(curvature_vector({0, 0, 0}, {1, 2, 3})) == 0);
+  // A derivative that overflowed gives no curvature to draw, not a zero one (DISPLAY COMBS then
+  // refuses the comb).
+  CHECK(!std::isfinite(norm(curvature_vector({NAN, 1, 0}, {1, 2, 3}))));
+  CHECK(!std::isfinite(norm(curvature_vector({1, 1, 0}, {INFINITY, 2, 3}))));
 }
 
 TEST_CASE("a circle's comb is constant: 1/R everywhere, towards the centre") {

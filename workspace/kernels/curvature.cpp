@@ -95,7 +95,7 @@ Array line_curvature(const SurfaceInput& in) {
 
 Vec3 curvature_vector(Vec3 d1, Vec3 d2) {
   const double speed2 = dot(d1, d1);
-  if (!(speed2 > 0)) return {};
+  if (speed2 == 0) return {};  // a derivative that is not finite makes one that is not
   const double inverse = 1 / speed2;
   return inverse * (d2 - (dot(d2, d1) * inverse) * d1);
 }

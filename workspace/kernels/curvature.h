@@ -14,7 +14,7 @@ namespace igds {
 
 // The curvature vector of a curve with first and second derivatives d1, d2 at a point: the
 // curvature times the unit normal towards the centre of curvature, (d2 - (d2.T)T) / |d1|^2 with
-// T = d1/|d1|; zero where the curve has no direction (d1 = 0).
+// T = d1/|d1|; zero where the curve has no direction (d1 = 0), not finite where d1 or d2 is not.
 Vec3 curvature_vector(Vec3 d1, Vec3 d2);
 
 // At every point of INTPN (rows x cols of intpn_shape), the curvature vector of the curve through
