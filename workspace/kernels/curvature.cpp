@@ -63,10 +63,6 @@ void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::
   }
 }
 
-void store(double* out, Vec3 v) {
-  v.store(out);
-}
-
 // A single curve or stringer: the spline of its points, arc by arc.
 Array line_curvature(const SurfaceInput& in) {
   const std::size_t n_points = std::size_t(in.nocur) * std::size_t(in.nostr);
@@ -86,7 +82,7 @@ Array line_curvature(const SurfaceInput& in) {
     const Blend b = blend(at.s);
     const Vec3 d1 = b.d1[0] * p0 + b.d1[1] * p1 + b.d1[2] * t0 + b.d1[3] * t1;
     const Vec3 d2 = b.d2[0] * p0 + b.d2[1] * p1 + b.d2[2] * t0 + b.d2[3] * t1;
-    store(out.data() + 6 * k + (curve ? 0 : 3), curvature_vector(d1, d2));
+    curvature_vector(d1, d2).store(out.data() + 6 * k + (curve ? 0 : 3));
   }
   return out;
 }

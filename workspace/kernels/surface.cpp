@@ -139,9 +139,9 @@ Surface interpolate(const SurfaceInput& input) {
 
 std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& out,
                                           PatchesOut patches) {
-  check_grid(input);
-  check_tangents(input);
   if (input.nocur == 1 || input.nostr == 1) {
+    check_grid(input);
+    check_tangents(input);
     Surface line;
     interpolate_line(input, line);
     out = std::move(line);
@@ -155,7 +155,7 @@ std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& ou
     out = std::move(apart);
     return error;
   }
-  const PatchMaker maker(input);
+  const PatchMaker maker(input);  // checks the inputs first
   const PatchSource& source = maker.source();
   const std::size_t patch_numbers =
       std::size_t(input.nocur - 1) * std::size_t(input.nostr - 1) * 48;
@@ -184,12 +184,14 @@ PatchMaker::PatchMaker(const SurfaceInput& input) {
 }
 
 Array surface_patches(const SurfaceInput& input) {
-  check_grid(input);
-  check_tangents(input);
-  Array patches({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
-  if (input.nocur == 1 || input.nostr == 1) return patches;
-  const PatchMaker maker(input);
+  if (input.nocur == 1 || input.nostr == 1) {
+    check_grid(input);
+    check_tangents(input);
+    return Array({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
+  }
+  const PatchMaker maker(input);  // checks the inputs first
   const PatchSource& source = maker.source();
+  Array patches({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
   // Finite: they were when the surface was made.
   (void)coons_patches(input.nocur, input.nostr, source.points, *source.tangents, patches,
                       source.twists);
