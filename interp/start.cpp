@@ -24,7 +24,7 @@
 #include "interp/ws2250.h"
 #include "workspace/disk/session.h"
 #include "workspace/error.h"
-#include "workspace/kernels/fit.h"
+#include "workspace/kernels/processor.h"
 
 namespace igds {
 
@@ -77,8 +77,8 @@ int igds_main(int argc, char** argv) {
     return 0;
   }
   if (line.version) {
-    fmt::print("igds {}\nbuilt with {}, {}\nFIT loops: {}\n", IGDS_VERSION, IGDS_COMPILER,
-               IGDS_BUILD_TYPE, fit_code_in_use());
+    fmt::print("igds {}\nbuilt with {}, {}\nkernels: {}\n", IGDS_VERSION, IGDS_COMPILER,
+               IGDS_BUILD_TYPE, kernel_code_in_use());
     return 0;
   }
   // The 2250 workspace needs the cross-hair of a Tek terminal in GIN mode (xterm's Tek window).

@@ -6,11 +6,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include "tests/kernels/helpers.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
+#include "workspace/kernels/processor.h"
 #include "workspace/kernels/surface.h"
 
 using namespace igds;
@@ -200,6 +202,48 @@ TEST_CASE("the curvature is the patches' own: against differences of an independ
       CHECK(norm(bend(bends, k, 0) - curve) < 1e-4 * (1 + norm(curve)));
       CHECK(norm(bend(bends, k, 1) - stringer) < 1e-4 * (1 + norm(stringer)));
     }
+}
+
+namespace {
+
+bool same_bits(const double* a, const double* b) {
+  return std::memcmp(a, b, 3 * sizeof(double)) == 0;
+}
+
+}  // namespace
+
+TEST_CASE("four points at a time and one at a time, vector and baseline code: the same bits") {
+  const test::Grid g = test::wavy_grid(5, 6, 11);
+  // 3 and 6 points a patch: u = 1/3 is one point at a time in the first (fewer than four in a
+  // patch), the third of the first four in the second. The last patch has one point more.
+  const SurfaceInput third{g.nocur, g.nostr, 2, 2, &g.inppn, &g.inptg};
+  const SurfaceInput sixth{g.nocur, g.nostr, 2, 5, &g.inppn, &g.inptg};
+  const Array patches = interpolate(third).patches;
+  const Array by3 = grid_curvature(third, patches), by6 = grid_curvature(sixth, patches);
+  const std::size_t cols3 = intpn_shape(g.nocur, g.nostr, 2, 2).cols;
+  const std::size_t cols6 = intpn_shape(g.nocur, g.nostr, 2, 5).cols;
+  const std::size_t rows = intpn_shape(g.nocur, g.nostr, 2, 2).rows;
+  for (std::size_t i = 0; i < rows; ++i)
+    for (std::size_t j = 0; j < cols3; ++j)
+      for (std::size_t d = 0; d < 6; d += 3) {
+        CAPTURE(i);
+        CAPTURE(j);
+        CHECK(same_bits(by3.data() + 6 * (i * cols3 + j) + d,
+                        by6.data() + 6 * (i * cols6 + 2 * j) + d));
+      }
+  // A grid whose points coincide has no direction anywhere: every curvature vector is zero.
+  test::Grid still = g;
+  std::fill(still.inppn.data(), still.inppn.data() + still.inppn.size(), 1.0);
+  const SurfaceInput flat{g.nocur, g.nostr, 2, 5, &still.inppn, &still.inptg};
+  for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+    CAPTURE(code == KernelCode::best);
+    use_kernel_code(code);
+    const Array again = grid_curvature(sixth, patches);
+    CHECK(std::memcmp(again.data(), by6.data(), by6.size() * sizeof(double)) == 0);
+    const Array none = grid_curvature(flat, interpolate(flat).patches);
+    CHECK(std::all_of(none.data(), none.data() + none.size(), [](double x) { return x == 0; }));
+  }
+  use_kernel_code(KernelCode::best);
 }
 
 TEST_CASE("patches of another shape are refused, not read") {

@@ -14,6 +14,7 @@
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
+#include "workspace/kernels/processor.h"
 #include "workspace/kernels/spline.h"
 
 using namespace igds;
@@ -470,9 +471,9 @@ TEST_CASE("the baseline and the vector code of FIT give the same grids") {
   Grid g = wavy_grid(30, 40, 27);
   for (int density : {3, 40}) {  // below and above the size written with streaming stores
     Surface best = run(g, density, density);
-    use_fit_code(FitCode::baseline);
+    use_kernel_code(KernelCode::baseline);
     Surface baseline = run(g, density, density);
-    use_fit_code(FitCode::best);
+    use_kernel_code(KernelCode::best);
     CAPTURE(density);
     CHECK(max_distance(best.intpn, baseline.intpn) < 1e-12);
     CHECK(best.patches == baseline.patches);
@@ -627,10 +628,10 @@ std::string said(const std::optional<DataError>& e) {
 TEST_CASE("COONS and FIT find the first number that is not finite as they make it") {
   // 30 inserted: a grid of 4.4 M numbers, made on every core with streaming stores; 2: one core.
   for (const int density : {2, 30}) {
-    for (const FitCode code : {FitCode::best, FitCode::baseline}) {
+    for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
       CAPTURE(density);
-      CAPTURE(code == FitCode::best);
-      use_fit_code(code);
+      CAPTURE(code == KernelCode::best);
+      use_kernel_code(code);
       const Grid g = wavy_grid(40, 40, 31);
       const SurfaceInput in{40, 40, density, density, &g.inppn, &g.inptg};
       Surface s;
@@ -676,7 +677,7 @@ TEST_CASE("COONS and FIT find the first number that is not finite as they make i
       CHECK(said(unkept) == said(patch));
     }
   }
-  use_fit_code(FitCode::best);
+  use_kernel_code(KernelCode::best);
 }
 
 TEST_CASE("a single curve or stringer keeps its empty PATCHES when patches are not kept") {

@@ -7,6 +7,7 @@
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
 #include "workspace/kernels/parallel.h"
+#include "workspace/kernels/processor.h"
 #include "workspace/kernels/spline.h"
 
 namespace igds {
@@ -37,19 +38,83 @@ Place place(std::size_t index, std::size_t inputs, std::size_t inserted) {
   return {patch, double(index - patch * step) / double(step)};
 }
 
-// a0 F0(s) + a1 F1(s) + a2 G0(s) + a3 G1(s) (docs/kernels.md) as c0 + c1 s + c2 s^2 + c3 s^3.
-struct Cubic {
-  double c0, c1, c2, c3;
+// Four numbers computed at once (GCC's vector extension: one AVX instruction, or two SSE2 ones).
+// Every lane is computed with the operations the scalar code uses, in its order, and without
+// fused multiply-adds, so that the curvature is the same bit for bit on every processor.
+using Lanes = double __attribute__((vector_size(32)));
+using LaneMask = long long __attribute__((vector_size(32)));
+struct Vec3Lanes {
+  Lanes x, y, z;
 };
-Cubic cubic(const double a[4]) {
-  return {a[0], a[2], 3 * (a[1] - a[0]) - 2 * a[2] - a[3], 2 * (a[0] - a[1]) + a[2] + a[3]};
+
+// curvature_vector for each lane. (Results through a reference: a vector returned by value
+// would change the calling convention with the processor's instructions.)
+[[gnu::always_inline]] inline void curvature_lanes(const Vec3Lanes& d1, const Vec3Lanes& d2,
+                                                   Vec3Lanes& k) {
+  const Lanes speed2 = d1.x * d1.x + d1.y * d1.y + d1.z * d1.z;
+  const LaneMask direction = speed2 != 0;  // zero where the curve has no direction
+  const Lanes inverse = 1 / speed2;
+  const Lanes along = (d2.x * d1.x + d2.y * d1.y + d2.z * d1.z) * inverse;
+  k.x = Lanes(LaneMask(inverse * (d2.x - along * d1.x)) & direction);
+  k.y = Lanes(LaneMask(inverse * (d2.y - along * d1.y)) & direction);
+  k.z = Lanes(LaneMask(inverse * (d2.z - along * d1.z)) & direction);
+}
+
+// Per coordinate, the polynomials in u of a patch's curve's first and second derivatives, then of
+// its stringer's (the curves of the first and second derivatives in v), lowest power first.
+struct Polynomials {
+  double du[3][3], duu[2][3], dv[4][3], dvv[4][3];
+};
+
+// The polynomials of patch matrix `m` (coons.h) on the grid line at v, whose Hermite blends and
+// their derivatives are lanes 0, 1 and 2 of w[k] (the k-th of each).
+[[gnu::always_inline]] inline void polynomials(const double* m, const Lanes w[4], Polynomials& p) {
+  for (int c = 0; c < 3; ++c) {
+    // Lane b of a[r]: row r of M times blend b. The curve through the line's points in u is
+    // a0 F0(u) + a1 F1(u) + a2 G0(u) + a3 G1(u) (lane 0), its derivatives in v lanes 1 and 2.
+    Lanes a[4];
+    for (int r = 0; r < 4; ++r) {
+      const double* mr = m + 16 * c + 4 * r;
+      a[r] = mr[0] * w[0] + mr[1] * w[1] + mr[2] * w[2] + mr[3] * w[3];
+    }
+    // As c0 + c1 u + c2 u^2 + c3 u^3 (docs/kernels.md): c0 is a0, c1 is a2.
+    const Lanes c2 = 3 * (a[1] - a[0]) - 2 * a[2] - a[3];
+    const Lanes c3 = 2 * (a[0] - a[1]) + a[2] + a[3];
+    p.du[0][c] = a[2][0], p.du[1][c] = 2 * c2[0], p.du[2][c] = 3 * c3[0];
+    p.duu[0][c] = 2 * c2[0], p.duu[1][c] = 6 * c3[0];
+    p.dv[0][c] = a[0][1], p.dv[1][c] = a[2][1], p.dv[2][c] = c2[1], p.dv[3][c] = c3[1];
+    p.dvv[0][c] = a[0][2], p.dvv[1][c] = a[2][2], p.dvv[2][c] = c2[2], p.dvv[3][c] = c3[2];
+  }
 }
 
 // The curvature vectors of the points at u[0..n) of a patch: six numbers a point, into `out`
-// (u runs along the curves, v along the stringers).
-void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::size_t n,
-                     double* out) {
-  for (std::size_t m = 0; m < n; ++m) {
+// (u runs along the curves, v along the stringers). Four points at a time, then one at a time.
+[[gnu::always_inline]] inline void patch_curvature(const Polynomials& p, const double* u,
+                                                   std::size_t n, double* out) {
+  std::size_t m = 0;
+  for (; m + 4 <= n; m += 4) {
+    const Lanes s = {u[m], u[m + 1], u[m + 2], u[m + 3]};
+    Vec3Lanes du, duu, dv, dvv;
+    Lanes* at[4][3] = {{&du.x, &du.y, &du.z},
+                       {&duu.x, &duu.y, &duu.z},
+                       {&dv.x, &dv.y, &dv.z},
+                       {&dvv.x, &dvv.y, &dvv.z}};
+    for (int c = 0; c < 3; ++c) {
+      *at[0][c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
+      *at[1][c] = p.duu[1][c] * s + p.duu[0][c];
+      *at[2][c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
+      *at[3][c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
+    }
+    Vec3Lanes along, across;
+    curvature_lanes(du, duu, along);
+    curvature_lanes(dv, dvv, across);
+    for (int l = 0; l < 4; ++l) {
+      double* o = out + 6 * (m + l);
+      o[0] = along.x[l], o[1] = along.y[l], o[2] = along.z[l];
+      o[3] = across.x[l], o[4] = across.y[l], o[5] = across.z[l];
+    }
+  }
+  for (; m < n; ++m) {
     const double s = u[m];
     double du[3], duu[3], dv[3], dvv[3];
     for (int c = 0; c < 3; ++c) {
@@ -62,6 +127,36 @@ void patch_curvature(const CurvatureRows::Polynomials& p, const double* u, std::
     curvature_vector({dv[0], dv[1], dv[2]}, {dvv[0], dvv[1], dvv[2]}).store(out + 6 * m + 3);
   }
 }
+
+// One grid line at v (blends `v`) across a row of `count` patch matrices: `step` points a patch,
+// one more (u = 1) in the last, at u[0..step].
+struct RowJob {
+  const double* patch_row;
+  std::size_t count, step;
+  const double* u;
+};
+[[gnu::always_inline]] inline void curvature_row_body(const RowJob& job, const Blend& v,
+                                                      double* out) {
+  Lanes w[4];
+  for (int k = 0; k < 4; ++k) w[k] = Lanes{v.f[k], v.d1[k], v.d2[k], 0};
+  for (std::size_t j = 0; j < job.count; ++j) {
+    Polynomials p;
+    polynomials(job.patch_row + 48 * j, w, p);
+    const std::size_t n = j + 1 < job.count ? job.step : job.step + 1;
+    patch_curvature(p, job.u, n, out + 6 * job.step * j);
+  }
+}
+
+void curvature_row_base(const RowJob& job, const Blend& v, double* out) {
+  curvature_row_body(job, v, out);
+}
+
+#if IGDS_X86
+__attribute__((target("avx2"))) void curvature_row_avx2(const RowJob& job, const Blend& v,
+                                                        double* out) {
+  curvature_row_body(job, v, out);
+}
+#endif
 
 // A single curve or stringer: the spline of its points, arc by arc.
 Array line_curvature(const SurfaceInput& in) {
@@ -105,8 +200,7 @@ CurvatureRows::CurvatureRows(const SurfaceInput& in, const Array& patches,
       patches_in_row_(std::size_t(in.nostr) - 1),
       step_(std::size_t(in.intst) + 1),
       column_u_(step_ + 1),
-      made_(source ? 48 * patches_in_row_ : 0),
-      polynomials_(patches_in_row_) {
+      made_(source ? 48 * patches_in_row_ : 0) {
   if (!source)
     require_shape("PATCHES", &patches,
                   {std::size_t(in.nocur) - 1, std::size_t(in.nostr) - 1, 3, 4, 4});
@@ -115,42 +209,19 @@ CurvatureRows::CurvatureRows(const SurfaceInput& in, const Array& patches,
 
 void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out) {
   const std::size_t pc = patches_in_row_;
+  auto row_curvature = curvature_row_base;
+#if IGDS_X86
+  if (best_kernels()) row_curvature = curvature_row_avx2;
+#endif
   for (std::size_t i = first; i < last; ++i) {
     const Place row = place(i, std::size_t(in_.nocur), std::size_t(in_.intcu));
-    const Blend v = blend(row.s);
     if (source_ && made_row_ != row.patch) {
       (void)coons_patch_row(*source_, row.patch, made_.data());  // finite: the surface was made
       made_row_ = row.patch;
     }
     const double* patch_row = source_ ? made_.data() : patches_.data() + 48 * row.patch * pc;
-    for (std::size_t j = 0; j < pc; ++j) {
-      const double* m = patch_row + 48 * j;
-      Polynomials& p = polynomials_[j];
-      for (int c = 0; c < 3; ++c) {
-        // a = M v-blends: the point's curve is a0 F0(u) + a1 F1(u) + a2 G0(u) + a3 G1(u).
-        double a[3][4];
-        for (int r = 0; r < 4; ++r) {
-          const double* mr = m + 16 * c + 4 * r;
-          for (int b = 0; b < 3; ++b) {
-            const double* w = b == 0 ? v.f : b == 1 ? v.d1 : v.d2;
-            a[b][r] = mr[0] * w[0] + mr[1] * w[1] + mr[2] * w[2] + mr[3] * w[3];
-          }
-        }
-        const Cubic curve = cubic(a[0]), along = cubic(a[1]), bend = cubic(a[2]);
-        p.du[0][c] = curve.c1, p.du[1][c] = 2 * curve.c2, p.du[2][c] = 3 * curve.c3;
-        p.duu[0][c] = 2 * curve.c2, p.duu[1][c] = 6 * curve.c3;
-        p.dv[0][c] = along.c0, p.dv[1][c] = along.c1, p.dv[2][c] = along.c2;
-        p.dv[3][c] = along.c3;
-        p.dvv[0][c] = bend.c0, p.dvv[1][c] = bend.c1, p.dvv[2][c] = bend.c2;
-        p.dvv[3][c] = bend.c3;
-      }
-    }
-    // Every patch's columns: `step` of them, one more (u = 1) in the last patch.
-    double* o = out + 6 * cols_ * (i - first);
-    for (std::size_t j = 0; j < pc; ++j) {
-      const std::size_t n = j + 1 < pc ? step_ : step_ + 1;
-      patch_curvature(polynomials_[j], column_u_.data(), n, o + 6 * step_ * j);
-    }
+    row_curvature({patch_row, pc, step_, column_u_.data()}, blend(row.s),
+                  out + 6 * cols_ * (i - first));
   }
 }
 

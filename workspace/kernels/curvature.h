@@ -36,13 +36,6 @@ class CurvatureRows {
   // Rows [first, last) into `out` (6 (last - first) cols numbers).
   void operator()(std::size_t first, std::size_t last, double* out);
 
-  // Per patch of a row and per coordinate, the polynomials in u of the curve's first and second
-  // derivatives, then of the stringer's (the curves of the first and second derivatives in v),
-  // lowest power first.
-  struct Polynomials {
-    double du[3][3], duu[2][3], dv[4][3], dvv[4][3];
-  };
-
  private:
   SurfaceInput in_;
   const Array& patches_;
@@ -51,7 +44,6 @@ class CurvatureRows {
   std::vector<double> column_u_;  // u of a patch's columns, the last patch's last at u = 1
   std::vector<double> made_;      // the row of patch matrices made last from `source`
   std::size_t made_row_ = std::size_t(-1);
-  std::vector<Polynomials> polynomials_;
 };
 
 }  // namespace igds

@@ -9,16 +9,14 @@
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
+#include "workspace/kernels/processor.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/spline.h"
 
-// On x86-64 the hot loops also exist compiled for AVX2 with FMA, chosen at run time, and very
-// large grids are written with streaming stores.
-#if defined(__x86_64__) && defined(__GNUC__)
+// On x86-64 the hot loops also exist compiled for AVX2 with FMA, chosen at run time (processor.h),
+// and very large grids are written with streaming stores.
+#if IGDS_X86
 #include <immintrin.h>
-#define IGDS_X86 1
-#else
-#define IGDS_X86 0
 #endif
 
 namespace igds {
@@ -229,13 +227,7 @@ __attribute__((target("avx2,fma"))) bool combine_stream_avx2(
          lanes[0] + lanes[1] + lanes[2] + lanes[3] == 0;
 }
 
-bool has_avx2_fma() {
-  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return yes;
-}
 #endif
-
-std::atomic<FitCode> fit_code{FitCode::best};
 
 // AVX2 with FMA when the processor has it (and the best code is wanted); streaming stores for
 // outputs far larger than the caches, ordinary stores otherwise so that a small grid stays in the
@@ -244,7 +236,7 @@ void choose_kernels(FitJob& job, std::size_t doubles) {
   job.polynomials = curve_polynomials_base;
   job.combine = combine_base;
 #if IGDS_X86
-  const bool avx2 = fit_code.load() == FitCode::best && has_avx2_fma();
+  const bool avx2 = best_kernels();
   if (avx2) {
     job.polynomials = curve_polynomials_avx2;
     job.combine = combine_avx2;
@@ -302,23 +294,6 @@ std::size_t fit_rows(const FitJob& job, std::size_t first, std::size_t last) {
 #endif
   return not_finite;
 }
-
-}  // namespace
-
-void use_fit_code(FitCode code) {
-  fit_code.store(code);
-}
-
-const char* fit_code_in_use() {
-#if IGDS_X86
-  if (fit_code.load() == FitCode::best && has_avx2_fma()) return "AVX2 and FMA";
-  return "SSE2";
-#else
-  return "portable";
-#endif
-}
-
-namespace {
 
 // FIT from stored patches (`patches`) or from rows made as they are needed (`source`).
 std::size_t fit_grid(int intcu, int intst, const double* patches, const PatchSource& source,

@@ -36,11 +36,4 @@ struct FitResult {
 };
 FitResult fit(int intcu, int intst, const PatchSource& source, Array& intpn);
 
-// Which compiled form of the FIT loops runs: the best the processor allows (the default), or the
-// baseline one everywhere (so that tests exercise both on a machine that has AVX2).
-enum class FitCode { best, baseline };
-void use_fit_code(FitCode code);
-// The compiled form FIT uses on this processor, in words (for igds --version).
-const char* fit_code_in_use();
-
 }  // namespace igds
