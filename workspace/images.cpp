@@ -269,31 +269,25 @@ Image comb_image(const Workspace& ws, const View& view) {
     };
     // CONIC is not linear: the ends are made again once s is known, and projected as they are
     // made. A view point inside the box of all the ends is refused before any other report, as
-    // for any image (project_image): what a part's projection refused is reported after that
-    // box is known.
+    // for any image (project_image): a part's own findings are reported after that box is known.
     const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
-    std::vector<Box3> ends(parts);
-    std::vector<std::optional<DataError>> refused(parts);
+    std::vector<ProjectedPart> found_ends(parts);
     by_rows([&](unsigned part, std::size_t first, std::size_t last, double* bends) {
       to_ends(first, last, bends);
       const std::size_t n = 2 * (last - first) * cols;
-      for (std::size_t k = 0; k < n; ++k) ends[part].add(Vec3::load(bends + 3 * k));
-      if (refused[part]) return;
-      double* xy = image.combs.data() + 4 * cols * first;
-      try {
-        project(view, centre, Vec3View(bends, n), MutablePoint2View(xy, n));
-      } catch (const DataError& e) {
-        refused[part] = e;
-        return;
-      }
-      check(2 * cols * first, n, xy);
+      const ProjectedPart p =
+          project_part(view, centre, Vec3View(bends, n),
+                       MutablePoint2View(image.combs.data() + 4 * cols * first, n));
+      found_ends[part].behind = found_ends[part].behind || p.behind;
+      found_ends[part].about_eye.add(p.about_eye);
+      if (p.not_finite < n) keep_least(not_finite, 2 * cols * first + p.not_finite);
     });
-    Box3 all;
-    for (const Box3& b : ends) all.add(b);
-    if (all.contains({view.parameters[0], view.parameters[1], view.parameters[2]}))
-      throw DataError(DataError::Problem::view_inside_box);
-    for (const std::optional<DataError>& e : refused)
-      if (e) throw *e;
+    Box3 about_eye;
+    bool behind = false;
+    for (const ProjectedPart& p : found_ends)
+      about_eye.add(p.about_eye), behind = behind || p.behind;
+    if (about_eye.contains({})) throw DataError(DataError::Problem::view_inside_box);
+    if (behind) throw DataError(DataError::Problem::behind_eye);
   }
   if (not_finite.load() < 2 * points.size())
     check_projected(not_finite.load() / 2, points.size(), "INTPN", cols);

@@ -6,12 +6,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
 
 #include "tests/kernels/helpers.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/processor.h"
 
 using namespace igds;
 using igds::test::Flat;
@@ -336,4 +339,72 @@ TEST_CASE(
   CHECK(problem_of([&] {
           project_image({Projection::isometric, {4, 30, 0}}, centre, in, out);
         }) == DataError::Problem::projection_parameters);
+}
+
+TEST_CASE("CONIC four points at a time: every image and finding as a point at a time makes it") {
+  // 1003 points (four at a time, three left over) in front of the eye, far and near.
+  Random rnd(5);
+  const std::size_t n = 1003;
+  Flat<Vec3> in(n);
+  for (std::size_t k = 0; k < n; ++k)
+    in.set(k, {rnd.uniform(-50, 50), rnd.uniform(-50, 50), rnd.uniform(-5, 5)});
+  const Vec3 eye{300, -200, 150}, centre{};
+  const View view{Projection::conic, {eye.x, eye.y, eye.z}};
+  auto same_bits = [](const std::vector<double>& a, const std::vector<double>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), 8 * a.size()) == 0;
+  };
+  Flat<Point2> whole(n), alone(n);
+  conic(in, eye, centre, whole);
+  for (std::size_t k = 0; k < n; ++k) {
+    Flat<Point2> one(1);
+    conic(Flat<Vec3>{in[k]}, eye, centre, one);
+    alone.set(k, one[0]);
+  }
+  CHECK(same_bits(whole.d, alone.d));
+  // The baseline code, and every other point (a stride of two points).
+  use_kernel_code(KernelCode::baseline);
+  Flat<Point2> baseline(n);
+  conic(in, eye, centre, baseline);
+  use_kernel_code(KernelCode::best);
+  CHECK(same_bits(whole.d, baseline.d));
+  Flat<Point2> strided(n);
+  conic(Vec3View(in.d.data(), (n + 1) / 2, 6), eye, centre,
+        MutablePoint2View(strided.d.data(), (n + 1) / 2, 4));
+  for (std::size_t k = 0; k < n; k += 2) CHECK(strided[k] == whole[k]);
+
+  // What a part finds, against a point at a time: a point behind the eye (the fourth of its
+  // four), an image that overflows (the third), and the box about the eye, to which a NaN
+  // coordinate adds nothing (every x of the second of four is one).
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Flat<Vec3> odd = in;
+  odd.resize(12);
+  odd.set(7, {400, -300, 200});  // beyond the eye
+  odd.set(6, {-1e308, 1e308, -1e308});
+  for (const std::size_t k : {1, 5, 9}) odd.set(k, {nan, odd[k].y, odd[k].z});
+  Flat<Point2> out(12), one(1);
+  auto alone_finds = [&](std::size_t k) {
+    return project_part(view, centre, Flat<Vec3>{odd[k]}, one);
+  };
+  CHECK(alone_finds(7).behind);
+  CHECK(alone_finds(6).not_finite == 0);  // in front, its image beyond the largest number
+  CHECK_FALSE(alone_finds(6).behind);
+  for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+    CAPTURE(code == KernelCode::best);
+    use_kernel_code(code);
+    const ProjectedPart part = project_part(view, centre, odd, out);
+    CHECK(part.behind);
+    CHECK(part.not_finite == 1);  // the NaN point's image is NaN
+    Box3 box;
+    for (std::size_t k = 0; k < 12; ++k) box.add(odd[k] - eye);
+    CHECK(part.about_eye.lo == box.lo);
+    CHECK(part.about_eye.hi == box.hi);
+    Flat<Vec3> fewer = odd;
+    for (const std::size_t k : {1, 5, 9}) fewer.set(k, in[k]);
+    CHECK(project_part(view, centre, fewer, out).not_finite == 6);
+    fewer.set(6, in[6]), fewer.set(7, in[7]);
+    const ProjectedPart fine = project_part(view, centre, fewer, out);
+    CHECK_FALSE(fine.behind);
+    CHECK(fine.not_finite == 12);
+  }
+  use_kernel_code(KernelCode::best);
 }

@@ -38,11 +38,9 @@ Place place(std::size_t index, std::size_t inputs, std::size_t inserted) {
   return {patch, double(index - patch * step) / double(step)};
 }
 
-// Four numbers computed at once (GCC's vector extension: one AVX instruction, or two SSE2 ones).
-// Every lane is computed with the operations the scalar code uses, in its order, and without
-// fused multiply-adds, so that the curvature is the same bit for bit on every processor.
-using Lanes = double __attribute__((vector_size(32)));
-using LaneMask = long long __attribute__((vector_size(32)));
+// Every lane (processor.h) is computed with the operations the scalar code uses, in its order,
+// and without fused multiply-adds, so that the curvature is the same bit for bit on every
+// processor.
 struct Vec3Lanes {
   Lanes x, y, z;
 };

@@ -10,6 +10,12 @@
 
 namespace igds {
 
+// Four numbers computed at once (GCC's vector extension: one AVX instruction, or two SSE2 ones),
+// and the mask of a comparison of two such (all bits set where it holds). A vector is passed by
+// reference: by value it would change the calling convention with the processor's instructions.
+using Lanes = double __attribute__((vector_size(32)));
+using LaneMask = long long __attribute__((vector_size(32)));
+
 // The best form the processor allows (the default), or the baseline one everywhere (so that
 // tests exercise both on a machine that has AVX2).
 enum class KernelCode { best, baseline };

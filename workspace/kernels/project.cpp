@@ -9,6 +9,7 @@
 
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
+#include "workspace/kernels/processor.h"
 
 namespace igds {
 
@@ -81,47 +82,30 @@ bool finite(Vec3 v) {
 struct Pass {
   std::size_t not_finite;
   bool behind = false;
-  Vec3 lo{}, hi{};
+  Box3 about_eye;
   static constexpr double inf = std::numeric_limits<double>::infinity();
   Point2 low{inf, inf}, high{-inf, -inf};
 };
 
 // out[k] = image(in[k]) for every point, on the machine's cores for a large image, each image
 // checked as it is made: x * 0 is 0 for a finite x and NaN for the rest (docs/kernels.md, "Data
-// checks"), summed a block at a time. CONIC (`eye` its view point, `ahead` its line of sight) also
-// looks, in the same pass, for a point not in front of the eye and at the box of the points.
-template <bool conic = false, class Image>
-Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye = {},
-                Vec3 ahead = {}) {
+// checks"), summed a block at a time. `block(from, to, pass)` makes the images of [from, to) and
+// returns that sum, and keeps in `pass` the box of the images (CONIC also whether a point is not in
+// front of the eye and the box of the points about it).
+template <class Block>
+Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
   const std::size_t n = in.size();
   // Counted in points: a point's image costs about what a number costs most kernels (a few
   // nanoseconds), so that the 250,000 input points of a large grid stay on one thread.
   const unsigned parts = threads_for(n);
-  std::vector<Pass> found(parts, Pass{n});
+  std::vector<Pass> found(parts, Pass{n, false, {}});
   in_parallel(parts, [&](unsigned part) {
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
     Pass& pass = found[part];
-    if (first < last) pass.lo = pass.hi = in[first] - eye;
-    constexpr std::size_t block = 512;
-    for (std::size_t from = first; from < last; from += block) {
-      const std::size_t to = std::min(last, from + block);
-      double seen_x = 0, seen_y = 0;
-      for (std::size_t k = from; k < to; ++k) {
-        const Vec3 v = in[k];
-        if constexpr (conic) {
-          const Vec3 q = v - eye;
-          if (!(dot(q, ahead) > 0)) pass.behind = true;
-          pass.lo = {std::min(pass.lo.x, q.x), std::min(pass.lo.y, q.y), std::min(pass.lo.z, q.z)};
-          pass.hi = {std::max(pass.hi.x, q.x), std::max(pass.hi.y, q.y), std::max(pass.hi.z, q.z)};
-        }
-        const Point2 p = image(v);
-        out[k] = p;
-        seen_x += p.x * 0.0;
-        seen_y += p.y * 0.0;
-        pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
-        pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
-      }
-      if (seen_x + seen_y != 0 && pass.not_finite == n) {
+    constexpr std::size_t block_size = 512;
+    for (std::size_t from = first; from < last; from += block_size) {
+      const std::size_t to = std::min(last, from + block_size);
+      if (block(from, to, pass) != 0 && pass.not_finite == n) {
         for (std::size_t k = from; k < to && pass.not_finite == n; ++k) {
           const Point2 p = out[k];
           if (!std::isfinite(p.x) || !std::isfinite(p.y)) pass.not_finite = k;
@@ -134,15 +118,115 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, Vec3 eye
   for (const Pass& pass : found) {
     all.not_finite = std::min(all.not_finite, pass.not_finite);
     all.behind = all.behind || pass.behind;
-    all.lo = {std::min(all.lo.x, pass.lo.x), std::min(all.lo.y, pass.lo.y),
-              std::min(all.lo.z, pass.lo.z)};
-    all.hi = {std::max(all.hi.x, pass.hi.x), std::max(all.hi.y, pass.hi.y),
-              std::max(all.hi.z, pass.hi.z)};
+    all.about_eye.add(pass.about_eye);
     all.low = {std::min(all.low.x, pass.low.x), std::min(all.low.y, pass.low.y)};
     all.high = {std::max(all.high.x, pass.high.x), std::max(all.high.y, pass.high.y)};
   }
   return all;
 }
+
+// each_block for a parallel projection, a point at a time.
+template <class Image>
+Pass each_point(Vec3View in, MutablePoint2View out, const Image& image) {
+  return each_block(in, out, [&](std::size_t from, std::size_t to, Pass& pass) {
+    double seen_x = 0, seen_y = 0;
+    for (std::size_t k = from; k < to; ++k) {
+      const Point2 p = image(in[k]);
+      out[k] = p;
+      seen_x += p.x * 0.0;
+      seen_y += p.y * 0.0;
+      pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
+      pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
+    }
+    return seen_x + seen_y;
+  });
+}
+
+// CONIC's images of n points (docs/kernels.md): X = D (q.r) / (q.w), Y = D (q.t) / (q.w) with
+// q = p - eye; four points at a time in vector lanes, each lane with the operations of the point
+// at a time that follows, in its order, so that every image is the same bit for bit. The points
+// are `in`, `in_stride` doubles apart, their images `out`, `out_stride` apart. Returns the sum of
+// x * 0 of the images.
+struct ConicBlock {
+  const ConicFrame* f;
+  Vec3 eye;
+  std::size_t in_stride, out_stride;
+};
+[[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
+  const LaneMask less = v < lo;  // std::min(lo, v)
+  lo = Lanes((LaneMask(v) & less) | (LaneMask(lo) & ~less));
+}
+[[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
+  const LaneMask more = hi < v;  // std::max(hi, v)
+  hi = Lanes((LaneMask(v) & more) | (LaneMask(hi) & ~more));
+}
+[[gnu::always_inline]] inline double conic_block_body(const ConicBlock& c, const double* in,
+                                                      std::size_t n, double* out, Pass& pass) {
+  const ConicFrame& f = *c.f;
+  const Vec3 eye = c.eye;
+  const std::size_t s = c.in_stride, t = c.out_stride;
+  double seen = 0;
+  std::size_t k = 0;
+  if (n >= 4) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Lanes lo[3] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
+    Lanes hi[3] = {-lo[0], -lo[0], -lo[0]};
+    Lanes low[2] = {lo[0], lo[0]}, high[2] = {hi[0], hi[0]};
+    Lanes seen_x = {}, seen_y = {};
+    LaneMask ahead = ~LaneMask{};
+    for (; k + 4 <= n; k += 4) {
+      const double* p = in + s * k;
+      const Lanes q[3] = {Lanes{p[0], p[s], p[2 * s], p[3 * s]} - eye.x,
+                          Lanes{p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]} - eye.y,
+                          Lanes{p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]} - eye.z};
+      const Lanes depth = q[0] * f.w.x + q[1] * f.w.y + q[2] * f.w.z;
+      ahead &= depth > 0;
+      for (int d = 0; d < 3; ++d) lower(lo[d], q[d]), raise(hi[d], q[d]);
+      const Lanes x = f.distance * (q[0] * f.r.x + q[1] * f.r.y + q[2] * f.r.z) / depth;
+      const Lanes y = f.distance * (q[0] * f.t.x + q[1] * f.t.y + q[2] * f.t.z) / depth;
+      for (int l = 0; l < 4; ++l) out[t * (k + l)] = x[l], out[t * (k + l) + 1] = y[l];
+      seen_x += x * 0.0;
+      seen_y += y * 0.0;
+      lower(low[0], x), lower(low[1], y), raise(high[0], x), raise(high[1], y);
+    }
+    for (int l = 0; l < 4; ++l) {
+      pass.behind = pass.behind || ahead[l] == 0;
+      // Each coordinate on its own, as Box3::add makes it: a NaN is in no box.
+      Box3& box = pass.about_eye;
+      box.lo = {std::min(box.lo.x, lo[0][l]), std::min(box.lo.y, lo[1][l]),
+                std::min(box.lo.z, lo[2][l])};
+      box.hi = {std::max(box.hi.x, hi[0][l]), std::max(box.hi.y, hi[1][l]),
+                std::max(box.hi.z, hi[2][l])};
+      pass.low = {std::min(pass.low.x, low[0][l]), std::min(pass.low.y, low[1][l])};
+      pass.high = {std::max(pass.high.x, high[0][l]), std::max(pass.high.y, high[1][l])};
+      seen += seen_x[l] + seen_y[l];
+    }
+  }
+  for (; k < n; ++k) {
+    const Vec3 q = Vec3::load(in + s * k) - eye;
+    const double depth = dot(q, f.w);
+    if (!(depth > 0)) pass.behind = true;
+    pass.about_eye.add(q);
+    const Point2 p{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
+    p.store(out + t * k);
+    seen += p.x * 0.0 + p.y * 0.0;
+    pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
+    pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
+  }
+  return seen;
+}
+
+double conic_block_base(const ConicBlock& c, const double* in, std::size_t n, double* out,
+                        Pass& pass) {
+  return conic_block_body(c, in, n, out, pass);
+}
+
+#if IGDS_X86
+__attribute__((target("avx2"))) double conic_block_avx2(const ConicBlock& c, const double* in,
+                                                        std::size_t n, double* out, Pass& pass) {
+  return conic_block_body(c, in, n, out, pass);
+}
+#endif
 
 }  // namespace
 
@@ -213,14 +297,14 @@ Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
   check_sizes(in, out);
   if (!finite(view)) refuse(DataError::Problem::projection_parameters);
   const ConicFrame f = conic_frame(view, centre);
-  return each_point<true>(
-      in, out,
-      [&f, view](Vec3 p) {
-        const Vec3 q = p - view;
-        const double depth = dot(q, f.w);
-        return Point2{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
-      },
-      view, f.w);
+  auto block = conic_block_base;
+#if IGDS_X86
+  if (best_kernels()) block = conic_block_avx2;
+#endif
+  return each_block(in, out, [&](std::size_t from, std::size_t to, Pass& pass) {
+    return block({&f, view, in.stride(), out.stride()}, in.data() + in.stride() * from, to - from,
+                 out.data() + out.stride() * from, pass);
+  });
 }
 
 Pass matrix_pass(Vec3View in, const AssonMatrix& a, MutablePoint2View out) {
@@ -272,11 +356,14 @@ ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, Mutable
   const Pass pass = project_pass(view, centre, in, out);
   // The box about the eye holds 0 on every axis: the eye is in the box (the sign of p - eye is
   // that of the comparison of p with the eye).
-  if (conic && !in.empty() && pass.lo.x <= 0 && 0 <= pass.hi.x && pass.lo.y <= 0 &&
-      0 <= pass.hi.y && pass.lo.z <= 0 && 0 <= pass.hi.z)
-    refuse(DataError::Problem::view_inside_box);
+  if (conic && pass.about_eye.contains({})) refuse(DataError::Problem::view_inside_box);
   if (pass.behind) refuse(DataError::Problem::behind_eye);
   return {pass.not_finite, {pass.low.x, pass.low.y, pass.high.x, pass.high.y}};
+}
+
+ProjectedPart project_part(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+  const Pass pass = project_pass(view, centre, in, out);
+  return {pass.not_finite, pass.behind, pass.about_eye};
 }
 
 std::array<double, 3> ProjectiveMap::apply(Vec3 p) const {

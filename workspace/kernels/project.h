@@ -47,6 +47,19 @@ struct ProjectedImage {
 };
 ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 
+// project_image's one pass without its refusals, for an image projected a part at a time (DISPLAY
+// COMBS's ends): every image is written, and the part says what the whole image's checks need,
+// the first point whose image is not finite (in.size() for none) and, for CONIC, whether a point
+// is not in front of the eye and the box of the points about the eye (p - eye: it holds 0 when the
+// eye is in the points' box). Throws DataError (projection_parameters, view_at_centre) before
+// writing anything.
+struct ProjectedPart {
+  std::size_t not_finite = 0;
+  bool behind = false;
+  Box3 about_eye;
+};
+ProjectedPart project_part(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
+
 // The same projection as a map of homogeneous coordinates: (X h, Y h, h) = M (x, y, z, 1). The
 // parallel projections are linear maps (M's last column is 0 0 1) with h = 1; CONIC has h the depth
 // along the line of sight divided by D, positive in front of the eye. A rational curve maps to a
