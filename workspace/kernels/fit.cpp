@@ -226,7 +226,6 @@ __attribute__((target("avx2,fma"))) bool combine_stream_avx2(
   return combine_body(fv, n - k, origin + k, q0 + k, q1 + k, q2 + k, q3 + k, out + k) && finite &&
          lanes[0] + lanes[1] + lanes[2] + lanes[3] == 0;
 }
-
 #endif
 
 // AVX2 with FMA when the processor has it (and the best code is wanted); streaming stores for
