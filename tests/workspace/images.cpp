@@ -147,6 +147,53 @@ TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only am
   CHECK(comb_image(ws, above).combs.size() == 4 * points.size());
 }
 
+// A bowl, 9 x 9 points 10 apart, z = r^2 / 40 about its middle: every comb stands below it and,
+// at the rim, out beyond its points.
+Workspace bowl_surface() {
+  Workspace ws = test::make_interpolated(9, 9, 4, 4);
+  auto height = [](double x, double y) { return ((x - 40) * (x - 40) + (y - 40) * (y - 40)) / 40; };
+  for (std::size_t i = 0; i < 9; ++i)
+    for (std::size_t j = 0; j < 9; ++j) {
+      const double x = 10.0 * double(j), y = 10.0 * double(i);
+      Vec3{x, y, height(x, y)}.store(ws.inppn.data() + 3 * (i * 9 + j));
+    }
+  // The border tangents of the paraboloid: slope (x - 40) / 20 along x, likewise along y.
+  for (std::size_t r = 0; r < 36; ++r) {
+    const bool curve = r < 18, end = r % 2 == 1;
+    const double slope = end ? 2 : -2;
+    const Vec3 t = (1 / std::sqrt(5.0)) * (curve ? Vec3{1, 0, slope} : Vec3{0, 1, slope});
+    t.store(ws.inptg.data() + 4 * r);
+  }
+  Surface s;
+  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
+  ws.intpn = std::move(s.intpn);
+  return ws;
+}
+
+TEST_CASE("DISPLAY COMBS CONIC refuses a comb behind the eye, the eye outside every box") {
+  // The eye beside the rim, beyond the points but among the combs' ends in x, above the highest
+  // end and below the highest point: in neither box, the points in front of it, the combs that
+  // stand out beyond it behind it. Only the combs' report can refuse the image.
+  const Workspace ws = bowl_surface();
+  const auto points = as_vec3(ws.intpn);
+  Array made;
+  const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  const double scale = comb_image(ws, {Projection::isometric, {3, 30, 0}}).comb_scale;
+  Box3 ends;
+  for (std::size_t k = 0; k < 2 * points.size(); ++k)
+    ends.add(points[k / 2] - scale * Vec3::load(bends.data() + 3 * k));
+  const Box3 box = bounding_box(points);
+  REQUIRE(ends.hi.x > box.hi.x);
+  REQUIRE(ends.hi.z < box.hi.z);
+  const Vec3 eye{(box.hi.x + ends.hi.x) / 2, 40, (ends.hi.z + box.hi.z) / 2};
+  CHECK_FALSE(ends.contains(eye));
+  const View view{Projection::conic, {eye.x, eye.y, eye.z}};
+  CHECK_NOTHROW((void)surface_image(ws, view));
+  const std::optional<DataError> e = refusal([&] { return comb_image(ws, view); });
+  REQUIRE(e);
+  CHECK(e->problem == DataError::Problem::behind_eye);
+}
+
 TEST_CASE("DISPLAY COMBS CONIC from the origin, the surface away from it") {
   Workspace ws = test::make_interpolated(3, 3, 1, 1);
   for (double& x : ws.inppn.ravel) x += 100;
