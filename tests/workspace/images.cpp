@@ -54,16 +54,21 @@ std::optional<DataError> refusal(const auto& make) {
   return std::nullopt;
 }
 
+// `ws` with INTPN made again from its inputs, as BUILD makes it (PATCHES not kept).
+Workspace interpolated_again(Workspace ws) {
+  Surface s;
+  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
+  ws.intpn = std::move(s.intpn);
+  return ws;
+}
+
 // 274 x 274 points: more than threads_for makes one part of (six numbers a point), and more than
 // DISPLAY COMBS takes at a time. The last curve zigzags: the highest points and the sharpest
 // bends are in the last rows.
 Workspace zigzag_surface() {
   Workspace ws = test::make_interpolated(40, 40, 6, 6);
   for (std::size_t j = 0; j < 40; ++j) ws.inppn.ravel[3 * (39 * 40 + j) + 2] += j % 2 ? 50 : 0;
-  Surface s;
-  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
-  ws.intpn = std::move(s.intpn);
-  return ws;
+  return interpolated_again(std::move(ws));
 }
 
 TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pass makes them") {
@@ -164,10 +169,7 @@ Workspace bowl_surface() {
     const Vec3 t = (1 / std::sqrt(5.0)) * (curve ? Vec3{1, 0, slope} : Vec3{0, 1, slope});
     t.store(ws.inptg.data() + 4 * r);
   }
-  Surface s;
-  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
-  ws.intpn = std::move(s.intpn);
-  return ws;
+  return interpolated_again(std::move(ws));
 }
 
 TEST_CASE("DISPLAY COMBS CONIC refuses a comb behind the eye, the eye outside every box") {
@@ -197,9 +199,7 @@ TEST_CASE("DISPLAY COMBS CONIC refuses a comb behind the eye, the eye outside ev
 TEST_CASE("DISPLAY COMBS CONIC from the origin, the surface away from it") {
   Workspace ws = test::make_interpolated(3, 3, 1, 1);
   for (double& x : ws.inppn.ravel) x += 100;
-  Surface s;
-  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
-  ws.intpn = std::move(s.intpn);
+  ws = interpolated_again(std::move(ws));
   const View origin{Projection::conic, {0, 0, 0}};
   CHECK(comb_image(ws, origin).combs.size() == 4 * ws.intpn.size() / 3);
 }
@@ -232,9 +232,7 @@ TEST_CASE("DISPLAY COMBS refuses a comb whose image overflows, naming its point"
   Workspace ws = test::make_interpolated(3, 3, 3, 3);
   for (double& x : ws.inppn.ravel) x *= 1e306;
   ws.inppn.ravel[3 * 4 + 2] = 1.7e308;
-  Surface s;
-  REQUIRE(!interpolate_into(surface_input(ws), s, PatchesOut::dropped));
-  ws.intpn = std::move(s.intpn);
+  ws = interpolated_again(std::move(ws));
   const std::size_t cols = ws.intpn.shape[1];
   // The first comb whose end is not finite, as one pass over the whole grid finds it.
   Array made;
