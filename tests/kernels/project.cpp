@@ -341,8 +341,8 @@ TEST_CASE(
         }) == DataError::Problem::projection_parameters);
 }
 
-TEST_CASE("CONIC four points at a time: every image and finding as a point at a time makes it") {
-  // 1003 points (four at a time, three left over) in front of the eye, far and near.
+TEST_CASE("four points at a time: every image and finding as a point at a time makes it") {
+  // 1003 points (four at a time, three left over), in front of the CONIC eye, far and near.
   Random rnd(5);
   const std::size_t n = 1003;
   Flat<Vec3> in(n);
@@ -353,24 +353,44 @@ TEST_CASE("CONIC four points at a time: every image and finding as a point at a 
   auto same_bits = [](const std::vector<double>& a, const std::vector<double>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), 8 * a.size()) == 0;
   };
-  Flat<Point2> whole(n), alone(n);
-  conic(in, eye, centre, whole);
-  for (std::size_t k = 0; k < n; ++k) {
-    Flat<Point2> one(1);
-    conic(Flat<Vec3>{in[k]}, eye, centre, one);
-    alone.set(k, one[0]);
+  const View views[] = {view,
+                        {Projection::assonometric, {110, 130, 120}},
+                        {Projection::isometric, {1, 30, 0}},
+                        {Projection::isometric, {2, 45, 0}},
+                        {Projection::isometric, {3, 60, 0}},
+                        {Projection::orthogonal, {1, 0, 0}},
+                        {Projection::orthogonal, {2, 0, 0}},
+                        {Projection::orthogonal, {3, 0, 0}}};
+  for (const View& v : views) {
+    CAPTURE(int(v.projection));
+    CAPTURE(v.parameters[0]);
+    Flat<Point2> whole(n), alone(n);
+    project(v, centre, in, whole);
+    for (std::size_t k = 0; k < n; ++k) {
+      Flat<Point2> one(1);
+      project(v, centre, Flat<Vec3>{in[k]}, one);
+      alone.set(k, one[0]);
+    }
+    CHECK(same_bits(whole.d, alone.d));
+    // The baseline code, and every other point (a stride of two points).
+    use_kernel_code(KernelCode::baseline);
+    Flat<Point2> baseline(n);
+    project(v, centre, in, baseline);
+    use_kernel_code(KernelCode::best);
+    CHECK(same_bits(whole.d, baseline.d));
+    Flat<Point2> strided(n);
+    project(v, centre, Vec3View(in.d.data(), (n + 1) / 2, 6),
+            MutablePoint2View(strided.d.data(), (n + 1) / 2, 4));
+    for (std::size_t k = 0; k < n; k += 2) CHECK(strided[k] == whole[k]);
+    // The images' box, and the first image not finite: the third of its four.
+    Flat<Point2> out(n);
+    CHECK(project_image(v, centre, in, out).extent == test::box_of_points(alone.d.data(), n));
+    Flat<Vec3> huge = in;
+    huge.set(6, {-1e308, 1e308, -1e308}), huge.set(9, {-1e308, 1e308, -1e308});
+    huge.set(6, 1e300 * huge[6]), huge.set(9, 1e300 * huge[9]);  // infinite coordinates
+    if (v.projection != Projection::conic)
+      CHECK(project_image(v, centre, huge, out).not_finite == 6);
   }
-  CHECK(same_bits(whole.d, alone.d));
-  // The baseline code, and every other point (a stride of two points).
-  use_kernel_code(KernelCode::baseline);
-  Flat<Point2> baseline(n);
-  conic(in, eye, centre, baseline);
-  use_kernel_code(KernelCode::best);
-  CHECK(same_bits(whole.d, baseline.d));
-  Flat<Point2> strided(n);
-  conic(Vec3View(in.d.data(), (n + 1) / 2, 6), eye, centre,
-        MutablePoint2View(strided.d.data(), (n + 1) / 2, 4));
-  for (std::size_t k = 0; k < n; k += 2) CHECK(strided[k] == whole[k]);
 
   // What a part finds, against a point at a time: a point behind the eye (the fourth of its
   // four), an image that overflows (the third), and the box about the eye, to which a NaN

@@ -125,20 +125,88 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
   return all;
 }
 
-// each_block for a parallel projection, a point at a time.
+// std::min(lo, v) and std::max(hi, v) of each lane.
+[[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
+  const LaneMask less = v < lo;  // std::min(lo, v)
+  lo = Lanes((LaneMask(v) & less) | (LaneMask(lo) & ~less));
+}
+[[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
+  const LaneMask more = hi < v;  // std::max(hi, v)
+  hi = Lanes((LaneMask(v) & more) | (LaneMask(hi) & ~more));
+}
+// A parallel projection's images of n points, `in_stride` doubles apart, into `out`,
+// `out_stride` apart: `image(x, y, z, X, Y)` makes X and Y of x, y and z, numbers or vector lanes
+// (processor.h) alike, so that four points at a time have the images one at a time gives them,
+// bit for bit. Returns the sum of x * 0 of the images.
+template <class Image>
+[[gnu::always_inline]] inline double parallel_block_body(const Image& image, const double* in,
+                                                         std::size_t in_stride, std::size_t n,
+                                                         double* out, std::size_t out_stride,
+                                                         Pass& pass) {
+  const std::size_t s = in_stride, t = out_stride;
+  double seen = 0;
+  std::size_t k = 0;
+  if (n >= 4) {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    Lanes low[2] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}};
+    Lanes high[2] = {-low[0], -low[0]};
+    Lanes seen_x = {}, seen_y = {};
+    for (; k + 4 <= n; k += 4) {
+      const double* p = in + s * k;
+      const Lanes vx = {p[0], p[s], p[2 * s], p[3 * s]};
+      const Lanes vy = {p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]};
+      const Lanes vz = {p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]};
+      Lanes x, y;
+      image(vx, vy, vz, x, y);
+      for (int l = 0; l < 4; ++l) out[t * (k + l)] = x[l], out[t * (k + l) + 1] = y[l];
+      seen_x += x * 0.0;
+      seen_y += y * 0.0;
+      lower(low[0], x), lower(low[1], y), raise(high[0], x), raise(high[1], y);
+    }
+    for (int l = 0; l < 4; ++l) {
+      pass.low = {std::min(pass.low.x, low[0][l]), std::min(pass.low.y, low[1][l])};
+      pass.high = {std::max(pass.high.x, high[0][l]), std::max(pass.high.y, high[1][l])};
+      seen += seen_x[l] + seen_y[l];
+    }
+  }
+  for (; k < n; ++k) {
+    const double* p = in + s * k;
+    double x, y;
+    image(p[0], p[1], p[2], x, y);
+    out[t * k] = x, out[t * k + 1] = y;
+    seen += x * 0.0 + y * 0.0;
+    pass.low = {std::min(pass.low.x, x), std::min(pass.low.y, y)};
+    pass.high = {std::max(pass.high.x, x), std::max(pass.high.y, y)};
+  }
+  return seen;
+}
+
+template <class Image>
+double parallel_block_base(const Image& image, const double* in, std::size_t in_stride,
+                           std::size_t n, double* out, std::size_t out_stride, Pass& pass) {
+  return parallel_block_body(image, in, in_stride, n, out, out_stride, pass);
+}
+
+#if IGDS_X86
+template <class Image>
+__attribute__((target("avx2"))) double parallel_block_avx2(const Image& image, const double* in,
+                                                           std::size_t in_stride, std::size_t n,
+                                                           double* out, std::size_t out_stride,
+                                                           Pass& pass) {
+  return parallel_block_body(image, in, in_stride, n, out, out_stride, pass);
+}
+#endif
+
+// each_block for a parallel projection.
 template <class Image>
 Pass each_point(Vec3View in, MutablePoint2View out, const Image& image) {
+  auto block = parallel_block_base<Image>;
+#if IGDS_X86
+  if (best_kernels()) block = parallel_block_avx2<Image>;
+#endif
   return each_block(in, out, [&](std::size_t from, std::size_t to, Pass& pass) {
-    double seen_x = 0, seen_y = 0;
-    for (std::size_t k = from; k < to; ++k) {
-      const Point2 p = image(in[k]);
-      out[k] = p;
-      seen_x += p.x * 0.0;
-      seen_y += p.y * 0.0;
-      pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
-      pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
-    }
-    return seen_x + seen_y;
+    return block(image, in.data() + in.stride() * from, in.stride(), to - from,
+                 out.data() + out.stride() * from, out.stride(), pass);
   });
 }
 
@@ -152,14 +220,6 @@ struct ConicBlock {
   Vec3 eye;
   std::size_t in_stride, out_stride;
 };
-[[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
-  const LaneMask less = v < lo;  // std::min(lo, v)
-  lo = Lanes((LaneMask(v) & less) | (LaneMask(lo) & ~less));
-}
-[[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
-  const LaneMask more = hi < v;  // std::max(hi, v)
-  hi = Lanes((LaneMask(v) & more) | (LaneMask(hi) & ~more));
-}
 [[gnu::always_inline]] inline double conic_block_body(const ConicBlock& c, const double* in,
                                                       std::size_t n, double* out, Pass& pass) {
   const ConicFrame& f = *c.f;
@@ -263,11 +323,17 @@ Pass orthog_pass(Vec3View in, int plane, MutablePoint2View out) {
   // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
   switch (plane) {
     case 1:
-      return each_point(in, out, [](Vec3 p) { return Point2{p.x, p.y}; });
+      return each_point(in, out, [](const auto& x, const auto& y, const auto&, auto& X, auto& Y) {
+        X = x, Y = y;
+      });
     case 2:
-      return each_point(in, out, [](Vec3 p) { return Point2{p.x, p.z}; });
+      return each_point(in, out, [](const auto& x, const auto&, const auto& z, auto& X, auto& Y) {
+        X = x, Y = z;
+      });
     case 3:
-      return each_point(in, out, [](Vec3 p) { return Point2{p.y, p.z}; });
+      return each_point(in, out, [](const auto&, const auto& y, const auto& z, auto& X, auto& Y) {
+        X = y, Y = z;
+      });
     default:
       refuse(DataError::Problem::projection_parameters);
   }
@@ -280,17 +346,13 @@ Pass isom_pass(Vec3View in, int axis, double angle_degrees, MutablePoint2View ou
   // docs/kernels.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn
   // obliquely.
   const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
-  return each_point(in, out, [axis, c, s](Vec3 p) {
-    double r1, r2, d;
-    if (axis == 1) {
-      r1 = p.y, r2 = p.z, d = p.x;
-    } else if (axis == 2) {
-      r1 = p.x, r2 = p.z, d = p.y;
-    } else {
-      r1 = p.x, r2 = p.y, d = p.z;
-    }
-    return Point2{r1 + d * c, r2 + d * s};
-  });
+  return each_point(in, out,
+                    [axis, c, s](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
+                      const auto& r1 = axis == 1 ? y : x;
+                      const auto& r2 = axis == 3 ? y : z;
+                      const auto& d = axis == 1 ? x : axis == 2 ? y : z;
+                      X = r1 + d * c, Y = r2 + d * s;
+                    });
 }
 
 Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
@@ -308,8 +370,8 @@ Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
 }
 
 Pass matrix_pass(Vec3View in, const AssonMatrix& a, MutablePoint2View out) {
-  return each_point(in, out, [&a](Vec3 p) {
-    return Point2{a.xx * p.x + a.xy * p.y, a.yx * p.x + a.yy * p.y + a.yz * p.z};
+  return each_point(in, out, [&a](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
+    X = a.xx * x + a.xy * y, Y = a.yx * x + a.yy * y + a.yz * z;
   });
 }
 
