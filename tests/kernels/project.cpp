@@ -224,6 +224,14 @@ TEST_CASE("the bounding box: its centre, and whether a point lies inside") {
   CHECK_FALSE(inside_bounding_box(pts, {4.01, 2, 0}));
   CHECK_FALSE(inside_bounding_box(pts, {2, 2, -3.5}));
   CHECK_FALSE(inside_bounding_box(Vec3View{}, {0, 0, 0}));
+  // Boxes merged axis by axis: one whose points have no y (NaN) adds its x and z alone, and an
+  // empty one adds nothing.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  Box3 no_y, merged = bounding_box(pts);
+  no_y.add(Vec3{-5, nan, 2}), no_y.add(Vec3{7, nan, 2});
+  merged.add(no_y), merged.add(Box3{});
+  CHECK(merged.lo == Vec3{-5, -2, -3});
+  CHECK(merged.hi == Vec3{7, 6, 2});
 }
 
 TEST_CASE("project() is the four projections, and projection_map() the same as a matrix") {

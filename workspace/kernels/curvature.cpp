@@ -85,27 +85,29 @@ struct Polynomials {
   }
 }
 
+// Pu, Puu, Pv and Pvv (d[0..3], per coordinate) at u = s by Horner's rule: a number, or four in
+// lanes, with the same operations.
+template <class T>
+[[gnu::always_inline]] inline void derivatives(const Polynomials& p, const T& s, T d[4][3]) {
+  for (int c = 0; c < 3; ++c) {
+    d[0][c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
+    d[1][c] = p.duu[1][c] * s + p.duu[0][c];
+    d[2][c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
+    d[3][c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
+  }
+}
+
 // The curvature vectors of the points at u[0..n) of a patch: six numbers a point, into `out`
 // (u runs along the curves, v along the stringers). Four points at a time, then one at a time.
 [[gnu::always_inline]] inline void patch_curvature(const Polynomials& p, const double* u,
                                                    std::size_t n, double* out) {
   std::size_t m = 0;
   for (; m + 4 <= n; m += 4) {
-    const Lanes s = {u[m], u[m + 1], u[m + 2], u[m + 3]};
-    Vec3Lanes du, duu, dv, dvv;
-    Lanes* at[4][3] = {{&du.x, &du.y, &du.z},
-                       {&duu.x, &duu.y, &duu.z},
-                       {&dv.x, &dv.y, &dv.z},
-                       {&dvv.x, &dvv.y, &dvv.z}};
-    for (int c = 0; c < 3; ++c) {
-      *at[0][c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
-      *at[1][c] = p.duu[1][c] * s + p.duu[0][c];
-      *at[2][c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
-      *at[3][c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
-    }
+    Lanes d[4][3];
+    derivatives(p, Lanes{u[m], u[m + 1], u[m + 2], u[m + 3]}, d);
     Vec3Lanes along, across;
-    curvature_lanes(du, duu, along);
-    curvature_lanes(dv, dvv, across);
+    curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
+    curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
     for (int l = 0; l < 4; ++l) {
       double* o = out + 6 * (m + l);
       o[0] = along.x[l], o[1] = along.y[l], o[2] = along.z[l];
@@ -113,16 +115,10 @@ struct Polynomials {
     }
   }
   for (; m < n; ++m) {
-    const double s = u[m];
-    double du[3], duu[3], dv[3], dvv[3];
-    for (int c = 0; c < 3; ++c) {
-      du[c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
-      duu[c] = p.duu[1][c] * s + p.duu[0][c];
-      dv[c] = ((p.dv[3][c] * s + p.dv[2][c]) * s + p.dv[1][c]) * s + p.dv[0][c];
-      dvv[c] = ((p.dvv[3][c] * s + p.dvv[2][c]) * s + p.dvv[1][c]) * s + p.dvv[0][c];
-    }
-    curvature_vector({du[0], du[1], du[2]}, {duu[0], duu[1], duu[2]}).store(out + 6 * m);
-    curvature_vector({dv[0], dv[1], dv[2]}, {dvv[0], dvv[1], dvv[2]}).store(out + 6 * m + 3);
+    double d[4][3];
+    derivatives(p, u[m], d);
+    curvature_vector(Vec3::load(d[0]), Vec3::load(d[1])).store(out + 6 * m);
+    curvature_vector(Vec3::load(d[2]), Vec3::load(d[3])).store(out + 6 * m + 3);
   }
 }
 

@@ -134,6 +134,48 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
   const LaneMask more = hi < v;  // std::max(hi, v)
   hi = Lanes((LaneMask(v) & more) | (LaneMask(hi) & ~more));
 }
+// Four points' coordinates, `stride` doubles apart from p, in lanes.
+struct PointLanes {
+  Lanes x, y, z;
+};
+[[gnu::always_inline]] inline PointLanes load_lanes(const double* p, std::size_t s) {
+  return {Lanes{p[0], p[s], p[2 * s], p[3 * s]}, Lanes{p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]},
+          Lanes{p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]}};
+}
+
+// What a pass keeps of images made four at a time, lane by lane: their box and x * 0 summed.
+struct ImageLanes {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  Lanes low[2] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}};
+  Lanes high[2] = {-low[0], -low[0]};
+  Lanes seen_x = {}, seen_y = {};
+  // Stores the images of four points at `out`, `stride` doubles apart, and keeps them.
+  [[gnu::always_inline]] void put(const Lanes& x, const Lanes& y, double* out, std::size_t stride) {
+    for (int l = 0; l < 4; ++l) out[stride * l] = x[l], out[stride * l + 1] = y[l];
+    seen_x += x * 0.0;
+    seen_y += y * 0.0;
+    lower(low[0], x), lower(low[1], y), raise(high[0], x), raise(high[1], y);
+  }
+  // Adds the lanes' box to the pass's and returns their sum of x * 0.
+  [[gnu::always_inline]] double into(Pass& pass) const {
+    double seen = 0;
+    for (int l = 0; l < 4; ++l) {
+      pass.low = {std::min(pass.low.x, low[0][l]), std::min(pass.low.y, low[1][l])};
+      pass.high = {std::max(pass.high.x, high[0][l]), std::max(pass.high.y, high[1][l])};
+      seen += seen_x[l] + seen_y[l];
+    }
+    return seen;
+  }
+};
+
+// One point's image, stored at `out` and kept by the pass: returns its x * 0 + y * 0.
+inline double put_image(Point2 p, double* out, Pass& pass) {
+  p.store(out);
+  pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
+  pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
+  return p.x * 0.0 + p.y * 0.0;
+}
+
 // A parallel projection's images of n points, `in_stride` doubles apart, into `out`,
 // `out_stride` apart: `image(x, y, z, X, Y)` makes X and Y of x, y and z, numbers or vector lanes
 // (processor.h) alike, so that four points at a time have the images one at a time gives them,
@@ -147,36 +189,20 @@ template <class Image>
   double seen = 0;
   std::size_t k = 0;
   if (n >= 4) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    Lanes low[2] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}};
-    Lanes high[2] = {-low[0], -low[0]};
-    Lanes seen_x = {}, seen_y = {};
+    ImageLanes images;
     for (; k + 4 <= n; k += 4) {
-      const double* p = in + s * k;
-      const Lanes vx = {p[0], p[s], p[2 * s], p[3 * s]};
-      const Lanes vy = {p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]};
-      const Lanes vz = {p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]};
+      const PointLanes v = load_lanes(in + s * k, s);
       Lanes x, y;
-      image(vx, vy, vz, x, y);
-      for (int l = 0; l < 4; ++l) out[t * (k + l)] = x[l], out[t * (k + l) + 1] = y[l];
-      seen_x += x * 0.0;
-      seen_y += y * 0.0;
-      lower(low[0], x), lower(low[1], y), raise(high[0], x), raise(high[1], y);
+      image(v.x, v.y, v.z, x, y);
+      images.put(x, y, out + t * k, t);
     }
-    for (int l = 0; l < 4; ++l) {
-      pass.low = {std::min(pass.low.x, low[0][l]), std::min(pass.low.y, low[1][l])};
-      pass.high = {std::max(pass.high.x, high[0][l]), std::max(pass.high.y, high[1][l])};
-      seen += seen_x[l] + seen_y[l];
-    }
+    seen = images.into(pass);
   }
   for (; k < n; ++k) {
     const double* p = in + s * k;
     double x, y;
     image(p[0], p[1], p[2], x, y);
-    out[t * k] = x, out[t * k + 1] = y;
-    seen += x * 0.0 + y * 0.0;
-    pass.low = {std::min(pass.low.x, x), std::min(pass.low.y, y)};
-    pass.high = {std::max(pass.high.x, x), std::max(pass.high.y, y)};
+    seen += put_image({x, y}, out + t * k, pass);
   }
   return seen;
 }
@@ -231,47 +257,30 @@ struct ConicBlock {
     constexpr double inf = std::numeric_limits<double>::infinity();
     Lanes lo[3] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
     Lanes hi[3] = {-lo[0], -lo[0], -lo[0]};
-    Lanes low[2] = {lo[0], lo[0]}, high[2] = {hi[0], hi[0]};
-    Lanes seen_x = {}, seen_y = {};
+    ImageLanes images;
     LaneMask ahead = ~LaneMask{};
     for (; k + 4 <= n; k += 4) {
-      const double* p = in + s * k;
-      const Lanes q[3] = {Lanes{p[0], p[s], p[2 * s], p[3 * s]} - eye.x,
-                          Lanes{p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]} - eye.y,
-                          Lanes{p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]} - eye.z};
+      const PointLanes v = load_lanes(in + s * k, s);
+      const Lanes q[3] = {v.x - eye.x, v.y - eye.y, v.z - eye.z};
       const Lanes depth = q[0] * f.w.x + q[1] * f.w.y + q[2] * f.w.z;
       ahead &= depth > 0;
       for (int d = 0; d < 3; ++d) lower(lo[d], q[d]), raise(hi[d], q[d]);
-      const Lanes x = f.distance * (q[0] * f.r.x + q[1] * f.r.y + q[2] * f.r.z) / depth;
-      const Lanes y = f.distance * (q[0] * f.t.x + q[1] * f.t.y + q[2] * f.t.z) / depth;
-      for (int l = 0; l < 4; ++l) out[t * (k + l)] = x[l], out[t * (k + l) + 1] = y[l];
-      seen_x += x * 0.0;
-      seen_y += y * 0.0;
-      lower(low[0], x), lower(low[1], y), raise(high[0], x), raise(high[1], y);
+      images.put(f.distance * (q[0] * f.r.x + q[1] * f.r.y + q[2] * f.r.z) / depth,
+                 f.distance * (q[0] * f.t.x + q[1] * f.t.y + q[2] * f.t.z) / depth, out + t * k, t);
     }
     for (int l = 0; l < 4; ++l) {
       pass.behind = pass.behind || ahead[l] == 0;
-      // Each coordinate on its own, as Box3::add makes it: a NaN is in no box.
-      Box3& box = pass.about_eye;
-      box.lo = {std::min(box.lo.x, lo[0][l]), std::min(box.lo.y, lo[1][l]),
-                std::min(box.lo.z, lo[2][l])};
-      box.hi = {std::max(box.hi.x, hi[0][l]), std::max(box.hi.y, hi[1][l]),
-                std::max(box.hi.z, hi[2][l])};
-      pass.low = {std::min(pass.low.x, low[0][l]), std::min(pass.low.y, low[1][l])};
-      pass.high = {std::max(pass.high.x, high[0][l]), std::max(pass.high.y, high[1][l])};
-      seen += seen_x[l] + seen_y[l];
+      pass.about_eye.add(Box3{{lo[0][l], lo[1][l], lo[2][l]}, {hi[0][l], hi[1][l], hi[2][l]}});
     }
+    seen = images.into(pass);
   }
   for (; k < n; ++k) {
     const Vec3 q = Vec3::load(in + s * k) - eye;
     const double depth = dot(q, f.w);
     if (!(depth > 0)) pass.behind = true;
     pass.about_eye.add(q);
-    const Point2 p{f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth};
-    p.store(out + t * k);
-    seen += p.x * 0.0 + p.y * 0.0;
-    pass.low = {std::min(pass.low.x, p.x), std::min(pass.low.y, p.y)};
-    pass.high = {std::max(pass.high.x, p.x), std::max(pass.high.y, p.y)};
+    seen += put_image({f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth},
+                      out + t * k, pass);
   }
   return seen;
 }

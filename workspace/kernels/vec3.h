@@ -45,8 +45,11 @@ struct Box3 {
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
   }
+  // Each coordinate on its own: a box empty on one axis (its points' coordinates there all NaN)
+  // adds nothing on that axis.
   void add(const Box3& b) {
-    if (!b.empty()) add(b.lo), add(b.hi);
+    lo = {std::min(lo.x, b.lo.x), std::min(lo.y, b.lo.y), std::min(lo.z, b.lo.z)};
+    hi = {std::max(hi.x, b.hi.x), std::max(hi.y, b.hi.y), std::max(hi.z, b.hi.z)};
   }
   // Halves first: the sum of two large coordinates could overflow.
   Vec3 centre() const { return {lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2}; }
