@@ -153,6 +153,22 @@ double comb_scale_for(double extent, double most) {
   return decade / 2;  // log10 rounded up (target just below a power of ten)
 }
 
+namespace {
+
+// The comb scale of combs already drawn from the current surface (an image the workspace holds,
+// made): it depends on the surface alone (the box of INTPN and its largest curvature), not on the
+// view.
+std::optional<double> known_comb_scale(const Workspace& ws) {
+  const std::uint64_t surface = recipe_of(ws, true);
+  if (surface == 0) return std::nullopt;
+  for (const ImageRef* ref : {&ws.image, &ws.temp1, &ws.temp2})
+    if (ref->made() && (*ref)->desim.what == 3 && (*ref)->drawn_from == surface)
+      return (*ref)->comb_scale;
+  return std::nullopt;
+}
+
+}  // namespace
+
 Image comb_image(const Workspace& ws, const View& view) {
   Image image = surface_image(ws, view);
   image.desim.what = 3;
@@ -169,94 +185,80 @@ Image comb_image(const Workspace& ws, const View& view) {
   if (!line && patches_made_when_read(ws)) maker.emplace(in);
   const PatchSource* source = maker ? &maker->source() : nullptr;
   // The curvature vectors (6 numbers a point) are made a few rows at a time, on every core, and
-  // never kept whole (192 MB at 4 M points): `each(part, first, last, bends)` has rows [first,
-  // last) in `bends`. About 8,000 points at a time (their 384 KB stay in a core's cache while
-  // they are read), whole rows of patches (each made once).
+  // never kept whole (192 MB at 4 M points): about 8,000 points at a time, whole rows of patches
+  // (each made once). `each(part, first, last, curvature)` has rows [first, last) to make with
+  // `curvature` (a single line's is made whole first, and read from `line_bends`).
   const unsigned parts = threads_for(6 * points.size());
   const std::size_t patch_rows = std::size_t(ws.intcu) + 1;
   const std::size_t chunk =
       std::max<std::size_t>(1, (std::size_t(1) << 13) / cols / patch_rows) * patch_rows;
   auto by_rows = [&](const auto& each) {
     in_parallel(parts, [&](unsigned part) {
-      std::vector<double> bends(6 * cols * std::min(chunk, rows));
       std::optional<CurvatureRows> curvature;
       if (!line) curvature.emplace(in, ws.patches, source);
       const std::size_t end = rows * (part + 1) / parts;
-      for (std::size_t first = rows * part / parts; first < end; first += chunk) {
-        const std::size_t last = std::min(end, first + chunk);
-        if (line)
-          std::copy(line_bends.data() + 6 * cols * first, line_bends.data() + 6 * cols * last,
-                    bends.data());
-        else
-          (*curvature)(first, last, bends.data());
-        each(part, first, last, bends.data());
-      }
+      for (std::size_t first = rows * part / parts; first < end; first += chunk)
+        each(part, first, std::min(end, first + chunk), curvature);
     });
   };
-  // The box of the points, the largest curvature and, for a parallel projection, the image of
-  // every curvature vector in place of its comb's. Squares are compared (a curvature whose square
-  // overflows is measured as it is).
+  // Each point's two curvature vectors measured into `largest` and, for a parallel projection,
+  // their images written where the point's combs go.
   const bool parallel = view.projection != Projection::conic;
   image.combs = Array::for_output({rows, cols, 4});  // every comb's image is written below
-  struct Found {
-    Box3 box;
-    double most2 = 0, most = 0;
-  };
-  std::vector<Found> found(parts);
   // A parallel projection is linear (its map has no constant term, kernels/project.h).
   const ProjectiveMap map = parallel ? projection_map(view, {}) : ProjectiveMap{};
-  by_rows([&](unsigned part, std::size_t first, std::size_t last, const double* bends) {
-    Found f = found[part];  // a copy, kept in registers: `xy` could alias found[part]
+  const ProjectiveMap* images_by = parallel ? &map : nullptr;
+  auto vectors = [&](std::size_t first, std::size_t last, auto& curvature,
+                     LargestCurvature& largest) {
     double* xy = image.combs.data() + 4 * cols * first;
+    if (curvature) return curvature->combs(first, last, largest, images_by, xy);
     for (std::size_t k = 0; k < (last - first) * cols; ++k) {
-      f.box.add(points[first * cols + k]);
-      for (std::size_t d = 0; d < 2; ++d) {
-        const Vec3 bend = Vec3::load(bends + 6 * k + 3 * d);
-        if (parallel) {
-          const auto& m = map.m;
-          xy[4 * k + 2 * d] = m[0][0] * bend.x + m[0][1] * bend.y + m[0][2] * bend.z;
-          xy[4 * k + 2 * d + 1] = m[1][0] * bend.x + m[1][1] * bend.y + m[1][2] * bend.z;
-        }
-        const double bend2 = dot(bend, bend);
-        if (bend2 <= f.most2) continue;
-        if (std::isfinite(bend2))
-          f.most2 = bend2;
-        else if (const double length = norm(bend); std::isfinite(length))
-          f.most = std::max(f.most, length);
-      }
+      const double* bends = line_bends.data() + 6 * (first * cols + k);
+      comb_vectors(Vec3::load(bends), Vec3::load(bends + 3), images_by, xy + 4 * k, largest);
     }
-    found[part] = f;
-  });
-  Box3 box;
-  double most = 0;
-  for (const Found& f : found) {
-    box.add(f.box);
-    most = std::max({most, std::sqrt(f.most2), f.most});
+  };
+  // The scale: that of the combs already drawn from this surface, or made from the box of the
+  // points and the largest curvature (images.h), in a pass of its own.
+  const std::optional<double> known = known_comb_scale(ws);
+  if (known) {
+    image.comb_scale = *known;
+  } else {
+    struct Found {
+      Box3 box;
+      LargestCurvature largest;
+    };
+    std::vector<Found> found(parts);
+    by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
+      found[part].box.add(bounding_box(points.subspan(first * cols, (last - first) * cols)));
+      vectors(first, last, curvature, found[part].largest);
+    });
+    Box3 box;
+    LargestCurvature largest;
+    for (const Found& f : found) box.add(f.box), largest.add(f.largest);
+    const Vec3 size = box.hi - box.lo;
+    image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), largest.length());
   }
-  const Vec3 size = box.hi - box.lo;
-  image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), most);
   const double scale = image.comb_scale;
   // The first comb (two a point) whose image is not finite, named by its point of INTPN.
   std::atomic<std::size_t> not_finite{2 * points.size()};
-  auto check = [&](std::size_t first_comb, std::size_t count, const double* xy) {
-    const std::size_t bad = first_not_finite(xy, 2 * count);
-    if (bad < 2 * count) keep_least(not_finite, first_comb + bad / 2);
-  };
   if (parallel) {
-    // The image of a comb's end p - s k is the image of p less s times that of k: the curvature
-    // is made once (docs/kernels.md, "Curvature").
-    parallel_for(rows, parts, [&](std::size_t first, std::size_t last) {
-      double* comb = image.combs.data() + 4 * cols * first;
-      const double* at = image.points.data() + 2 * cols * first;
-      const std::size_t n = 4 * (last - first) * cols;
-      // A block at a time, checked while it is in the cache.
-      for (std::size_t from = 0; from < n; from += 4096) {
-        const std::size_t to = std::min(n, from + 4096);
-        for (std::size_t k = from; k < to; ++k)
-          comb[k] = at[(k >> 2) * 2 + (k & 1)] - scale * comb[k];
-        check(2 * cols * first + from / 2, (to - from) / 2, comb + from);
-      }
-    });
+    // The image of a comb's end p - s k is the image of p less s times that of k.
+    auto combs = [&](std::size_t first, std::size_t last) {
+      const std::size_t bad =
+          comb_ends(image.points.data() + 2 * cols * first, image.combs.data() + 4 * cols * first,
+                    (last - first) * cols, scale);
+      if (bad < 2 * (last - first) * cols) keep_least(not_finite, 2 * cols * first + bad);
+    };
+    if (known) {
+      // One pass: the curvature is made once either way (docs/kernels.md, "Curvature").
+      by_rows([&](unsigned, std::size_t first, std::size_t last, auto& curvature) {
+        LargestCurvature unused;
+        vectors(first, last, curvature, unused);
+        combs(first, last);
+      });
+    } else {
+      parallel_for(rows, parts, combs);
+    }
   } else {
     // The comb's end in space, away from the centre of curvature (so that a comb stands outside
     // the surface's convex side and combs do not cross in a tight bend), written over its vector.
@@ -272,11 +274,18 @@ Image comb_image(const Workspace& ws, const View& view) {
     // for any image (project_image): a part's own findings are reported after that box is known.
     const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
     std::vector<ProjectedPart> found_ends(parts);
-    by_rows([&](unsigned part, std::size_t first, std::size_t last, double* bends) {
-      to_ends(first, last, bends);
+    std::vector<std::vector<double>> ends(parts);
+    by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
       const std::size_t n = 2 * (last - first) * cols;
+      std::vector<double>& bends = ends[part];
+      bends.resize(std::max(bends.size(), 3 * n));
+      if (curvature)
+        (*curvature)(first, last, bends.data());
+      else
+        std::copy_n(line_bends.data() + 6 * cols * first, 3 * n, bends.data());
+      to_ends(first, last, bends.data());
       const ProjectedPart p =
-          project_part(view, centre, Vec3View(bends, n),
+          project_part(view, centre, Vec3View(bends.data(), n),
                        MutablePoint2View(image.combs.data() + 4 * cols * first, n));
       found_ends[part].behind = found_ends[part].behind || p.behind;
       found_ends[part].about_eye.add(p.about_eye);

@@ -25,7 +25,8 @@ Image hidden_surface_image(const Workspace& ws, const View& view);
 // stringers (Image::combs, docs/kernels.md "Curvature"): at every point of INTPN a comb away from
 // the centre of curvature, of length comb_scale times the curvature, comb_scale the number 1, 2 or
 // 5 times a power of ten that makes the largest comb at most comb_fraction of the grid's larger
-// side (0 when no line bends).
+// side (0 when no line bends): a number of the surface, read from combs already drawn from it
+// when IMAGE, FIRST or SECOND holds them (docs/kernels.md, "Curvature").
 Image comb_image(const Workspace& ws, const View& view);
 inline constexpr double comb_fraction = 0.2;
 // The scale of the combs: largest curvature `most` on a grid `extent` long.

@@ -210,6 +210,7 @@ struct Step {
   const char* key;
   std::string lines;
   int runs = 3;  // the median of these: one run moves by a fifth with the machine's other work
+  std::string before = {};  // commands typed before each run, a line each, not timed
 };
 
 // BUILD of the grid save_grid saves, typed as a designer would: a line of points for each curve,
@@ -270,6 +271,7 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
   fmt::print("{}_variables_mb {:.1f}\n", prefix, variables / 1e6);
 
   const int mid = (n / 2) * n + n / 2;  // a point inside
+  const std::string surface = "DISPLAY SURFACE ISOMETRIC 3 30\n";
   const std::vector<Step> steps{
       {"build", build_lines(n, density)},
       {"restore", fmt::format("RESTORE {}\n", grid)},
@@ -281,19 +283,26 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
       {"display_surface", "DISPLAY SURFACE ASSONOMETRIC 110 130 120\n"},
       {"display_surface_conic",
        fmt::format("DISPLAY SURFACE CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n)},
-      {"display_combs", "DISPLAY COMBS ASSONOMETRIC 110 130 120\n"},
+      // The first combs of the surface (a surface image before each run), then combs in another
+      // view of a surface whose combs were drawn (their scale known, images.h).
+      {"display_combs", "DISPLAY COMBS ASSONOMETRIC 110 130 120\n", 3, surface},
       {"display_combs_conic",
-       fmt::format("DISPLAY COMBS CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n)},
+       fmt::format("DISPLAY COMBS CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n), 3, surface},
+      {"display_combs_again", "DISPLAY COMBS ISOMETRIC 3 30\n", 3,
+       "DISPLAY COMBS ASSONOMETRIC 110 130 120\n"},
+      {"display_combs_conic_again",
+       fmt::format("DISPLAY COMBS CONIC {} {} {}\n", 30.0 * n, -20.0 * n, 15.0 * n), 3,
+       "DISPLAY COMBS ASSONOMETRIC 110 130 120\n"},
       {"display_input", "DISPLAY INPUT ISOMETRIC 3 30\n"},
-      {"store_first", "STORE FIRST\n"},
+      {"store_first", "STORE FIRST\n", 3, surface},
       {"display_first", "DISPLAY FIRST\n"},
-      {"store_second", "STORE SECOND\n"},
+      {"store_second", "STORE SECOND\n", 3, surface},
       {"display_second", "DISPLAY SECOND\n"},
       {"zoom", "ZOOM 2\n"},
       {"zoom_whole", "ZOOM\n"},
       {"list_surface", "LIST SURFACE\n"},
-      {"undo", "UNDO\n"},
-      {"redo", "REDO\n"},
+      {"undo", "UNDO\n", 3, surface},
+      {"redo", "REDO\n", 3, surface + "UNDO\n"},
       {"erase", "ERASE\n"},
       {"help_short", "HELP SHORT\n"},
       {"store_file", "STORE FILE IMG\n"},
@@ -318,16 +327,14 @@ void run_case(const Disk& disk, const std::string& grid, int n, int density,
     // counted in BUILD's time: it is the start-up's, measured below as the first answer.
     igds.command("HELP SHORT\n");
     for (const auto& step : steps) {
-      // Each step three times (not timed: a DISPLAY before each STORE, UNDO and REDO, and an
-      // UNDO before each REDO), the median; a BUILD after the first replaces the surface it
-      // made.
+      // Each step three times, after its commands `before`, the median; a BUILD after the
+      // first replaces the surface it made.
       std::vector<Igds::Timing> runs;
       for (int r = 0; r < step.runs; ++r) {
-        const std::string_view key = step.key;
-        if (key == "store_first" || key == "store_second")
-          igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
-        if (key == "undo" || key == "redo") igds.command("DISPLAY SURFACE ISOMETRIC 3 30\n");
-        if (key == "redo") igds.command("UNDO\n");
+        for (std::size_t at = 0, end; at < step.before.size(); at = end + 1) {
+          end = step.before.find('\n', at);
+          igds.command(step.before.substr(at, end + 1 - at));
+        }
         pause_as_a_person();
         runs.push_back(igds.command(step.lines));
       }

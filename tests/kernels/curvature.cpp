@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 #include "tests/kernels/helpers.h"
 #include "workspace/kernels/data_error.h"
@@ -251,4 +253,70 @@ TEST_CASE("patches of another shape are refused, not read") {
   const SurfaceInput in{g.nocur, g.nostr, 1, 1, &g.inppn, &g.inptg};
   const Array wrong({2, 1, 3, 4, 4});
   CHECK_THROWS_AS(grid_curvature(in, wrong), DataError);
+}
+
+TEST_CASE("the combs' vectors four points at a time: as one at a time, overflow and NaN included") {
+  const test::Grid g = test::wavy_grid(5, 6, 11);
+  const SurfaceInput in{g.nocur, g.nostr, 2, 5, &g.inppn, &g.inptg};
+  const GridShape shape = intpn_shape(g.nocur, g.nostr, 2, 5);
+  const std::size_t n = shape.rows * shape.cols;
+  const Array patches = interpolate(in).patches;
+  // Patches scaled by 1e-154 bend 1e154 times as much: the squares of the largest overflow.
+  // A number that is not finite in one patch makes vectors that are not.
+  Array tiny = patches, holed = patches;
+  for (double& x : tiny.ravel) x *= 1e-154;
+  holed.ravel[48 * 2 + 17] = std::numeric_limits<double>::quiet_NaN();
+  const ProjectiveMap map = projection_map({Projection::assonometric, {110, 130, 120}}, {});
+  auto same = [](double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+  };
+  for (const Array* p :
+       {&patches, static_cast<const Array*>(&tiny), static_cast<const Array*>(&holed)})
+    for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+      CAPTURE(p == &patches ? "patches" : p == &tiny ? "tiny" : "holed");
+      CAPTURE(code == KernelCode::best);
+      use_kernel_code(code);
+      const Array bends = grid_curvature(in, *p);
+      std::vector<double> one_images(4 * n), images(4 * n);
+      CurvatureRows rows(in, *p), measure(in, *p);
+      LargestCurvature all;
+      // Row by row: the largest of each row must be found where it is.
+      for (std::size_t i = 0; i < shape.rows; ++i) {
+        CAPTURE(i);
+        LargestCurvature one, lanes, measured;
+        for (std::size_t k = i * shape.cols; k < (i + 1) * shape.cols; ++k)
+          comb_vectors(bend(bends, k, 0), bend(bends, k, 1), &map, one_images.data() + 4 * k, one);
+        rows.combs(i, i + 1, lanes, &map, images.data() + 4 * shape.cols * i);
+        measure.combs(i, i + 1, measured);
+        CHECK(same(lanes.squared, one.squared));
+        CHECK(same(lanes.overflowing, one.overflowing));
+        CHECK(same(measured.squared, one.squared));
+        CHECK(same(measured.overflowing, one.overflowing));
+        all.add(one);
+      }
+      CHECK(std::equal(images.begin(), images.end(), one_images.begin(), same));
+      if (p == &tiny) CHECK(all.overflowing > 1e150);
+      if (p == &holed)
+        CHECK(std::any_of(images.begin(), images.end(), [](double x) { return std::isnan(x); }));
+    }
+  use_kernel_code(KernelCode::best);
+}
+
+TEST_CASE("the largest curvature: squares compared, lengths where they overflow, NaN none") {
+  LargestCurvature largest;
+  largest.add(Vec3{3, 4, 0});
+  CHECK(largest.squared == 25);
+  largest.add(Vec3{1, 0, 0});
+  CHECK(largest.squared == 25);
+  largest.add(Vec3{1e200, 0, 0});  // its square overflows: its length is kept
+  largest.add(Vec3{std::numeric_limits<double>::quiet_NaN(), 0, 0});
+  largest.add(Vec3{std::numeric_limits<double>::infinity(), 0, 0});
+  CHECK(largest.squared == 25);
+  CHECK(largest.overflowing == 1e200);
+  CHECK(largest.length() == 1e200);
+  LargestCurvature other;
+  other.add(Vec3{0, 0, 6});
+  other.add(largest);
+  CHECK(other.squared == 36);
+  CHECK(other.length() == 1e200);
 }

@@ -234,6 +234,37 @@ TEST_CASE("the bounding box: its centre, and whether a point lies inside") {
   CHECK(merged.hi == Vec3{7, 6, 2});
 }
 
+TEST_CASE("the bounding box four points at a time: as one at a time, NaN and strides included") {
+  Random rnd(9);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<double> xyz(3 * 2 * 1003);
+  for (double& x : xyz) x = rnd.uniform(-100, 100);
+  // A point with no x, a point with nothing, and the largest y among the last three points.
+  xyz[3 * 6] = nan;
+  xyz[3 * 9] = xyz[3 * 9 + 1] = xyz[3 * 9 + 2] = nan;
+  xyz[3 * 1001 + 1] = 500;
+  xyz[3 * 2 * 1002 + 2] = -500;  // the least z, the last point of every second one
+  for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+    use_kernel_code(code);
+    for (const std::size_t stride : {3, 6})
+      for (const std::size_t n : {0, 1, 3, 4, 7, 1002, 1003}) {
+        CAPTURE(code == KernelCode::best);
+        CAPTURE(stride);
+        CAPTURE(n);
+        const Vec3View points(xyz.data(), n, stride);
+        Box3 one;
+        for (const Vec3 p : points) one.add(p);
+        const Box3 box = bounding_box(points);
+        CHECK(box.lo == one.lo);
+        CHECK(box.hi == one.hi);
+        CHECK(box.empty() == (n == 0));
+      }
+  }
+  use_kernel_code(KernelCode::best);
+  CHECK(bounding_box(Vec3View(xyz.data(), 1003)).hi.y == 500);
+  CHECK(bounding_box(Vec3View(xyz.data(), 1003, 6)).lo.z == -500);
+}
+
 TEST_CASE("project() is the four projections, and projection_map() the same as a matrix") {
   Random rnd(32);
   Flat<Vec3> in;

@@ -129,6 +129,63 @@ TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pas
   }
 }
 
+TEST_CASE("DISPLAY COMBS in another view takes the scale of combs drawn from the same surface") {
+  Workspace ws = zigzag_surface();
+  const View far_above{Projection::conic, {140, 140, 1000}};
+  const View views[] = {
+      {Projection::isometric, {3, 30, 0}}, {Projection::assonometric, {110, 130, 120}}, far_above};
+  // Each view alone, then after the combs of another: the same image, bit for bit.
+  for (const View& view : views)
+    for (const View& before : views) {
+      CAPTURE(int(view.projection));
+      CAPTURE(int(before.projection));
+      ws.image = nullptr;
+      const Image alone = comb_image(ws, view);
+      ws.image = std::make_shared<const Image>(comb_image(ws, before));
+      const Image after = comb_image(ws, view);
+      CHECK(after.comb_scale == alone.comb_scale);
+      CHECK(after.combs == alone.combs);
+      CHECK(after.points == alone.points);
+    }
+  // The scale is read from IMAGE, FIRST or SECOND when they hold combs of this surface, made: a
+  // kept image given a scale of its own shows which one is read.
+  ws.image = nullptr;
+  const Image made = comb_image(ws, views[0]);
+  auto kept = [&](double scale, int what, std::uint64_t drawn_from) {
+    auto image = std::make_shared<Image>(made);
+    image->comb_scale = scale, image->desim.what = what, image->drawn_from = drawn_from;
+    return ImageRef(std::shared_ptr<const Image>(std::move(image)));
+  };
+  const std::uint64_t surface = ws.changes.surface;
+  const double half = made.comb_scale / 2, quarter = made.comb_scale / 4;
+  ws.temp1 = kept(half, 3, surface);
+  CHECK(comb_image(ws, views[1]).comb_scale == half);
+  ws.temp1 = nullptr, ws.temp2 = kept(quarter, 3, surface);
+  CHECK(comb_image(ws, far_above).comb_scale == quarter);
+  // Not from a surface image, nor from combs of another surface, nor from one not made yet (it is
+  // not made for this).
+  ws.temp2 = nullptr;
+  ws.image = kept(half, 1, surface);
+  CHECK(comb_image(ws, views[1]).comb_scale == made.comb_scale);
+  ws.image = kept(half, 3, surface + 1);
+  CHECK(comb_image(ws, views[1]).comb_scale == made.comb_scale);
+  int makes = 0;
+  ws.image = ImageRef::deferred(
+      [&] {
+        ++makes;
+        return *kept(half, 3, surface);
+      },
+      surface, made.desim);
+  CHECK(comb_image(ws, views[1]).comb_scale == made.comb_scale);
+  CHECK(makes == 0);
+  // A surface changed has its own scale: ten times as large, a hundred times the scale.
+  ws.image = kept(made.comb_scale, 3, surface);
+  for (double& x : ws.inppn.ravel) x *= 10;
+  ws = interpolated_again(std::move(ws));
+  ws.changes.replaced();
+  CHECK(comb_image(ws, views[1]).comb_scale == 100 * made.comb_scale);
+}
+
 TEST_CASE("DISPLAY COMBS CONIC refuses a view point among the combs, not only among the points") {
   const Workspace ws = zigzag_surface();
   const auto points = as_vec3(ws.intpn);
@@ -250,12 +307,18 @@ TEST_CASE("DISPLAY COMBS refuses a comb whose image overflows, naming its point"
   REQUIRE(first < bend.size());
   const View xz{Projection::orthogonal, {2, 0, 0}};
   CHECK_NOTHROW((void)surface_image(ws, xz));
-  const std::optional<DataError> e = refusal([&] { return comb_image(ws, xz); });
-  REQUIRE(e);
-  CHECK(e->problem == DataError::Problem::image_not_finite);
-  CHECK(e->variable == "INTPN");
-  CHECK(e->number == first / 2 / cols + 1);
-  CHECK(e->column == first / 2 % cols + 1);
+  // Refused alike when the scale is read from combs of the surface drawn before.
+  auto combs_before = std::make_shared<Image>(surface_image(ws, xz));
+  combs_before->desim.what = 3, combs_before->comb_scale = scale;
+  for (const ImageRef& before : {ImageRef(), ImageRef(std::move(combs_before))}) {
+    ws.image = before;
+    const std::optional<DataError> e = refusal([&] { return comb_image(ws, xz); });
+    REQUIRE(e);
+    CHECK(e->problem == DataError::Problem::image_not_finite);
+    CHECK(e->variable == "INTPN");
+    CHECK(e->number == first / 2 / cols + 1);
+    CHECK(e->column == first / 2 % cols + 1);
+  }
 }
 
 TEST_CASE("images drawn from the same surface with the same DESIM are the same, unmade, unread") {

@@ -1,6 +1,9 @@
 #include "workspace/kernels/curvature.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 #include "workspace/kernels/coons.h"
@@ -97,10 +100,67 @@ template <class T>
   }
 }
 
-// The curvature vectors of the points at u[0..n) of a patch: six numbers a point, into `out`
+// What becomes of the curvature vectors of a patch's points, four at a time (`lanes`, point m
+// and the three after it) or one at a time (`one`): kept, six numbers a point ...
+struct Keep {
+  double* out;
+  [[gnu::always_inline]] inline void lanes(std::size_t m, const Vec3Lanes& along,
+                                           const Vec3Lanes& across) {
+    for (int l = 0; l < 4; ++l) {
+      double* o = out + 6 * (m + l);
+      o[0] = along.x[l], o[1] = along.y[l], o[2] = along.z[l];
+      o[3] = across.x[l], o[4] = across.y[l], o[5] = across.z[l];
+    }
+  }
+  void one(std::size_t m, Vec3 along, Vec3 across) {
+    along.store(out + 6 * m);
+    across.store(out + 6 * m + 3);
+  }
+};
+
+// ... or measured and, for a parallel projection, projected (CurvatureRows::combs).
+template <bool project>
+struct Measure {
+  const ProjectiveMap* map;
+  double* images;
+  LargestCurvature& largest;
+  Lanes squared = {0, 0, 0, 0};  // the largest finite squares, lane by lane
+  [[gnu::always_inline]] inline void take(const Vec3Lanes& k) {
+    const Lanes k2 = k.x * k.x + k.y * k.y + k.z * k.z;  // dot()'s order
+    const LaneMask finite = k2 < std::numeric_limits<double>::infinity();
+    if (finite[0] & finite[1] & finite[2] & finite[3]) {
+      squared = k2 > squared ? k2 : squared;
+      return;
+    }
+    for (int l = 0; l < 4; ++l) largest.add({k.x[l], k.y[l], k.z[l]});
+  }
+  [[gnu::always_inline]] inline void lanes(std::size_t m, const Vec3Lanes& along,
+                                           const Vec3Lanes& across) {
+    take(along);
+    take(across);
+    if constexpr (project) {
+      const auto& r = map->m;
+      const Lanes xy[4] = {r[0][0] * along.x + r[0][1] * along.y + r[0][2] * along.z,
+                           r[1][0] * along.x + r[1][1] * along.y + r[1][2] * along.z,
+                           r[0][0] * across.x + r[0][1] * across.y + r[0][2] * across.z,
+                           r[1][0] * across.x + r[1][1] * across.y + r[1][2] * across.z};
+      for (int l = 0; l < 4; ++l)
+        for (int c = 0; c < 4; ++c) images[4 * (m + l) + c] = xy[c][l];
+    }
+  }
+  void one(std::size_t m, Vec3 along, Vec3 across) {
+    comb_vectors(along, across, project ? map : nullptr, images + 4 * m, largest);
+  }
+  void finish() {
+    largest.squared = std::max({largest.squared, squared[0], squared[1], squared[2], squared[3]});
+  }
+};
+
+// The curvature vectors of the points at u[0..n) of a patch, points `first` onwards of `sink`
 // (u runs along the curves, v along the stringers). Four points at a time, then one at a time.
+template <class Sink>
 [[gnu::always_inline]] inline void patch_curvature(const Polynomials& p, const double* u,
-                                                   std::size_t n, double* out) {
+                                                   std::size_t n, Sink& sink, std::size_t first) {
   std::size_t m = 0;
   for (; m + 4 <= n; m += 4) {
     Lanes d[4][3];
@@ -108,17 +168,13 @@ template <class T>
     Vec3Lanes along, across;
     curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
     curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
-    for (int l = 0; l < 4; ++l) {
-      double* o = out + 6 * (m + l);
-      o[0] = along.x[l], o[1] = along.y[l], o[2] = along.z[l];
-      o[3] = across.x[l], o[4] = across.y[l], o[5] = across.z[l];
-    }
+    sink.lanes(first + m, along, across);
   }
   for (; m < n; ++m) {
     double d[4][3];
     derivatives(p, u[m], d);
-    curvature_vector(Vec3::load(d[0]), Vec3::load(d[1])).store(out + 6 * m);
-    curvature_vector(Vec3::load(d[2]), Vec3::load(d[3])).store(out + 6 * m + 3);
+    sink.one(first + m, curvature_vector(Vec3::load(d[0]), Vec3::load(d[1])),
+             curvature_vector(Vec3::load(d[2]), Vec3::load(d[3])));
   }
 }
 
@@ -129,26 +185,29 @@ struct RowJob {
   std::size_t count, step;
   const double* u;
 };
-[[gnu::always_inline]] inline void curvature_row_body(const RowJob& job, const Blend& v,
-                                                      double* out) {
+template <class Sink>
+[[gnu::always_inline]] inline void curvature_row_body(const RowJob& job, const Blend& v, Sink& sink,
+                                                      std::size_t first) {
   Lanes w[4];
   for (int k = 0; k < 4; ++k) w[k] = Lanes{v.f[k], v.d1[k], v.d2[k], 0};
   for (std::size_t j = 0; j < job.count; ++j) {
     Polynomials p;
     polynomials(job.patch_row + 48 * j, w, p);
     const std::size_t n = j + 1 < job.count ? job.step : job.step + 1;
-    patch_curvature(p, job.u, n, out + 6 * job.step * j);
+    patch_curvature(p, job.u, n, sink, first + job.step * j);
   }
 }
 
-void curvature_row_base(const RowJob& job, const Blend& v, double* out) {
-  curvature_row_body(job, v, out);
+template <class Sink>
+void curvature_row_base(const RowJob& job, const Blend& v, Sink& sink, std::size_t first) {
+  curvature_row_body(job, v, sink, first);
 }
 
 #if IGDS_X86
+template <class Sink>
 __attribute__((target("avx2"))) void curvature_row_avx2(const RowJob& job, const Blend& v,
-                                                        double* out) {
-  curvature_row_body(job, v, out);
+                                                        Sink& sink, std::size_t first) {
+  curvature_row_body(job, v, sink, first);
 }
 #endif
 
@@ -201,11 +260,12 @@ CurvatureRows::CurvatureRows(const SurfaceInput& in, const Array& patches,
   for (std::size_t k = 0; k <= step_; ++k) column_u_[k] = double(k) / double(step_);
 }
 
-void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out) {
+template <class Sink>
+void CurvatureRows::each_row(std::size_t first, std::size_t last, Sink& sink) {
   const std::size_t pc = patches_in_row_;
-  auto row_curvature = curvature_row_base;
+  auto row_curvature = curvature_row_base<Sink>;
 #if IGDS_X86
-  if (best_kernels()) row_curvature = curvature_row_avx2;
+  if (best_kernels()) row_curvature = curvature_row_avx2<Sink>;
 #endif
   for (std::size_t i = first; i < last; ++i) {
     const Place row = place(i, std::size_t(in_.nocur), std::size_t(in_.intcu));
@@ -214,9 +274,78 @@ void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out)
       made_row_ = row.patch;
     }
     const double* patch_row = source_ ? made_.data() : patches_.data() + 48 * row.patch * pc;
-    row_curvature({patch_row, pc, step_, column_u_.data()}, blend(row.s),
-                  out + 6 * cols_ * (i - first));
+    row_curvature({patch_row, pc, step_, column_u_.data()}, blend(row.s), sink,
+                  cols_ * (i - first));
   }
+}
+
+void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out) {
+  Keep keep{out};
+  each_row(first, last, keep);
+}
+
+void CurvatureRows::combs(std::size_t first, std::size_t last, LargestCurvature& largest,
+                          const ProjectiveMap* map, double* images) {
+  if (map) {
+    Measure<true> measure{map, images, largest};
+    each_row(first, last, measure);
+    measure.finish();
+  } else {
+    Measure<false> measure{nullptr, nullptr, largest};
+    each_row(first, last, measure);
+    measure.finish();
+  }
+}
+
+void LargestCurvature::add(Vec3 k) {
+  const double k2 = dot(k, k);
+  if (k2 <= squared) return;
+  if (std::isfinite(k2))
+    squared = k2;
+  else if (const double length = norm(k); std::isfinite(length))
+    overflowing = std::max(overflowing, length);
+}
+
+void LargestCurvature::add(const LargestCurvature& other) {
+  squared = std::max(squared, other.squared);
+  overflowing = std::max(overflowing, other.overflowing);
+}
+
+double LargestCurvature::length() const {
+  return std::max(std::sqrt(squared), overflowing);
+}
+
+std::size_t comb_ends(const double* points, double* combs, std::size_t n, double scale) {
+  // A block at a time, x * 0 summed as in first_not_finite; a block whose sum is not 0 is searched.
+  constexpr std::size_t block = 1024;
+  for (std::size_t from = 0; from < n; from += block) {
+    const std::size_t to = std::min(n, from + block);
+    Lanes seen = {0, 0, 0, 0};
+    for (std::size_t k = from; k < to; ++k) {
+      const double x = points[2 * k], y = points[2 * k + 1];
+      Lanes comb;
+      std::memcpy(&comb, combs + 4 * k, sizeof comb);
+      comb = Lanes{x, y, x, y} - scale * comb;
+      std::memcpy(combs + 4 * k, &comb, sizeof comb);
+      seen += comb * 0.0;
+    }
+    if (seen[0] + seen[1] + seen[2] + seen[3] == 0) continue;
+    const std::size_t bad = first_not_finite(combs + 4 * from, 4 * (to - from));
+    if (bad < 4 * (to - from)) return (4 * from + bad) / 2;
+  }
+  return 2 * n;
+}
+
+void comb_vectors(Vec3 along, Vec3 across, const ProjectiveMap* map, double* images,
+                  LargestCurvature& largest) {
+  largest.add(along);
+  largest.add(across);
+  if (!map) return;
+  const auto& r = map->m;
+  images[0] = r[0][0] * along.x + r[0][1] * along.y + r[0][2] * along.z;
+  images[1] = r[1][0] * along.x + r[1][1] * along.y + r[1][2] * along.z;
+  images[2] = r[0][0] * across.x + r[0][1] * across.y + r[0][2] * across.z;
+  images[3] = r[1][0] * across.x + r[1][1] * across.y + r[1][2] * across.z;
 }
 
 Array grid_curvature(const SurfaceInput& in, const Array& patches) {

@@ -7,6 +7,7 @@
 
 #include "workspace/kernels/array.h"
 #include "workspace/kernels/coons.h"
+#include "workspace/kernels/project.h"
 #include "workspace/kernels/surface.h"
 #include "workspace/kernels/vec3.h"
 
@@ -25,6 +26,28 @@ Vec3 curvature_vector(Vec3 d1, Vec3 d2);
 // DataError for arrays of another shape.
 Array grid_curvature(const SurfaceInput& input, const Array& patches);
 
+// The largest length of some curvature vectors (the scale of their combs): the largest square that
+// is finite, and the largest length among the vectors whose square is not (zero for none); a
+// vector that is not finite has none.
+struct LargestCurvature {
+  double squared = 0, overflowing = 0;
+  void add(Vec3 k);
+  void add(const LargestCurvature& other);
+  double length() const;
+};
+
+// A point's two curvature vectors (the curve's, then the stringer's) measured into `largest`, and
+// with `map` (a parallel projection: linear, kernels/project.h) their images by its linear part
+// written to images[0..4): the curve's x y, then the stringer's.
+void comb_vectors(Vec3 along, Vec3 across, const ProjectiveMap* map, double* images,
+                  LargestCurvature& largest);
+
+// The combs of n points from the images of their curvature vectors (combs[4k..4k+4), as
+// comb_vectors writes them) and the points' images (points[2k..2k+2)): each end is its point's
+// image less `scale` times its vector's, written over it. Returns the first comb (two a point)
+// whose end is not finite, or 2 n.
+std::size_t comb_ends(const double* points, double* combs, std::size_t n, double scale);
+
 // The same for rows of INTPN, a few at a time, on the calling thread: for work on a large grid
 // (not for a single line). With `source`, each row of patch matrices is made from it as it is
 // needed and `patches` is not read. One per thread: it keeps its buffers, and the row of patch
@@ -35,8 +58,15 @@ class CurvatureRows {
                 const PatchSource* source = nullptr);
   // Rows [first, last) into `out` (6 (last - first) cols numbers).
   void operator()(std::size_t first, std::size_t last, double* out);
+  // Rows [first, last) not kept: comb_vectors of each point, the images to `images` (4 (last -
+  // first) cols numbers) with `map`.
+  void combs(std::size_t first, std::size_t last, LargestCurvature& largest,
+             const ProjectiveMap* map = nullptr, double* images = nullptr);
 
  private:
+  template <class Sink>
+  void each_row(std::size_t first, std::size_t last, Sink& sink);
+
   SurfaceInput in_;
   const Array& patches_;
   const PatchSource* source_;
