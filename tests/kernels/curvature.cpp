@@ -248,6 +248,39 @@ TEST_CASE("four points at a time and one at a time, vector and baseline code: th
   use_kernel_code(KernelCode::best);
 }
 
+TEST_CASE(
+    "four patches at a time, four points of a patch at a time, one at a time: the same bits") {
+  // Every patch of a row the same matrix: a point at u is then the same in each patch of the row,
+  // whichever way it is made. With 6 points a patch (7 in the last) and 10 patches a row, the
+  // first eight go four patches at a time, the ninth a patch at a time, and the last's u = 2/3
+  // (its fifth point) one at a time.
+  const test::Grid g = test::wavy_grid(5, 11, 3);
+  const SurfaceInput in{g.nocur, g.nostr, 2, 5, &g.inppn, &g.inptg};
+  Array same = interpolate(in).patches;
+  const std::size_t per_row = std::size_t(g.nostr) - 1;
+  for (std::size_t i = 0; i + 1 < std::size_t(g.nocur); ++i)
+    for (std::size_t j = 1; j < per_row; ++j)
+      std::copy_n(same.data() + 48 * per_row * i, 48, same.data() + 48 * (per_row * i + j));
+  const GridShape shape = intpn_shape(g.nocur, g.nostr, 2, 5);
+  for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+    CAPTURE(code == KernelCode::best);
+    use_kernel_code(code);
+    const Array bends = grid_curvature(in, same);
+    for (std::size_t i = 0; i < shape.rows; ++i)
+      for (std::size_t m = 0; m < 6; ++m)
+        for (std::size_t j = 0; j + 1 < per_row; ++j) {
+          CAPTURE(i);
+          CAPTURE(m);
+          CAPTURE(j);
+          const std::size_t last = i * shape.cols + 6 * (per_row - 1) + m;
+          const std::size_t here = i * shape.cols + 6 * j + m;
+          CHECK(same_bits(bends.data() + 6 * here, bends.data() + 6 * last));
+          CHECK(same_bits(bends.data() + 6 * here + 3, bends.data() + 6 * last + 3));
+        }
+  }
+  use_kernel_code(KernelCode::best);
+}
+
 TEST_CASE("patches of another shape are refused, not read") {
   const test::Grid g = test::wavy_grid(3, 3, 1);
   const SurfaceInput in{g.nocur, g.nostr, 1, 1, &g.inppn, &g.inptg};

@@ -63,9 +63,11 @@ struct Vec3Lanes {
 
 // Per coordinate, the polynomials in u of a patch's curve's first and second derivatives, then of
 // its stringer's (the curves of the first and second derivatives in v), lowest power first.
-struct Polynomials {
-  double du[3][3], duu[2][3], dv[4][3], dvv[4][3];
+template <class T>
+struct PolynomialsOf {
+  T du[3][3], duu[2][3], dv[4][3], dvv[4][3];
 };
+using Polynomials = PolynomialsOf<double>;
 
 // The polynomials of patch matrix `m` (coons.h) on the grid line at v, whose Hermite blends and
 // their derivatives are lanes 0, 1 and 2 of w[k] (the k-th of each).
@@ -88,10 +90,36 @@ struct Polynomials {
   }
 }
 
-// Pu, Puu, Pv and Pvv (d[0..3], per coordinate) at u = s by Horner's rule: a number, or four in
-// lanes, with the same operations.
-template <class T>
-[[gnu::always_inline]] inline void derivatives(const Polynomials& p, const T& s, T d[4][3]) {
+// The same for four patch matrices at once, m[0..48) and the three after it (48 numbers apart),
+// patch l in lane l: blend b's products are then those of lane b above, with the same operations.
+[[gnu::always_inline]] inline void polynomials(const double* m, const Blend& v,
+                                               PolynomialsOf<Lanes>& p) {
+  const double* const w[3] = {v.f, v.d1, v.d2};
+  for (int c = 0; c < 3; ++c) {
+    Lanes a[3][4], c2[3], c3[3];
+    for (int r = 0; r < 4; ++r) {
+      // mk: element k of row r of each patch's M.
+      const double* e = m + 16 * c + 4 * r;
+      const Lanes m0 = {e[0], e[48], e[96], e[144]}, m1 = {e[1], e[49], e[97], e[145]};
+      const Lanes m2 = {e[2], e[50], e[98], e[146]}, m3 = {e[3], e[51], e[99], e[147]};
+      for (int b = 0; b < 3; ++b)
+        a[b][r] = m0 * w[b][0] + m1 * w[b][1] + m2 * w[b][2] + m3 * w[b][3];
+    }
+    for (int b = 0; b < 3; ++b) {
+      c2[b] = 3 * (a[b][1] - a[b][0]) - 2 * a[b][2] - a[b][3];
+      c3[b] = 2 * (a[b][0] - a[b][1]) + a[b][2] + a[b][3];
+    }
+    p.du[0][c] = a[0][2], p.du[1][c] = 2 * c2[0], p.du[2][c] = 3 * c3[0];
+    p.duu[0][c] = 2 * c2[0], p.duu[1][c] = 6 * c3[0];
+    p.dv[0][c] = a[1][0], p.dv[1][c] = a[1][2], p.dv[2][c] = c2[1], p.dv[3][c] = c3[1];
+    p.dvv[0][c] = a[2][0], p.dvv[1][c] = a[2][2], p.dvv[2][c] = c2[2], p.dvv[3][c] = c3[2];
+  }
+}
+
+// Pu, Puu, Pv and Pvv (d[0..3], per coordinate) at u = s by Horner's rule: a number, four points
+// of a patch in lanes, or one point of four patches, with the same operations.
+template <class T, class P, class S>
+[[gnu::always_inline]] inline void derivatives(const PolynomialsOf<P>& p, const S& s, T d[4][3]) {
   for (int c = 0; c < 3; ++c) {
     d[0][c] = (p.du[2][c] * s + p.du[1][c]) * s + p.du[0][c];
     d[1][c] = p.duu[1][c] * s + p.duu[0][c];
@@ -100,14 +128,14 @@ template <class T>
   }
 }
 
-// What becomes of the curvature vectors of a patch's points, four at a time (`lanes`, point m
-// and the three after it) or one at a time (`one`): kept, six numbers a point ...
+// What becomes of the curvature vectors of the points, four at a time (`lanes`: lane l is point
+// m + l apart) or one at a time (`one`): kept, six numbers a point ...
 struct Keep {
   double* out;
-  [[gnu::always_inline]] inline void lanes(std::size_t m, const Vec3Lanes& along,
+  [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
                                            const Vec3Lanes& across) {
     for (int l = 0; l < 4; ++l) {
-      double* o = out + 6 * (m + l);
+      double* o = out + 6 * (m + l * apart);
       o[0] = along.x[l], o[1] = along.y[l], o[2] = along.z[l];
       o[3] = across.x[l], o[4] = across.y[l], o[5] = across.z[l];
     }
@@ -134,7 +162,7 @@ struct Measure {
     }
     for (int l = 0; l < 4; ++l) largest.add({k.x[l], k.y[l], k.z[l]});
   }
-  [[gnu::always_inline]] inline void lanes(std::size_t m, const Vec3Lanes& along,
+  [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
                                            const Vec3Lanes& across) {
     take(along);
     take(across);
@@ -145,7 +173,7 @@ struct Measure {
                            r[0][0] * across.x + r[0][1] * across.y + r[0][2] * across.z,
                            r[1][0] * across.x + r[1][1] * across.y + r[1][2] * across.z};
       for (int l = 0; l < 4; ++l)
-        for (int c = 0; c < 4; ++c) images[4 * (m + l) + c] = xy[c][l];
+        for (int c = 0; c < 4; ++c) images[4 * (m + l * apart) + c] = xy[c][l];
     }
   }
   void one(std::size_t m, Vec3 along, Vec3 across) {
@@ -168,7 +196,7 @@ template <class Sink>
     Vec3Lanes along, across;
     curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
     curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
-    sink.lanes(first + m, along, across);
+    sink.lanes(first + m, 1, along, across);
   }
   for (; m < n; ++m) {
     double d[4][3];
@@ -188,9 +216,25 @@ struct RowJob {
 template <class Sink>
 [[gnu::always_inline]] inline void curvature_row_body(const RowJob& job, const Blend& v, Sink& sink,
                                                       std::size_t first) {
+  std::size_t j = 0;
+  // Four patches at a time (the last has a point more: not among them), patch j + l in lane l,
+  // their points at u one after the other.
+  for (; j + 4 < job.count; j += 4) {
+    PolynomialsOf<Lanes> p;
+    polynomials(job.patch_row + 48 * j, v, p);
+    for (std::size_t m = 0; m < job.step; ++m) {
+      Lanes d[4][3];
+      derivatives(p, job.u[m], d);
+      Vec3Lanes along, across;
+      curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
+      curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
+      sink.lanes(first + job.step * j + m, job.step, along, across);
+    }
+  }
+  // The others a patch at a time: the blends in lanes, then four points at a time.
   Lanes w[4];
   for (int k = 0; k < 4; ++k) w[k] = Lanes{v.f[k], v.d1[k], v.d2[k], 0};
-  for (std::size_t j = 0; j < job.count; ++j) {
+  for (; j < job.count; ++j) {
     Polynomials p;
     polynomials(job.patch_row + 48 * j, w, p);
     const std::size_t n = j + 1 < job.count ? job.step : job.step + 1;
