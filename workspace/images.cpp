@@ -261,14 +261,7 @@ Image comb_image(const Workspace& ws, const View& view) {
     }
   } else {
     // The comb's end in space, away from the centre of curvature (so that a comb stands outside
-    // the surface's convex side and combs do not cross in a tight bend), written over its vector.
-    auto to_ends = [&](std::size_t first, std::size_t last, double* bends) {
-      for (std::size_t k = first * cols; k < last * cols; ++k)
-        for (std::size_t d = 0; d < 2; ++d) {
-          double* at = bends + 6 * (k - first * cols) + 3 * d;
-          (points[k] - scale * Vec3::load(at)).store(at);
-        }
-    };
+    // the surface's convex side and combs do not cross in a tight bend).
     // CONIC is not linear: the ends are made again once s is known, and projected as they are
     // made. A view point inside the box of all the ends is refused before any other report, as
     // for any image (project_image): a part's own findings are reported after that box is known.
@@ -279,11 +272,16 @@ Image comb_image(const Workspace& ws, const View& view) {
       const std::size_t n = 2 * (last - first) * cols;
       std::vector<double>& bends = ends[part];
       bends.resize(std::max(bends.size(), 3 * n));
-      if (curvature)
-        (*curvature)(first, last, bends.data());
-      else
-        std::copy_n(line_bends.data() + 6 * cols * first, 3 * n, bends.data());
-      to_ends(first, last, bends.data());
+      const double* at = ws.intpn.data() + 3 * cols * first;
+      if (curvature) {
+        curvature->ends(first, last, at, scale, bends.data());
+      } else {
+        for (std::size_t k = 0; k < n / 2; ++k) {
+          const double* bend = line_bends.data() + 6 * (cols * first + k);
+          comb_ends(Vec3::load(at + 3 * k), Vec3::load(bend), Vec3::load(bend + 3), scale,
+                    bends.data() + 6 * k);
+        }
+      }
       const ProjectedPart p =
           project_part(view, centre, Vec3View(bends.data(), n),
                        MutablePoint2View(image.combs.data() + 4 * cols * first, n));

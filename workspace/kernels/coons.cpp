@@ -67,14 +67,16 @@ std::size_t coons_patch_row(const PatchSource& source, std::size_t i, double* ou
   };
   std::size_t not_finite = (ns - 1) * 48;
   double* m = out;
+  // P(a,b) = P[i+b][j+a]; Pu(a,b) is scaled by the chord of curve i+b's arc j, Pv(a,b) by the
+  // chord of stringer j+a's arc i (docs/kernels.md), the same chords the splines used: stringer
+  // j+1's is the next patch's first.
+  double lv1 = scale(chord_length(points[i * ns], points[i * ns + ns]));
   for (std::size_t j = 0; j + 1 < ns; ++j, m += 48) {
     const std::size_t k00 = i * ns + j, k10 = k00 + 1, k01 = k00 + ns, k11 = k01 + 1;
-    // P(a,b) = P[i+b][j+a]; Pu(a,b) is scaled by the chord of curve i+b's arc j, Pv(a,b) by the
-    // chord of stringer j+a's arc i (docs/kernels.md), the same chords the splines used.
     const double lu0 = scale(chord_length(points[k00], points[k10]));
     const double lu1 = scale(chord_length(points[k01], points[k11]));
-    const double lv0 = scale(chord_length(points[k00], points[k01]));
-    const double lv1 = scale(chord_length(points[k10], points[k11]));
+    const double lv0 = lv1;
+    lv1 = scale(chord_length(points[k10], points[k11]));
     // The twists T(a,b) of corner P(a,b) fill the lower right block (docs/marks.md).
     const Vec3 rows[4][4] = {
         {points[k00], points[k01], lv0 * tv[k00], lv0 * tv[k01]},

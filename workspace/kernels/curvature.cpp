@@ -146,6 +146,32 @@ struct Keep {
   }
 };
 
+// ... or the ends of the points' combs, p - s k, six numbers a point (CurvatureRows::ends) ...
+struct Ends {
+  const double* points;  // the points, three numbers each
+  double scale;
+  double* out;
+  [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
+                                           const Vec3Lanes& across) {
+    const double* q = points + 3 * m;
+    const std::size_t s = 3 * apart;
+    const Vec3Lanes p = {Lanes{q[0], q[s], q[2 * s], q[3 * s]},
+                         Lanes{q[1], q[s + 1], q[2 * s + 1], q[3 * s + 1]},
+                         Lanes{q[2], q[s + 2], q[2 * s + 2], q[3 * s + 2]}};
+    const Vec3Lanes ends[2] = {
+        {p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z},
+        {p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z}};
+    for (int l = 0; l < 4; ++l) {
+      double* o = out + 6 * (m + l * apart);
+      for (int d = 0; d < 2; ++d)
+        o[3 * d] = ends[d].x[l], o[3 * d + 1] = ends[d].y[l], o[3 * d + 2] = ends[d].z[l];
+    }
+  }
+  void one(std::size_t m, Vec3 along, Vec3 across) {
+    comb_ends(Vec3::load(points + 3 * m), along, across, scale, out + 6 * m);
+  }
+};
+
 // ... or measured and, for a parallel projection, projected (CurvatureRows::combs).
 template <bool project>
 struct Measure {
@@ -326,6 +352,17 @@ void CurvatureRows::each_row(std::size_t first, std::size_t last, Sink& sink) {
 void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out) {
   Keep keep{out};
   each_row(first, last, keep);
+}
+
+void CurvatureRows::ends(std::size_t first, std::size_t last, const double* points, double scale,
+                         double* out) {
+  Ends ends{points, scale, out};
+  each_row(first, last, ends);
+}
+
+void comb_ends(Vec3 p, Vec3 along, Vec3 across, double scale, double* out) {
+  (p - scale * along).store(out);
+  (p - scale * across).store(out + 3);
 }
 
 void CurvatureRows::combs(std::size_t first, std::size_t last, LargestCurvature& largest,

@@ -48,6 +48,10 @@ void comb_vectors(Vec3 along, Vec3 across, const ProjectiveMap* map, double* ima
 // whose end is not finite, or 2 n.
 std::size_t comb_ends(const double* points, double* combs, std::size_t n, double scale);
 
+// A point's two comb ends in space, p - scale k (the curve's, then the stringer's), into
+// out[0..6).
+void comb_ends(Vec3 p, Vec3 along, Vec3 across, double scale, double* out);
+
 // The same for rows of INTPN, a few at a time, on the calling thread: for work on a large grid
 // (not for a single line). With `source`, each row of patch matrices is made from it as it is
 // needed and `patches` is not read. One per thread: it keeps its buffers, and the row of patch
@@ -58,6 +62,9 @@ class CurvatureRows {
                 const PatchSource* source = nullptr);
   // Rows [first, last) into `out` (6 (last - first) cols numbers).
   void operator()(std::size_t first, std::size_t last, double* out);
+  // Rows [first, last) as comb_ends of their points (`points`: 3 (last - first) cols numbers,
+  // INTPN's) into `out` (6 (last - first) cols numbers).
+  void ends(std::size_t first, std::size_t last, const double* points, double scale, double* out);
   // Rows [first, last) not kept: comb_vectors of each point, the images to `images` (4 (last -
   // first) cols numbers) with `map`.
   void combs(std::size_t first, std::size_t last, LargestCurvature& largest,
