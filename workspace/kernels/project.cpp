@@ -125,14 +125,13 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
   return all;
 }
 
-// std::min(lo, v) and std::max(hi, v) of each lane.
+// std::min(lo, v) and std::max(hi, v) of each lane (one MINPD or MAXPD: the same choice, lo or hi
+// kept when a lane is NaN or both are zeros).
 [[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
-  const LaneMask less = v < lo;  // std::min(lo, v)
-  lo = Lanes((LaneMask(v) & less) | (LaneMask(lo) & ~less));
+  lo = v < lo ? v : lo;
 }
 [[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
-  const LaneMask more = hi < v;  // std::max(hi, v)
-  hi = Lanes((LaneMask(v) & more) | (LaneMask(hi) & ~more));
+  hi = hi < v ? v : hi;
 }
 // Four points' coordinates, `stride` doubles apart from p, in lanes.
 struct PointLanes {
