@@ -245,8 +245,8 @@ Image comb_image(const Workspace& ws, const View& view) {
     // The image of a comb's end p - s k is the image of p less s times that of k.
     auto combs = [&](std::size_t first, std::size_t last) {
       const std::size_t bad =
-          comb_ends(image.points.data() + 2 * cols * first, image.combs.data() + 4 * cols * first,
-                    (last - first) * cols, scale);
+          comb_images(image.points.data() + 2 * cols * first, image.combs.data() + 4 * cols * first,
+                      (last - first) * cols, scale);
       if (bad < 2 * (last - first) * cols) keep_least(not_finite, 2 * cols * first + bad);
     };
     if (known) {
@@ -270,20 +270,20 @@ Image comb_image(const Workspace& ws, const View& view) {
     std::vector<std::vector<double>> ends(parts);
     by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
       const std::size_t n = 2 * (last - first) * cols;
-      std::vector<double>& bends = ends[part];
-      bends.resize(std::max(bends.size(), 3 * n));
+      std::vector<double>& in_space = ends[part];
+      in_space.resize(std::max(in_space.size(), 3 * n));
       const double* at = ws.intpn.data() + 3 * cols * first;
       if (curvature) {
-        curvature->ends(first, last, at, scale, bends.data());
+        curvature->ends(first, last, at, scale, in_space.data());
       } else {
         for (std::size_t k = 0; k < n / 2; ++k) {
           const double* bend = line_bends.data() + 6 * (cols * first + k);
           comb_ends(Vec3::load(at + 3 * k), Vec3::load(bend), Vec3::load(bend + 3), scale,
-                    bends.data() + 6 * k);
+                    in_space.data() + 6 * k);
         }
       }
       const ProjectedPart p =
-          project_part(view, centre, Vec3View(bends.data(), n),
+          project_part(view, centre, Vec3View(in_space.data(), n),
                        MutablePoint2View(image.combs.data() + 4 * cols * first, n));
       found_ends[part].behind = found_ends[part].behind || p.behind;
       found_ends[part].about_eye.add(p.about_eye);

@@ -396,7 +396,7 @@ double LargestCurvature::length() const {
   return std::max(std::sqrt(squared), overflowing);
 }
 
-std::size_t comb_ends(const double* points, double* combs, std::size_t n, double scale) {
+std::size_t comb_images(const double* points, double* combs, std::size_t n, double scale) {
   // A block at a time, x * 0 summed as in first_not_finite; a block whose sum is not 0 is searched.
   constexpr std::size_t block = 1024;
   for (std::size_t from = 0; from < n; from += block) {

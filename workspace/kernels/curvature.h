@@ -42,18 +42,18 @@ struct LargestCurvature {
 void comb_vectors(Vec3 along, Vec3 across, const ProjectiveMap* map, double* images,
                   LargestCurvature& largest);
 
-// The combs of n points from the images of their curvature vectors (combs[4k..4k+4), as
+// The combs' images of n points from the images of their curvature vectors (combs[4k..4k+4), as
 // comb_vectors writes them) and the points' images (points[2k..2k+2)): each end is its point's
 // image less `scale` times its vector's, written over it. Returns the first comb (two a point)
 // whose end is not finite, or 2 n.
-std::size_t comb_ends(const double* points, double* combs, std::size_t n, double scale);
+std::size_t comb_images(const double* points, double* combs, std::size_t n, double scale);
 
 // A point's two comb ends in space, p - scale k (the curve's, then the stringer's), into
 // out[0..6).
 void comb_ends(Vec3 p, Vec3 along, Vec3 across, double scale, double* out);
 
-// The same for rows of INTPN, a few at a time, on the calling thread: for work on a large grid
-// (not for a single line). With `source`, each row of patch matrices is made from it as it is
+// grid_curvature for rows of INTPN, a few at a time, on the calling thread: for work on a large
+// grid (not for a single line). With `source`, each row of patch matrices is made from it as it is
 // needed and `patches` is not read. One per thread: it keeps its buffers, and the row of patch
 // matrices it made last, from one call to the next. Throws DataError for arrays of another shape.
 class CurvatureRows {

@@ -522,7 +522,8 @@ void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2Vie
 namespace {
 
 // Four points at a time, each lane a box of its own (Box3::add's comparisons), then the points
-// left over one at a time.
+// left over one at a time. (The same box; where its side is a zero met with both signs, the sign
+// kept may be the other.)
 [[gnu::always_inline]] inline Box3 box_body(Vec3View points) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double* p = points.data();
