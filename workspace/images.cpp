@@ -266,25 +266,27 @@ Image comb_image(const Workspace& ws, const View& view) {
     // made. A view point inside the box of all the ends is refused before any other report, as
     // for any image (project_image): a part's own findings are reported after that box is known.
     const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
+    const Vec3 eye{view.parameters[0], view.parameters[1], view.parameters[2]};
+    const ConicFrame frame = conic_frame(eye, centre);  // the surface's image was made with it
     std::vector<ProjectedPart> found_ends(parts);
-    std::vector<std::vector<double>> ends(parts);
+    std::vector<std::vector<double>> line_ends(parts);  // a single line's, in space
     by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
       const std::size_t n = 2 * (last - first) * cols;
-      std::vector<double>& in_space = ends[part];
-      in_space.resize(std::max(in_space.size(), 3 * n));
       const double* at = ws.intpn.data() + 3 * cols * first;
+      double* xy = image.combs.data() + 4 * cols * first;
+      ProjectedPart p;
       if (curvature) {
-        curvature->ends(first, last, at, scale, in_space.data());
+        p = curvature->conic_combs(first, last, at, scale, frame, eye, xy);
       } else {
+        std::vector<double>& in_space = line_ends[part];
+        in_space.resize(3 * n);
         for (std::size_t k = 0; k < n / 2; ++k) {
           const double* bend = line_bends.data() + 6 * (cols * first + k);
           comb_ends(Vec3::load(at + 3 * k), Vec3::load(bend), Vec3::load(bend + 3), scale,
                     in_space.data() + 6 * k);
         }
+        p = project_part(view, centre, Vec3View(in_space.data(), n), MutablePoint2View(xy, n));
       }
-      const ProjectedPart p =
-          project_part(view, centre, Vec3View(in_space.data(), n),
-                       MutablePoint2View(image.combs.data() + 4 * cols * first, n));
       found_ends[part].behind = found_ends[part].behind || p.behind;
       found_ends[part].about_eye.add(p.about_eye);
       if (p.not_finite < n) keep_least(not_finite, 2 * cols * first + p.not_finite);

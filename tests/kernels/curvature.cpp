@@ -12,9 +12,11 @@
 #include <vector>
 
 #include "tests/kernels/helpers.h"
+#include "workspace/kernels/conic_lanes.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
 #include "workspace/kernels/processor.h"
+#include "workspace/kernels/project.h"
 #include "workspace/kernels/surface.h"
 
 using namespace igds;
@@ -352,4 +354,52 @@ TEST_CASE("the largest curvature: squares compared, lengths where they overflow,
   other.add(largest);
   CHECK(other.squared == 36);
   CHECK(other.length() == 1e200);
+}
+
+TEST_CASE("the combs seen from an eye as they are made: as their ends projected one at a time") {
+  // 10 patches a row, 6 points a patch (7 in the last): four patches at a time, a patch at a
+  // time and one point at a time. One point far out, whose combs' images overflow, and one that is
+  // not a number (behind the eye, and not finite), each in turn where each way makes it.
+  const test::Grid g = test::wavy_grid(5, 11, 3);
+  const SurfaceInput in{g.nocur, g.nostr, 2, 5, &g.inppn, &g.inptg};
+  const Surface s = interpolate(in);
+  const GridShape shape = intpn_shape(g.nocur, g.nostr, 2, 5);
+  const std::size_t n = shape.rows * shape.cols;
+  const Vec3 centre = bounding_box_centre(as_vec3(g.inppn)), eye{-40, -30, 25};
+  const View view{Projection::conic, {eye.x, eye.y, eye.z}};
+  const ConicFrame frame = conic_frame(eye, centre);
+  const Array bends = grid_curvature(in, s.patches);
+  const double scale = 0.5;
+  auto same = [](double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0 || (std::isnan(a) && std::isnan(b));
+  };
+  const std::size_t row = 2 * shape.cols;
+  for (const std::size_t odd : {std::size_t(0), row + 1, row + 6 * 8 + 2, row + 6 * 9 + 5})
+    for (const double value : {1e308, std::numeric_limits<double>::quiet_NaN(), 3.0})
+      for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+        CAPTURE(odd);
+        CAPTURE(value);
+        CAPTURE(code == KernelCode::best);
+        use_kernel_code(code);
+        Array points = s.intpn;
+        points.ravel[3 * odd] = value;
+        // The ends in space one at a time, then projected as any points are.
+        std::vector<double> ends(6 * n), expected(4 * n), images(4 * n);
+        for (std::size_t k = 0; k < n; ++k)
+          comb_ends(Vec3::load(points.data() + 3 * k), bend(bends, k, 0), bend(bends, k, 1), scale,
+                    ends.data() + 6 * k);
+        const ProjectedPart want = project_part(view, centre, Vec3View(ends.data(), 2 * n),
+                                                MutablePoint2View(expected.data(), 2 * n));
+        const ProjectedPart got =
+            CurvatureRows(in, s.patches)
+                .conic_combs(0, shape.rows, points.data(), scale, frame, eye, images.data());
+        CHECK(std::equal(images.begin(), images.end(), expected.begin(), same));
+        CHECK(got.not_finite == want.not_finite);
+        CHECK(got.behind == want.behind);
+        CHECK(got.about_eye.lo == want.about_eye.lo);
+        CHECK(got.about_eye.hi == want.about_eye.hi);
+        if (value != 3.0) CHECK(got.not_finite == 2 * odd);
+        CHECK(got.behind == std::isnan(value));
+      }
+  use_kernel_code(KernelCode::best);
 }

@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "workspace/kernels/conic_lanes.h"
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/fit.h"
@@ -146,11 +147,14 @@ struct Keep {
   }
 };
 
-// ... or the ends of the points' combs, p - s k, six numbers a point (CurvatureRows::ends) ...
-struct Ends {
+// ... or the images seen from an eye of the points' combs' ends p - s k (CurvatureRows::
+// conic_combs), four numbers a point, with what the images find ...
+struct ConicCombs {
   const double* points;  // the points, three numbers each
   double scale;
   double* out;
+  ConicImages conic;
+  Lanes seen = {0, 0, 0, 0};  // x * 0 of the images, summed
   [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
                                            const Vec3Lanes& across) {
     const double* q = points + 3 * m;
@@ -158,17 +162,21 @@ struct Ends {
     const Vec3Lanes p = {Lanes{q[0], q[s], q[2 * s], q[3 * s]},
                          Lanes{q[1], q[s + 1], q[2 * s + 1], q[3 * s + 1]},
                          Lanes{q[2], q[s + 2], q[2 * s + 2], q[3 * s + 2]}};
-    const Vec3Lanes ends[2] = {
-        {p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z},
-        {p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z}};
+    Lanes x[2], y[2];
+    conic.image(p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z, x[0], y[0]);
+    conic.image(p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z, x[1], y[1]);
     for (int l = 0; l < 4; ++l) {
-      double* o = out + 6 * (m + l * apart);
-      for (int d = 0; d < 2; ++d)
-        o[3 * d] = ends[d].x[l], o[3 * d + 1] = ends[d].y[l], o[3 * d + 2] = ends[d].z[l];
+      double* o = out + 4 * (m + l * apart);
+      o[0] = x[0][l], o[1] = y[0][l], o[2] = x[1][l], o[3] = y[1][l];
     }
+    seen += (x[0] * 0.0 + y[0] * 0.0) + (x[1] * 0.0 + y[1] * 0.0);
   }
   void one(std::size_t m, Vec3 along, Vec3 across) {
-    comb_ends(Vec3::load(points + 3 * m), along, across, scale, out + 6 * m);
+    const Vec3 p = Vec3::load(points + 3 * m);
+    const Point2 a = conic.image(p - scale * along), b = conic.image(p - scale * across);
+    a.store(out + 4 * m);
+    b.store(out + 4 * m + 2);
+    seen[0] += (a.x * 0.0 + a.y * 0.0) + (b.x * 0.0 + b.y * 0.0);
   }
 };
 
@@ -354,10 +362,18 @@ void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out)
   each_row(first, last, keep);
 }
 
-void CurvatureRows::ends(std::size_t first, std::size_t last, const double* points, double scale,
-                         double* out) {
-  Ends ends{points, scale, out};
-  each_row(first, last, ends);
+ProjectedPart CurvatureRows::conic_combs(std::size_t first, std::size_t last, const double* points,
+                                         double scale, const ConicFrame& frame, Vec3 eye,
+                                         double* images) {
+  ConicCombs combs{points, scale, images, ConicImages(frame, eye)};
+  each_row(first, last, combs);
+  combs.conic.finish();
+  const std::size_t n = 2 * (last - first) * cols_;
+  ProjectedPart found{n, combs.conic.behind, combs.conic.about_eye};
+  const Lanes& seen = combs.seen;
+  if (seen[0] + seen[1] + seen[2] + seen[3] != 0)
+    found.not_finite = first_not_finite(images, 2 * n) / 2;
+  return found;
 }
 
 void comb_ends(Vec3 p, Vec3 along, Vec3 across, double scale, double* out) {

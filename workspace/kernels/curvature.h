@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "workspace/kernels/array.h"
+#include "workspace/kernels/conic_lanes.h"
 #include "workspace/kernels/coons.h"
 #include "workspace/kernels/project.h"
 #include "workspace/kernels/surface.h"
@@ -62,9 +63,12 @@ class CurvatureRows {
                 const PatchSource* source = nullptr);
   // Rows [first, last) into `out` (6 (last - first) cols numbers).
   void operator()(std::size_t first, std::size_t last, double* out);
-  // Rows [first, last) as comb_ends of their points (`points`: 3 (last - first) cols numbers,
-  // INTPN's) into `out` (6 (last - first) cols numbers).
-  void ends(std::size_t first, std::size_t last, const double* points, double scale, double* out);
+  // Rows [first, last): the CONIC images seen from `eye` (`frame`: kernels/conic_lanes.h) of
+  // their combs' ends (comb_ends of their points, `points`: 3 (last - first) cols numbers, INTPN's)
+  // into `images` (4 (last - first) cols numbers: the curve's comb's x y, then the stringer's),
+  // with what project_part finds of them (not_finite counts the combs, two a point).
+  ProjectedPart conic_combs(std::size_t first, std::size_t last, const double* points, double scale,
+                            const ConicFrame& frame, Vec3 eye, double* images);
   // Rows [first, last) not kept: comb_vectors of each point, the images to `images` (4 (last -
   // first) cols numbers) with `map`.
   void combs(std::size_t first, std::size_t last, LargestCurvature& largest,

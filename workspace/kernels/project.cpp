@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "workspace/kernels/conic_lanes.h"
 #include "workspace/kernels/data_error.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/processor.h"
@@ -27,25 +28,6 @@ void check_sizes(Vec3View in, MutablePoint2View out) {
 
 Vec3 unit(Vec3 v) {
   return (1 / norm(v)) * v;
-}
-
-// CONIC's frame (docs/kernels.md): w towards the centre, r to the right of it, t up, z vertical on
-// the screen; D the distance from the eye to the centre.
-struct ConicFrame {
-  Vec3 w, r, t;
-  double distance;
-};
-
-ConicFrame conic_frame(Vec3 view, Vec3 centre) {
-  const Vec3 axis = centre - view;
-  const double distance = norm(axis);
-  if (!std::isfinite(distance)) refuse(DataError::Problem::projection_parameters);
-  if (!(distance > 0)) refuse(DataError::Problem::view_at_centre);
-  const Vec3 w = unit(axis);
-  Vec3 side = cross(w, Vec3{0, 0, 1});
-  if (norm(side) < 1e-6) side = cross(w, Vec3{0, 1, 0});
-  const Vec3 r = unit(side);
-  return {w, r, cross(r, w), distance};
 }
 
 // A parallel projection's 2 x 3 matrix: X = xx x + xy y, Y = yx x + yy y + yz z.
@@ -125,14 +107,6 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
   return all;
 }
 
-// std::min(lo, v) and std::max(hi, v) of each lane (one MINPD or MAXPD: the same choice, lo or hi
-// kept when a lane is NaN or both are zeros).
-[[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
-  lo = v < lo ? v : lo;
-}
-[[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
-  hi = hi < v ? v : hi;
-}
 // Four points' coordinates, `stride` doubles apart from p, in lanes.
 struct PointLanes {
   Lanes x, y, z;
@@ -247,40 +221,24 @@ struct ConicBlock {
 };
 [[gnu::always_inline]] inline double conic_block_body(const ConicBlock& c, const double* in,
                                                       std::size_t n, double* out, Pass& pass) {
-  const ConicFrame& f = *c.f;
-  const Vec3 eye = c.eye;
   const std::size_t s = c.in_stride, t = c.out_stride;
+  ConicImages conic(*c.f, c.eye);
   double seen = 0;
   std::size_t k = 0;
   if (n >= 4) {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    Lanes lo[3] = {{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
-    Lanes hi[3] = {-lo[0], -lo[0], -lo[0]};
     ImageLanes images;
-    LaneMask ahead = ~LaneMask{};
     for (; k + 4 <= n; k += 4) {
       const PointLanes v = load_lanes(in + s * k, s);
-      const Lanes q[3] = {v.x - eye.x, v.y - eye.y, v.z - eye.z};
-      const Lanes depth = q[0] * f.w.x + q[1] * f.w.y + q[2] * f.w.z;
-      ahead &= depth > 0;
-      for (int d = 0; d < 3; ++d) lower(lo[d], q[d]), raise(hi[d], q[d]);
-      images.put(f.distance * (q[0] * f.r.x + q[1] * f.r.y + q[2] * f.r.z) / depth,
-                 f.distance * (q[0] * f.t.x + q[1] * f.t.y + q[2] * f.t.z) / depth, out + t * k, t);
+      Lanes x, y;
+      conic.image(v.x, v.y, v.z, x, y);
+      images.put(x, y, out + t * k, t);
     }
-    for (int l = 0; l < 4; ++l) {
-      pass.behind = pass.behind || ahead[l] == 0;
-      pass.about_eye.add(Box3{{lo[0][l], lo[1][l], lo[2][l]}, {hi[0][l], hi[1][l], hi[2][l]}});
-    }
+    conic.finish();
     seen = images.into(pass);
   }
-  for (; k < n; ++k) {
-    const Vec3 q = Vec3::load(in + s * k) - eye;
-    const double depth = dot(q, f.w);
-    if (!(depth > 0)) pass.behind = true;
-    pass.about_eye.add(q);
-    seen += put_image({f.distance * dot(q, f.r) / depth, f.distance * dot(q, f.t) / depth},
-                      out + t * k, pass);
-  }
+  for (; k < n; ++k) seen += put_image(conic.image(Vec3::load(in + s * k)), out + t * k, pass);
+  pass.behind = pass.behind || conic.behind;
+  pass.about_eye.add(conic.about_eye);
   return seen;
 }
 
@@ -297,6 +255,18 @@ __attribute__((target("avx2"))) double conic_block_avx2(const ConicBlock& c, con
 #endif
 
 }  // namespace
+
+ConicFrame conic_frame(Vec3 view, Vec3 centre) {
+  const Vec3 axis = centre - view;
+  const double distance = norm(axis);
+  if (!std::isfinite(distance)) refuse(DataError::Problem::projection_parameters);
+  if (!(distance > 0)) refuse(DataError::Problem::view_at_centre);
+  const Vec3 w = unit(axis);
+  Vec3 side = cross(w, Vec3{0, 0, 1});
+  if (norm(side) < 1e-6) side = cross(w, Vec3{0, 1, 0});
+  const Vec3 r = unit(side);
+  return {w, r, cross(r, w), distance};
+}
 
 bool isom_parameters_valid(double axis, double angle_degrees) {
   return (axis == 1 || axis == 2 || axis == 3) && angle_degrees >= 0 && angle_degrees <= 90;
