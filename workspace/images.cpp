@@ -26,10 +26,11 @@ namespace {
 // kernels/project.h project_image), the first whose image is not finite (points.size(): none) and
 // the box of the images.
 std::pair<Array, ProjectedImage> projected(Vec3View points, std::vector<std::size_t> shape,
-                                           const View& view, Vec3 centre) {
+                                           const View& view, Vec3 centre,
+                                           bool box_of_points = false) {
   // Every point's image is written by the projection (or the array dropped): not cleared first.
   Array out = Array::for_output(std::move(shape));
-  const ProjectedImage found = project_image(view, centre, points, as_point2(out));
+  const ProjectedImage found = project_image(view, centre, points, as_point2(out), box_of_points);
   return {std::move(out), found};
 }
 
@@ -110,7 +111,8 @@ Image input_image(const Workspace& ws, const View& view) {
 
 namespace {
 
-Image grid_image(const Workspace& ws, const View& view, bool hidden) {
+// With `points_box`, the bounding box of INTPN found in the same pass.
+Image grid_image(const Workspace& ws, const View& view, bool hidden, Box3* points_box = nullptr) {
   if (ws.intpn.rank() != 3) {
     DataError e(DataError::Problem::missing);
     e.variable = "INTPN";
@@ -121,9 +123,10 @@ Image grid_image(const Workspace& ws, const View& view, bool hidden) {
   image.desim = {1, view.projection, view.parameters, hidden};
   const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
   ProjectedImage found;
-  std::tie(image.points, found) =
-      projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view, centre);
+  std::tie(image.points, found) = projected(points, {ws.intpn.shape[0], ws.intpn.shape[1], 2}, view,
+                                            centre, points_box != nullptr);
   check_projected(found.not_finite, points.size(), "INTPN", ws.intpn.shape[1]);
+  if (points_box) *points_box = found.points;
   image.extent = found.extent;
   if (hidden) {
     // Finite wherever the projection is (a CONIC point is in front of the eye).
@@ -170,7 +173,11 @@ std::optional<double> known_comb_scale(const Workspace& ws) {
 }  // namespace
 
 Image comb_image(const Workspace& ws, const View& view) {
-  Image image = surface_image(ws, view);
+  // The scale: that of the combs already drawn from this surface, or made from the box of the
+  // points (found as their image is made) and the largest curvature (images.h).
+  const std::optional<double> known = known_comb_scale(ws);
+  Box3 box;
+  Image image = grid_image(ws, view, false, known ? nullptr : &box);
   image.desim.what = 3;
   const SurfaceInput in = surface_input(ws);
   const GridShape shape = intpn_shape(ws.nocur, ws.nostr, ws.intcu, ws.intst);
@@ -217,24 +224,16 @@ Image comb_image(const Workspace& ws, const View& view) {
       comb_vectors(Vec3::load(bends), Vec3::load(bends + 3), images_by, xy + 4 * k, largest);
     }
   };
-  // The scale: that of the combs already drawn from this surface, or made from the box of the
-  // points and the largest curvature (images.h), in a pass of its own.
-  const std::optional<double> known = known_comb_scale(ws);
   if (known) {
     image.comb_scale = *known;
   } else {
-    struct Found {
-      Box3 box;
-      LargestCurvature largest;
-    };
-    std::vector<Found> found(parts);
+    // The largest curvature, in a pass of its own.
+    std::vector<LargestCurvature> found(parts);
     by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
-      found[part].box.add(bounding_box(points.subspan(first * cols, (last - first) * cols)));
-      vectors(first, last, curvature, found[part].largest);
+      vectors(first, last, curvature, found[part]);
     });
-    Box3 box;
     LargestCurvature largest;
-    for (const Found& f : found) box.add(f.box), largest.add(f.largest);
+    for (const LargestCurvature& f : found) largest.add(f);
     const Vec3 size = box.hi - box.lo;
     image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), largest.length());
   }

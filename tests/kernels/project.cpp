@@ -14,6 +14,7 @@
 
 #include "tests/kernels/helpers.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/parallel.h"
 #include "workspace/kernels/processor.h"
 
 using namespace igds;
@@ -262,6 +263,21 @@ TEST_CASE("the bounding box four points at a time: as one at a time, NaN and str
   }
   use_kernel_code(KernelCode::best);
   CHECK(bounding_box(Vec3View(xyz.data(), 1003)).hi.y == 500);
+  // Found by a projection as it makes the images, on every core (parts merged).
+  std::vector<double> many(3 * (std::size_t(1) << 19));
+  for (double& x : many) x = rnd.uniform(-100, 100);
+  many[3 * 300000 + 2] = 700;  // in the second part
+  const Vec3View points(many.data(), many.size() / 3);
+  REQUIRE(threads_for(points.size()) > 1);
+  std::vector<double> images(2 * points.size());
+  for (const View& v :
+       {View{Projection::conic, {900, 800, 700}}, View{Projection::isometric, {3, 30, 0}}}) {
+    const Box3 found =
+        project_image(v, {}, points, MutablePoint2View(images.data(), points.size()), true).points;
+    CHECK(found.lo == bounding_box(points).lo);
+    CHECK(found.hi == bounding_box(points).hi);
+    CHECK(found.hi.z == 700);
+  }
   CHECK(bounding_box(Vec3View(xyz.data(), 1003, 6)).lo.z == -500);
 }
 
@@ -421,9 +437,20 @@ TEST_CASE("four points at a time: every image and finding as a point at a time m
     project(v, centre, Vec3View(in.d.data(), (n + 1) / 2, 6),
             MutablePoint2View(strided.d.data(), (n + 1) / 2, 4));
     for (std::size_t k = 0; k < n; k += 2) CHECK(strided[k] == whole[k]);
-    // The images' box, and the first image not finite: the third of its four.
+    // The images' box, the points' box when asked, and the first image not finite: the third of
+    // its four.
     Flat<Point2> out(n);
     CHECK(project_image(v, centre, in, out).extent == test::box_of_points(alone.d.data(), n));
+    CHECK(project_image(v, centre, in, out).points.empty());
+    for (const KernelCode code : {KernelCode::best, KernelCode::baseline}) {
+      use_kernel_code(code);
+      Box3 one;
+      for (std::size_t k = 0; k < n; ++k) one.add(in[k]);
+      const Box3 found = project_image(v, centre, in, out, true).points;
+      CHECK(found.lo == one.lo);
+      CHECK(found.hi == one.hi);
+    }
+    use_kernel_code(KernelCode::best);
     Flat<Vec3> huge = in;
     huge.set(6, {-1e308, 1e308, -1e308}), huge.set(9, {-1e308, 1e308, -1e308});
     huge.set(6, 1e300 * huge[6]), huge.set(9, 1e300 * huge[9]);  // infinite coordinates

@@ -65,6 +65,8 @@ struct Pass {
   std::size_t not_finite;
   bool behind = false;
   Box3 about_eye;
+  bool box = false;  // asked for the box of the points: `points`
+  Box3 points;
   static constexpr double inf = std::numeric_limits<double>::infinity();
   Point2 low{inf, inf}, high{-inf, -inf};
 };
@@ -75,12 +77,12 @@ struct Pass {
 // returns that sum, and keeps in `pass` the box of the images (CONIC also whether a point is not in
 // front of the eye and the box of the points about it).
 template <class Block>
-Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
+Pass each_block(Vec3View in, MutablePoint2View out, const Block& block, bool box) {
   const std::size_t n = in.size();
   // Counted in points: a point's image costs about what a number costs most kernels (a few
   // nanoseconds), so that the 250,000 input points of a large grid stay on one thread.
   const unsigned parts = threads_for(n);
-  std::vector<Pass> found(parts, Pass{n, false, {}});
+  std::vector<Pass> found(parts, Pass{n, false, {}, box, {}});
   in_parallel(parts, [&](unsigned part) {
     const std::size_t first = n * part / parts, last = n * (part + 1) / parts;
     Pass& pass = found[part];
@@ -101,6 +103,7 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block) {
     all.not_finite = std::min(all.not_finite, pass.not_finite);
     all.behind = all.behind || pass.behind;
     all.about_eye.add(pass.about_eye);
+    all.points.add(pass.points);
     all.low = {std::min(all.low.x, pass.low.x), std::min(all.low.y, pass.low.y)};
     all.high = {std::max(all.high.x, pass.high.x), std::max(all.high.y, pass.high.y)};
   }
@@ -115,6 +118,21 @@ struct PointLanes {
   return {Lanes{p[0], p[s], p[2 * s], p[3 * s]}, Lanes{p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]},
           Lanes{p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]}};
 }
+
+// The box of points four at a time, each lane a box of its own (Box3::add's comparisons).
+struct PointBox {
+  static constexpr double inf = std::numeric_limits<double>::infinity();
+  PointLanes lo{{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
+  PointLanes hi{-lo.x, -lo.x, -lo.x};
+  [[gnu::always_inline]] void add(const PointLanes& v) {
+    lower(lo.x, v.x), lower(lo.y, v.y), lower(lo.z, v.z);
+    raise(hi.x, v.x), raise(hi.y, v.y), raise(hi.z, v.z);
+  }
+  void into(Box3& box) const {
+    for (int l = 0; l < 4; ++l)
+      box.add(Box3{{lo.x[l], lo.y[l], lo.z[l]}, {hi.x[l], hi.y[l], hi.z[l]}});
+  }
+};
 
 // What a pass keeps of images made four at a time, lane by lane: their box and x * 0 summed.
 struct ImageLanes {
@@ -163,16 +181,20 @@ template <class Image>
   std::size_t k = 0;
   if (n >= 4) {
     ImageLanes images;
+    PointBox box;
     for (; k + 4 <= n; k += 4) {
       const PointLanes v = load_lanes(in + s * k, s);
+      if (pass.box) box.add(v);
       Lanes x, y;
       image(v.x, v.y, v.z, x, y);
       images.put(x, y, out + t * k, t);
     }
+    if (pass.box) box.into(pass.points);
     seen = images.into(pass);
   }
   for (; k < n; ++k) {
     const double* p = in + s * k;
+    if (pass.box) pass.points.add(Vec3::load(p));
     double x, y;
     image(p[0], p[1], p[2], x, y);
     seen += put_image({x, y}, out + t * k, pass);
@@ -198,15 +220,18 @@ __attribute__((target("avx2"))) double parallel_block_avx2(const Image& image, c
 
 // each_block for a parallel projection.
 template <class Image>
-Pass each_point(Vec3View in, MutablePoint2View out, const Image& image) {
+Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, bool box) {
   auto block = parallel_block_base<Image>;
 #if IGDS_X86
   if (best_kernels()) block = parallel_block_avx2<Image>;
 #endif
-  return each_block(in, out, [&](std::size_t from, std::size_t to, Pass& pass) {
-    return block(image, in.data() + in.stride() * from, in.stride(), to - from,
-                 out.data() + out.stride() * from, out.stride(), pass);
-  });
+  return each_block(
+      in, out,
+      [&](std::size_t from, std::size_t to, Pass& pass) {
+        return block(image, in.data() + in.stride() * from, in.stride(), to - from,
+                     out.data() + out.stride() * from, out.stride(), pass);
+      },
+      box);
 }
 
 // CONIC's images of n points (docs/kernels.md): X = D (q.r) / (q.w), Y = D (q.t) / (q.w) with
@@ -227,16 +252,23 @@ struct ConicBlock {
   std::size_t k = 0;
   if (n >= 4) {
     ImageLanes images;
+    PointBox box;
     for (; k + 4 <= n; k += 4) {
       const PointLanes v = load_lanes(in + s * k, s);
+      if (pass.box) box.add(v);
       Lanes x, y;
       conic.image(v.x, v.y, v.z, x, y);
       images.put(x, y, out + t * k, t);
     }
+    if (pass.box) box.into(pass.points);
     conic.finish();
     seen = images.into(pass);
   }
-  for (; k < n; ++k) seen += put_image(conic.image(Vec3::load(in + s * k)), out + t * k, pass);
+  for (; k < n; ++k) {
+    const Vec3 p = Vec3::load(in + s * k);
+    if (pass.box) pass.points.add(p);
+    seen += put_image(conic.image(p), out + t * k, pass);
+  }
   pass.behind = pass.behind || conic.behind;
   pass.about_eye.add(conic.about_eye);
   return seen;
@@ -296,44 +328,47 @@ bool view_parameters_valid(const View& view) {
 
 namespace {
 
-Pass orthog_pass(Vec3View in, int plane, MutablePoint2View out) {
+Pass orthog_pass(Vec3View in, int plane, MutablePoint2View out, bool box = false) {
   check_sizes(in, out);
   // DESIM[3] numbering of the manual: 1 XY, 2 XZ, 3 YZ.
   switch (plane) {
     case 1:
-      return each_point(in, out, [](const auto& x, const auto& y, const auto&, auto& X, auto& Y) {
-        X = x, Y = y;
-      });
+      return each_point(
+          in, out,
+          [](const auto& x, const auto& y, const auto&, auto& X, auto& Y) { X = x, Y = y; }, box);
     case 2:
-      return each_point(in, out, [](const auto& x, const auto&, const auto& z, auto& X, auto& Y) {
-        X = x, Y = z;
-      });
+      return each_point(
+          in, out,
+          [](const auto& x, const auto&, const auto& z, auto& X, auto& Y) { X = x, Y = z; }, box);
     case 3:
-      return each_point(in, out, [](const auto&, const auto& y, const auto& z, auto& X, auto& Y) {
-        X = y, Y = z;
-      });
+      return each_point(
+          in, out,
+          [](const auto&, const auto& y, const auto& z, auto& X, auto& Y) { X = y, Y = z; }, box);
     default:
       refuse(DataError::Problem::projection_parameters);
   }
 }
 
-Pass isom_pass(Vec3View in, int axis, double angle_degrees, MutablePoint2View out) {
+Pass isom_pass(Vec3View in, int axis, double angle_degrees, MutablePoint2View out,
+               bool box = false) {
   check_sizes(in, out);
   if (!isom_parameters_valid(axis, angle_degrees))
     refuse(DataError::Problem::projection_parameters);
   // docs/kernels.md: the two kept coordinates r1, r2 in x y z order, the dropped one d drawn
   // obliquely.
   const double c = std::cos(angle_degrees * degree), s = std::sin(angle_degrees * degree);
-  return each_point(in, out,
-                    [axis, c, s](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
-                      const auto& r1 = axis == 1 ? y : x;
-                      const auto& r2 = axis == 3 ? y : z;
-                      const auto& d = axis == 1 ? x : axis == 2 ? y : z;
-                      X = r1 + d * c, Y = r2 + d * s;
-                    });
+  return each_point(
+      in, out,
+      [axis, c, s](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
+        const auto& r1 = axis == 1 ? y : x;
+        const auto& r2 = axis == 3 ? y : z;
+        const auto& d = axis == 1 ? x : axis == 2 ? y : z;
+        X = r1 + d * c, Y = r2 + d * s;
+      },
+      box);
 }
 
-Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
+Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out, bool box = false) {
   check_sizes(in, out);
   if (!finite(view)) refuse(DataError::Problem::projection_parameters);
   const ConicFrame f = conic_frame(view, centre);
@@ -341,37 +376,45 @@ Pass conic_pass(Vec3View in, Vec3 view, Vec3 centre, MutablePoint2View out) {
 #if IGDS_X86
   if (best_kernels()) block = conic_block_avx2;
 #endif
-  return each_block(in, out, [&](std::size_t from, std::size_t to, Pass& pass) {
-    return block({&f, view, in.stride(), out.stride()}, in.data() + in.stride() * from, to - from,
-                 out.data() + out.stride() * from, pass);
-  });
+  return each_block(
+      in, out,
+      [&](std::size_t from, std::size_t to, Pass& pass) {
+        return block({&f, view, in.stride(), out.stride()}, in.data() + in.stride() * from,
+                     to - from, out.data() + out.stride() * from, pass);
+      },
+      box);
 }
 
-Pass matrix_pass(Vec3View in, const AssonMatrix& a, MutablePoint2View out) {
-  return each_point(in, out, [&a](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
-    X = a.xx * x + a.xy * y, Y = a.yx * x + a.yy * y + a.yz * z;
-  });
+Pass matrix_pass(Vec3View in, const AssonMatrix& a, MutablePoint2View out, bool box = false) {
+  return each_point(
+      in, out,
+      [&a](const auto& x, const auto& y, const auto& z, auto& X, auto& Y) {
+        X = a.xx * x + a.xy * y, Y = a.yx * x + a.yy * y + a.yz * z;
+      },
+      box);
 }
 
-Pass asson_pass(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out) {
+Pass asson_pass(Vec3View in, std::array<double, 3> angles_degrees, MutablePoint2View out,
+                bool box = false) {
   check_sizes(in, out);
   if (!asson_parameters_valid(angles_degrees)) refuse(DataError::Problem::projection_parameters);
-  return matrix_pass(in, asson_matrix(angles_degrees), out);
+  return matrix_pass(in, asson_matrix(angles_degrees), out, box);
 }
 
-Pass project_pass(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+Pass project_pass(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out,
+                  bool box = false) {
   const auto& p = view.parameters;
   // Checked before the plane or axis becomes an integer: a number beyond an int's range is none.
   if (!view_parameters_valid(view)) refuse(DataError::Problem::projection_parameters);
   switch (view.projection) {
     case Projection::conic:
-      return conic_pass(in, {p[0], p[1], p[2]}, centre, out);
+      return conic_pass(in, {p[0], p[1], p[2]}, centre, out, box);
     case Projection::isometric:
-      return isom_pass(in, static_cast<int>(p[0]), p[1], out);
+      return isom_pass(in, static_cast<int>(p[0]), p[1], out, box);
     case Projection::assonometric:
-      return asson_pass(in, p, out);
+      return asson_pass(in, p, out, box);
     case Projection::orthogonal:
-      return orthog_pass(in, static_cast<int>(p[0]), out);
+      return orthog_pass(in, static_cast<int>(p[0]), out, box);
   }
   refuse(DataError::Problem::projection_parameters);
 }
@@ -385,7 +428,8 @@ void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) 
   project_pass(view, centre, in, out);
 }
 
-ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
+ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out,
+                             bool box_of_points) {
   const auto& p = view.parameters;
   const Vec3 eye{p[0], p[1], p[2]};
   const bool conic = view.projection == Projection::conic && view_parameters_valid(view);
@@ -393,12 +437,12 @@ ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, Mutable
   if (conic && eye.x == centre.x && eye.y == centre.y && eye.z == centre.z &&
       inside_bounding_box(in, eye))
     refuse(DataError::Problem::view_inside_box);
-  const Pass pass = project_pass(view, centre, in, out);
+  const Pass pass = project_pass(view, centre, in, out, box_of_points);
   // The box about the eye holds 0 on every axis: the eye is in the box (the sign of p - eye is
   // that of the comparison of p with the eye).
   if (conic && pass.about_eye.contains({})) refuse(DataError::Problem::view_inside_box);
   if (pass.behind) refuse(DataError::Problem::behind_eye);
-  return {pass.not_finite, {pass.low.x, pass.low.y, pass.high.x, pass.high.y}};
+  return {pass.not_finite, {pass.low.x, pass.low.y, pass.high.x, pass.high.y}, pass.points};
 }
 
 ProjectedPart project_part(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out) {
@@ -491,24 +535,16 @@ void prospar(Vec3View in, std::array<double, 2> angles_degrees, MutablePoint2Vie
 
 namespace {
 
-// Four points at a time, each lane a box of its own (Box3::add's comparisons), then the points
-// left over one at a time. (The same box; where its side is a zero met with both signs, the sign
-// kept may be the other.)
+// Four points at a time (PointBox), then the points left over one at a time. (The same box;
+// where its side is a zero met with both signs, the sign kept may be the other.)
 [[gnu::always_inline]] inline Box3 box_body(Vec3View points) {
-  constexpr double inf = std::numeric_limits<double>::infinity();
   const double* p = points.data();
   const std::size_t s = points.stride(), n = points.size();
-  PointLanes lo{{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
-  PointLanes hi{-lo.x, -lo.x, -lo.x};
+  PointBox lanes;
   std::size_t k = 0;
-  for (; k + 4 <= n; k += 4) {
-    const PointLanes v = load_lanes(p + s * k, s);
-    lower(lo.x, v.x), lower(lo.y, v.y), lower(lo.z, v.z);
-    raise(hi.x, v.x), raise(hi.y, v.y), raise(hi.z, v.z);
-  }
+  for (; k + 4 <= n; k += 4) lanes.add(load_lanes(p + s * k, s));
   Box3 box;
-  for (int l = 0; l < 4; ++l)
-    box.add(Box3{{lo.x[l], lo.y[l], lo.z[l]}, {hi.x[l], hi.y[l], hi.z[l]}});
+  lanes.into(box);
   for (; k < n; ++k) box.add(points[k]);
   return box;
 }

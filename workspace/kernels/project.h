@@ -39,13 +39,16 @@ void project(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
 // CONIC also refuses a view point inside the points' bounding box (view_inside_box, before any
 // other report but projection_parameters). Finds the index of the first point whose image is
 // not finite (finite points near the largest numbers overflow), in.size() when every one is, and
-// the box of the images, x0 y0 x1 y1 (of use when every one is finite). Throws the DataErrors of
+// the box of the images, x0 y0 x1 y1 (of use when every one is finite); with `box_of_points`, the
+// points' bounding box too (bounding_box's, found in the same pass). Throws the DataErrors of
 // project(), after writing: `out` holds nothing to use then.
 struct ProjectedImage {
   std::size_t not_finite = 0;
   std::array<double, 4> extent{};
+  Box3 points;
 };
-ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out);
+ProjectedImage project_image(const View& view, Vec3 centre, Vec3View in, MutablePoint2View out,
+                             bool box_of_points = false);
 
 // project_image's one pass without its refusals, for an image projected a part at a time (DISPLAY
 // COMBS's ends): every image is written, and the part says what the whole image's checks need,
