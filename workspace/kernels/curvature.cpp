@@ -211,7 +211,10 @@ struct Measure {
     }
   }
   void one(std::size_t m, Vec3 along, Vec3 across) {
-    comb_vectors(along, across, project ? map : nullptr, images + 4 * m, largest);
+    if constexpr (project)
+      comb_vectors(along, across, map, images + 4 * m, largest);
+    else
+      comb_vectors(along, across, nullptr, nullptr, largest);
   }
   void finish() {
     largest.squared = std::max({largest.squared, squared[0], squared[1], squared[2], squared[3]});
