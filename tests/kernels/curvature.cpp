@@ -344,6 +344,7 @@ TEST_CASE("the largest curvature: squares compared, lengths where they overflow,
   largest.add(Vec3{1, 0, 0});
   CHECK(largest.squared == 25);
   largest.add(Vec3{1e200, 0, 0});  // its square overflows: its length is kept
+  largest.add(Vec3{0, 1e180, 0});  // and the larger of such lengths
   largest.add(Vec3{std::numeric_limits<double>::quiet_NaN(), 0, 0});
   largest.add(Vec3{std::numeric_limits<double>::infinity(), 0, 0});
   CHECK(largest.squared == 25);
