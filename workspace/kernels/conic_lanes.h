@@ -19,19 +19,11 @@ struct ConicFrame {
 // Throws DataError for a view point that is not finite or at the centre.
 ConicFrame conic_frame(Vec3 view, Vec3 centre);
 
-// std::min(lo, v) and std::max(hi, v) of each lane (one MINPD or MAXPD: the same choice, lo or hi
-// kept when a lane is NaN or both are zeros).
-[[gnu::always_inline]] inline void lower(Lanes& lo, const Lanes& v) {
-  lo = v < lo ? v : lo;
-}
-[[gnu::always_inline]] inline void raise(Lanes& hi, const Lanes& v) {
-  hi = hi < v ? v : hi;
-}
-
 // The images of points seen from `eye`, X = D (q.r) / (q.w) and Y = D (q.t) / (q.w) with
 // q = p - eye, and what they find: whether a point is not in front of the eye (q.w not above 0)
 // and the box of the points about the eye (the q). Each lane does the operations of a point at a
-// time (`image` of a Vec3), in its order.
+// time (of a Vec3), in its order; numbers and lanes take the same arguments (kernels/project.cpp's
+// block_body).
 struct ConicImages {
   static constexpr double inf = std::numeric_limits<double>::infinity();
   ConicImages(const ConicFrame& frame, Vec3 view) : f(&frame), eye(view) {}
@@ -43,8 +35,8 @@ struct ConicImages {
   bool behind = false;
   Box3 about_eye;
 
-  [[gnu::always_inline]] inline void image(const Lanes& x, const Lanes& y, const Lanes& z, Lanes& X,
-                                           Lanes& Y) {
+  [[gnu::always_inline]] inline void operator()(const Lanes& x, const Lanes& y, const Lanes& z,
+                                                Lanes& X, Lanes& Y) {
     const Lanes q[3] = {x - eye.x, y - eye.y, z - eye.z};
     const Lanes depth = q[0] * f->w.x + q[1] * f->w.y + q[2] * f->w.z;
     ahead &= depth > 0;
@@ -52,12 +44,16 @@ struct ConicImages {
     X = f->distance * (q[0] * f->r.x + q[1] * f->r.y + q[2] * f->r.z) / depth;
     Y = f->distance * (q[0] * f->t.x + q[1] * f->t.y + q[2] * f->t.z) / depth;
   }
-  Point2 image(Vec3 p) {
+  Point2 operator()(Vec3 p) {
     const Vec3 q = p - eye;
     const double depth = dot(q, f->w);
     if (!(depth > 0)) behind = true;
     about_eye.add(q);
     return {f->distance * dot(q, f->r) / depth, f->distance * dot(q, f->t) / depth};
+  }
+  void operator()(double x, double y, double z, double& X, double& Y) {
+    const Point2 p = (*this)(Vec3{x, y, z});
+    X = p.x, Y = p.y;
   }
   // The lanes' findings added to `behind` and `about_eye`.
   void finish() {

@@ -44,13 +44,8 @@ Place place(std::size_t index, std::size_t inputs, std::size_t inserted) {
 
 // Every lane (processor.h) is computed with the operations the scalar code uses, in its order,
 // and without fused multiply-adds, so that the curvature is the same bit for bit on every
-// processor.
-struct Vec3Lanes {
-  Lanes x, y, z;
-};
-
-// curvature_vector for each lane. (Results through a reference: a vector returned by value
-// would change the calling convention with the processor's instructions.)
+// processor: curvature_vector for each lane. (Results through a reference: a vector returned by
+// value would change the calling convention with the processor's instructions.)
 [[gnu::always_inline]] inline void curvature_lanes(const Vec3Lanes& d1, const Vec3Lanes& d2,
                                                    Vec3Lanes& k) {
   const Lanes speed2 = d1.x * d1.x + d1.y * d1.y + d1.z * d1.z;
@@ -60,6 +55,23 @@ struct Vec3Lanes {
   k.x = Lanes(LaneMask(inverse * (d2.x - along * d1.x)) & direction);
   k.y = Lanes(LaneMask(inverse * (d2.y - along * d1.y)) & direction);
   k.z = Lanes(LaneMask(inverse * (d2.z - along * d1.z)) & direction);
+}
+
+// The curve's and the stringer's curvature vectors of Pu, Puu, Pv and Pvv (d[0..3], per
+// coordinate).
+[[gnu::always_inline]] inline void curvatures(const Lanes d[4][3], Vec3Lanes& along,
+                                              Vec3Lanes& across) {
+  curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
+  curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
+}
+
+// The image of a vector k by the linear part of a parallel projection's map (rows 0 and 1 of
+// ProjectiveMap::m): numbers or lanes alike.
+template <class T>
+[[gnu::always_inline]] inline void linear_image(const double (&r)[3][4], const T& x, const T& y,
+                                                const T& z, T& X, T& Y) {
+  X = r[0][0] * x + r[0][1] * y + r[0][2] * z;
+  Y = r[1][0] * x + r[1][1] * y + r[1][2] * z;
 }
 
 // Per coordinate, the polynomials in u of a patch's curve's first and second derivatives, then of
@@ -157,14 +169,10 @@ struct ConicCombs {
   Lanes seen = {0, 0, 0, 0};  // x * 0 of the images, summed
   [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
                                            const Vec3Lanes& across) {
-    const double* q = points + 3 * m;
-    const std::size_t s = 3 * apart;
-    const Vec3Lanes p = {Lanes{q[0], q[s], q[2 * s], q[3 * s]},
-                         Lanes{q[1], q[s + 1], q[2 * s + 1], q[3 * s + 1]},
-                         Lanes{q[2], q[s + 2], q[2 * s + 2], q[3 * s + 2]}};
+    const Vec3Lanes p = load_lanes(points + 3 * m, 3 * apart);
     Lanes x[2], y[2];
-    conic.image(p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z, x[0], y[0]);
-    conic.image(p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z, x[1], y[1]);
+    conic(p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z, x[0], y[0]);
+    conic(p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z, x[1], y[1]);
     for (int l = 0; l < 4; ++l) {
       double* o = out + 4 * (m + l * apart);
       o[0] = x[0][l], o[1] = y[0][l], o[2] = x[1][l], o[3] = y[1][l];
@@ -173,7 +181,7 @@ struct ConicCombs {
   }
   void one(std::size_t m, Vec3 along, Vec3 across) {
     const Vec3 p = Vec3::load(points + 3 * m);
-    const Point2 a = conic.image(p - scale * along), b = conic.image(p - scale * across);
+    const Point2 a = conic(p - scale * along), b = conic(p - scale * across);
     a.store(out + 4 * m);
     b.store(out + 4 * m + 2);
     seen[0] += (a.x * 0.0 + a.y * 0.0) + (b.x * 0.0 + b.y * 0.0);
@@ -201,11 +209,9 @@ struct Measure {
     take(along);
     take(across);
     if constexpr (project) {
-      const auto& r = map->m;
-      const Lanes xy[4] = {r[0][0] * along.x + r[0][1] * along.y + r[0][2] * along.z,
-                           r[1][0] * along.x + r[1][1] * along.y + r[1][2] * along.z,
-                           r[0][0] * across.x + r[0][1] * across.y + r[0][2] * across.z,
-                           r[1][0] * across.x + r[1][1] * across.y + r[1][2] * across.z};
+      Lanes xy[4];
+      linear_image(map->m, along.x, along.y, along.z, xy[0], xy[1]);
+      linear_image(map->m, across.x, across.y, across.z, xy[2], xy[3]);
       for (int l = 0; l < 4; ++l)
         for (int c = 0; c < 4; ++c) images[4 * (m + l * apart) + c] = xy[c][l];
     }
@@ -231,8 +237,7 @@ template <class Sink>
     Lanes d[4][3];
     derivatives(p, Lanes{u[m], u[m + 1], u[m + 2], u[m + 3]}, d);
     Vec3Lanes along, across;
-    curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
-    curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
+    curvatures(d, along, across);
     sink.lanes(first + m, 1, along, across);
   }
   for (; m < n; ++m) {
@@ -263,8 +268,7 @@ template <class Sink>
       Lanes d[4][3];
       derivatives(p, job.u[m], d);
       Vec3Lanes along, across;
-      curvature_lanes({d[0][0], d[0][1], d[0][2]}, {d[1][0], d[1][1], d[1][2]}, along);
-      curvature_lanes({d[2][0], d[2][1], d[2][2]}, {d[3][0], d[3][1], d[3][2]}, across);
+      curvatures(d, along, across);
       sink.lanes(first + job.step * j + m, job.step, along, across);
     }
   }
@@ -441,11 +445,8 @@ void comb_vectors(Vec3 along, Vec3 across, const ProjectiveMap* map, double* ima
   largest.add(along);
   largest.add(across);
   if (!map) return;
-  const auto& r = map->m;
-  images[0] = r[0][0] * along.x + r[0][1] * along.y + r[0][2] * along.z;
-  images[1] = r[1][0] * along.x + r[1][1] * along.y + r[1][2] * along.z;
-  images[2] = r[0][0] * across.x + r[0][1] * across.y + r[0][2] * across.z;
-  images[3] = r[1][0] * across.x + r[1][1] * across.y + r[1][2] * across.z;
+  linear_image(map->m, along.x, along.y, along.z, images[0], images[1]);
+  linear_image(map->m, across.x, across.y, across.z, images[2], images[3]);
 }
 
 Array grid_curvature(const SurfaceInput& in, const Array& patches) {

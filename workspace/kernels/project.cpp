@@ -110,21 +110,12 @@ Pass each_block(Vec3View in, MutablePoint2View out, const Block& block, bool box
   return all;
 }
 
-// Four points' coordinates, `stride` doubles apart from p, in lanes.
-struct PointLanes {
-  Lanes x, y, z;
-};
-[[gnu::always_inline]] inline PointLanes load_lanes(const double* p, std::size_t s) {
-  return {Lanes{p[0], p[s], p[2 * s], p[3 * s]}, Lanes{p[1], p[s + 1], p[2 * s + 1], p[3 * s + 1]},
-          Lanes{p[2], p[s + 2], p[2 * s + 2], p[3 * s + 2]}};
-}
-
 // The box of points four at a time, each lane a box of its own (Box3::add's comparisons).
 struct PointBox {
   static constexpr double inf = std::numeric_limits<double>::infinity();
-  PointLanes lo{{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
-  PointLanes hi{-lo.x, -lo.x, -lo.x};
-  [[gnu::always_inline]] void add(const PointLanes& v) {
+  Vec3Lanes lo{{inf, inf, inf, inf}, {inf, inf, inf, inf}, {inf, inf, inf, inf}};
+  Vec3Lanes hi{-lo.x, -lo.x, -lo.x};
+  [[gnu::always_inline]] void add(const Vec3Lanes& v) {
     lower(lo.x, v.x), lower(lo.y, v.y), lower(lo.z, v.z);
     raise(hi.x, v.x), raise(hi.y, v.y), raise(hi.z, v.z);
   }
@@ -167,15 +158,14 @@ inline double put_image(Point2 p, double* out, Pass& pass) {
   return p.x * 0.0 + p.y * 0.0;
 }
 
-// A parallel projection's images of n points, `in_stride` doubles apart, into `out`,
-// `out_stride` apart: `image(x, y, z, X, Y)` makes X and Y of x, y and z, numbers or vector lanes
-// (processor.h) alike, so that four points at a time have the images one at a time gives them,
-// bit for bit. Returns the sum of x * 0 of the images.
+// The images of n points, `in_stride` doubles apart, into `out`, `out_stride` apart:
+// `image(x, y, z, X, Y)` makes X and Y of x, y and z, numbers or vector lanes (processor.h) alike,
+// so that four points at a time have the images one at a time gives them, bit for bit. Returns the
+// sum of x * 0 of the images.
 template <class Image>
-[[gnu::always_inline]] inline double parallel_block_body(const Image& image, const double* in,
-                                                         std::size_t in_stride, std::size_t n,
-                                                         double* out, std::size_t out_stride,
-                                                         Pass& pass) {
+[[gnu::always_inline]] inline double block_body(Image&& image, const double* in,
+                                                std::size_t in_stride, std::size_t n, double* out,
+                                                std::size_t out_stride, Pass& pass) {
   const std::size_t s = in_stride, t = out_stride;
   double seen = 0;
   std::size_t k = 0;
@@ -183,7 +173,7 @@ template <class Image>
     ImageLanes images;
     PointBox box;
     for (; k + 4 <= n; k += 4) {
-      const PointLanes v = load_lanes(in + s * k, s);
+      const Vec3Lanes v = load_lanes(in + s * k, s);
       if (pass.box) box.add(v);
       Lanes x, y;
       image(v.x, v.y, v.z, x, y);
@@ -205,7 +195,7 @@ template <class Image>
 template <class Image>
 double parallel_block_base(const Image& image, const double* in, std::size_t in_stride,
                            std::size_t n, double* out, std::size_t out_stride, Pass& pass) {
-  return parallel_block_body(image, in, in_stride, n, out, out_stride, pass);
+  return block_body(image, in, in_stride, n, out, out_stride, pass);
 }
 
 #if IGDS_X86
@@ -214,7 +204,7 @@ __attribute__((target("avx2"))) double parallel_block_avx2(const Image& image, c
                                                            std::size_t in_stride, std::size_t n,
                                                            double* out, std::size_t out_stride,
                                                            Pass& pass) {
-  return parallel_block_body(image, in, in_stride, n, out, out_stride, pass);
+  return block_body(image, in, in_stride, n, out, out_stride, pass);
 }
 #endif
 
@@ -234,11 +224,8 @@ Pass each_point(Vec3View in, MutablePoint2View out, const Image& image, bool box
       box);
 }
 
-// CONIC's images of n points (docs/kernels.md): X = D (q.r) / (q.w), Y = D (q.t) / (q.w) with
-// q = p - eye; four points at a time in vector lanes, each lane with the operations of the point
-// at a time that follows, in its order, so that every image is the same bit for bit. The points
-// are `in`, `in_stride` doubles apart, their images `out`, `out_stride` apart. Returns the sum of
-// x * 0 of the images.
+// CONIC's images of n points (ConicImages, conic_lanes.h) by block_body, and what they find (a
+// point not in front of the eye, the box about it) kept in the pass.
 struct ConicBlock {
   const ConicFrame* f;
   Vec3 eye;
@@ -246,29 +233,9 @@ struct ConicBlock {
 };
 [[gnu::always_inline]] inline double conic_block_body(const ConicBlock& c, const double* in,
                                                       std::size_t n, double* out, Pass& pass) {
-  const std::size_t s = c.in_stride, t = c.out_stride;
   ConicImages conic(*c.f, c.eye);
-  double seen = 0;
-  std::size_t k = 0;
-  if (n >= 4) {
-    ImageLanes images;
-    PointBox box;
-    for (; k + 4 <= n; k += 4) {
-      const PointLanes v = load_lanes(in + s * k, s);
-      if (pass.box) box.add(v);
-      Lanes x, y;
-      conic.image(v.x, v.y, v.z, x, y);
-      images.put(x, y, out + t * k, t);
-    }
-    if (pass.box) box.into(pass.points);
-    conic.finish();
-    seen = images.into(pass);
-  }
-  for (; k < n; ++k) {
-    const Vec3 p = Vec3::load(in + s * k);
-    if (pass.box) pass.points.add(p);
-    seen += put_image(conic.image(p), out + t * k, pass);
-  }
+  const double seen = block_body(conic, in, c.in_stride, n, out, c.out_stride, pass);
+  conic.finish();
   pass.behind = pass.behind || conic.behind;
   pass.about_eye.add(conic.about_eye);
   return seen;
