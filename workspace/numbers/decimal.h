@@ -2,9 +2,11 @@
 // shortest that read back as the same double, and the integer coordinates of HP-GL and SVG.
 #pragma once
 
+#include <array>
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,23 +36,37 @@ class IntegerReals {
   std::vector<std::uint8_t> length_;
 };
 
-// `v` at `out` (at most 11 characters), as std::to_chars writes it; returns the end. The
-// coordinates of a vector are most of a plot or an SVG document: the small ones, the commonest,
-// digit by digit without a library call.
+// The texts of -99 .. 99, each in the first bytes of four (the rest zero), and their lengths.
+struct SmallIntegers {
+  std::array<std::array<char, 4>, 199> text{};
+  std::array<std::uint8_t, 199> length{};
+  constexpr SmallIntegers() {
+    for (int v = -99; v <= 99; ++v) {
+      const unsigned u = static_cast<unsigned>(v < 0 ? -v : v);
+      auto& t = text[static_cast<std::size_t>(v + 99)];
+      std::size_t n = 0;
+      if (v < 0) t[n++] = '-';
+      if (u >= 10) t[n++] = static_cast<char>('0' + u / 10);
+      t[n++] = static_cast<char>('0' + u % 10);
+      length[static_cast<std::size_t>(v + 99)] = static_cast<std::uint8_t>(n);
+    }
+  }
+};
+inline constexpr SmallIntegers small_integers;
+
+// `v` at `out` (at most 11 characters, and room for 11), as std::to_chars writes it; returns the
+// end. The coordinates of a vector are most of a plot or an SVG document: the small ones, the
+// commonest, copied from a table (four bytes, whatever the length: no branch on the digits).
 inline char* put_int(char* out, int v) {
+  const auto k = static_cast<unsigned>(v) + 99u;
+  if (k < 199u) [[likely]] {
+    std::memcpy(out, small_integers.text[k].data(), 4);
+    return out + small_integers.length[k];
+  }
   unsigned u = static_cast<unsigned>(v);
   if (v < 0) {
     *out++ = '-';
     u = 0u - u;
-  }
-  if (u < 10) {
-    *out++ = static_cast<char>('0' + u);
-    return out;
-  }
-  if (u < 100) {
-    out[0] = static_cast<char>('0' + u / 10);
-    out[1] = static_cast<char>('0' + u % 10);
-    return out + 2;
   }
   return std::to_chars(out, out + 10, u).ptr;
 }
