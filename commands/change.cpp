@@ -211,6 +211,7 @@ void run_change(Context& ctx, const Choice* option) {
   // The grid of input points is the same: only the parts the entries changed are new.
   ws.changes = changes;
   ws.changes.edited(point_edits, tangent_edits);
+  keep_splines(ws, ws.splines.made);  // the new surface's, kept by make_current
   // Patches kept as they were (FIT's, or assigned in APL) are still not the interpolation's.
   if (refitted) ws.changes.derived = changes.derived;
 }

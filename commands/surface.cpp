@@ -60,6 +60,7 @@ void make_current(Workspace& ws, int nocur, int nostr, Density density, Array in
   ws.intpn = std::move(surface.intpn);
   ws.set_surface_modes(modes.marks_twists, modes.auto_tangents);
   ws.changes.replaced(derived);
+  keep_splines(ws, std::move(surface.tangents));
 }
 
 }  // namespace igds

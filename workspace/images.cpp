@@ -189,7 +189,7 @@ Image comb_image(const Workspace& ws, const View& view) {
   const bool line = ws.nocur == 1 || ws.nostr == 1;
   const Array line_bends = line ? grid_curvature(in, ws.patches) : Array{};
   std::optional<PatchMaker> maker;
-  if (!line && patches_made_when_read(ws)) maker.emplace(in);
+  if (!line && patches_made_when_read(ws)) maker.emplace(in, kept_splines(ws));
   const PatchSource* source = maker ? &maker->source() : nullptr;
   // The curvature vectors (6 numbers a point) are made a few rows at a time, on every core, and
   // never kept whole (192 MB at 4 M points): about 8,000 points at a time, whole rows of patches
@@ -354,7 +354,8 @@ Image made_from(Workspace from, const Description& desim) {
       throw *overflow;
     from.patches = std::move(s.patches);
     from.intpn = std::move(s.intpn);
-    from.changes.derived = true;  // its PATCHES are made when read (state.h)
+    from.changes.derived = true;                // its PATCHES are made when read (state.h) ...
+    keep_splines(from, std::move(s.tangents));  // ... from these
   }
   return image_of(from, desim);
 }

@@ -333,6 +333,7 @@ void Journal::apply(Workspace& ws, const JournalStep& step, bool back) {
   // The surface is again the one of that state: its images are recipes of it again.
   ws.changes.surface = back ? step.generation_before : step.generation_after;
   ws.changes.derived = true;
+  if (!same_surface) keep_splines(ws, std::move(surface.tangents));
   mark_edits(step.inppn, ws.changes.inppn);
   mark_edits(step.inptg, ws.changes.inptg);
   current_.settings = to;

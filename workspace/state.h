@@ -228,6 +228,15 @@ struct AplVariable {
   friend bool operator==(const AplVariable&, const AplVariable&) = default;
 };
 
+// The tangents and twists of a surface's interpolation (kernels/surface.h), kept with it: its
+// PATCHES are made from them and the points when read (kept_splines below), without solving the
+// splines again. They belong to one generation of the surface (Changes::surface): any change of
+// the inputs makes a new generation, and they are no longer read.
+struct KeptSplines {
+  std::uint64_t surface = 0;
+  std::shared_ptr<const SplineTangents> made;
+};
+
 struct Workspace {
   int nocur = 0, nostr = 0;  // NOCUR, NOSTR: input curves and stringers (0: no input yet)
   int intcu = 0, intst = 0;  // INTCU, INTST: curves/stringers interpolated between input ones
@@ -254,7 +263,8 @@ struct Workspace {
   std::vector<std::vector<std::string>> functions;
   std::vector<AplVariable> apl_variables;
 
-  Changes changes;  // not a variable of the manual: how the variables above changed
+  Changes changes;      // not a variable of the manual: how the variables above changed
+  KeptSplines splines;  // nor this: made from the inputs
 
   // STATUS[3]: the twists of the surface's patches, 0 ZERO (the manual's), 1 MARKS (CHANGE
   // TWISTS; docs/marks.md). STATUS[4]: 1 when its border tangents were set by AUTO.
@@ -289,11 +299,28 @@ inline bool patches_made_when_read(const Workspace& ws) {
          ws.has_surface();
 }
 
+// Keeps `made`, the tangents and twists the surface of `ws` was just interpolated with, once its
+// generation is set.
+inline void keep_splines(Workspace& ws, std::shared_ptr<const SplineTangents> made) {
+  ws.splines = {ws.changes.surface, std::move(made)};
+}
+
+// The tangents and twists PATCHES are made from, when the surface of `ws` keeps those of its own
+// inputs (else null: they are made again).
+inline std::shared_ptr<const SplineTangents> kept_splines(const Workspace& ws) {
+  const SplineTangents* made = ws.splines.made.get();
+  if (!made || ws.splines.surface != ws.changes.surface || !patches_made_when_read(ws) ||
+      made->tangents.along_curves.size() != ws.inppn.size() / 3 ||
+      made->twists.empty() == ws.marks_twists())
+    return nullptr;
+  return ws.splines.made;
+}
+
 // PATCHES of the surface of `ws`: those it keeps, or made into `made` from the inputs
 // (patches_made_when_read), bit for bit those the interpolation evaluated.
 inline const Array& patches_of(const Workspace& ws, Array& made) {
   if (!patches_made_when_read(ws)) return ws.patches;
-  made = surface_patches(surface_input(ws));
+  made = surface_patches(surface_input(ws), kept_splines(ws));
   return made;
 }
 

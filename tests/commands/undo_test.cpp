@@ -5,7 +5,9 @@
 #include "commands/command.h"
 #include "tests/support/fake_context.h"
 #include "tests/support/process.h"
+#include "tests/workspace/disk_fixtures.h"
 #include "workspace/error.h"
+#include "workspace/state.h"
 
 namespace igds {
 extern const Command build_command;
@@ -74,6 +76,41 @@ TEST_CASE("UNDO says what it undid, REDO what it made again; nothing left: a rep
   // Words after UNDO are not taken.
   CHECK(report_of(ctx, undo_command, "", {"2"}) == "INCORRECT COMMAND OR PARAMETERS");
   CHECK(ctx.ws == built);
+}
+
+TEST_CASE("a surface keeps the tangents it was interpolated with, its own after every change") {
+  TempDir dir;
+  FakeContext ctx(dir.path());
+  run(ctx, build_command, "", "BUILD", saddle);
+  check_kept_splines(ctx.ws);
+  run(ctx, change_command, "POINTS", "CHANGE POINTS", {"5 10 10 7", "", "N", "N"});
+  check_kept_splines(ctx.ws);
+  run(ctx, change_command, "TANGENTS", "CHANGE TANGENTS", {"1 0 2 0 1", "", "N"});
+  check_kept_splines(ctx.ws);
+  run(ctx, change_command, "TWISTS", "CHANGE TWISTS", {"MARKS"});
+  CHECK(ctx.ws.marks_twists());
+  check_kept_splines(ctx.ws);
+  for (int k = 0; k < 3; ++k) {
+    ctx.run(undo_command, "");
+    check_kept_splines(ctx.ws);
+  }
+  for (int k = 0; k < 3; ++k) {
+    ctx.run(redo_command, "");
+    check_kept_splines(ctx.ws);
+  }
+  // Another generation of the surface, or twists that are not the surface's: not read.
+  Workspace other = ctx.ws;
+  other.changes.replaced();
+  CHECK(kept_splines(other) == nullptr);
+  other = ctx.ws;
+  auto zero = std::make_shared<SplineTangents>(*ctx.ws.splines.made);
+  zero->twists = Array();
+  other.splines.made = zero;
+  CHECK(kept_splines(other) == nullptr);
+  // PATCHES the workspace holds (not the interpolation's) are read, not made.
+  other = ctx.ws;
+  other.changes.derived = false;
+  CHECK(kept_splines(other) == nullptr);
 }
 
 }  // namespace igds::test

@@ -87,6 +87,16 @@ TEST_CASE("SAVE then RESTORE gives every surface variable back bit for bit") {
   CHECK(ws.status == status);
 }
 
+TEST_CASE("RESTORE of an interpolated surface keeps the tangents it was made with") {
+  Scratch s;
+  const Workspace saved = test::make_interpolated(6, 5, 2, 1);
+  save_surface(s.disk, "HULL", saved);
+  Workspace ws;
+  restore_surface(s.disk, "HULL", ws);
+  test::check_same_surface(ws, saved);
+  test::check_kept_splines(ws);
+}
+
 TEST_CASE("SAVE stores PATCHES and INTPN only when they are not the interpolation of the inputs") {
   Scratch s;
   Workspace made = test::make_interpolated(30, 30, 4, 4);

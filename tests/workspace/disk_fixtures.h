@@ -196,6 +196,15 @@ inline void check_same_surface(const Workspace& a, const Workspace& b) {
   CHECK(same_bits(a.intpn, b.intpn));
 }
 
+// The tangents and twists the workspace keeps with its surface: there, and those of its inputs
+// (the PATCHES made from them are those made from nothing kept).
+inline void check_kept_splines(const Workspace& ws) {
+  const auto kept = kept_splines(ws);
+  REQUIRE(kept != nullptr);
+  const SurfaceInput input = surface_input(ws);
+  CHECK(surface_patches(input, kept) == surface_patches(input));
+}
+
 inline void check_same_workspace(const Workspace& a, const Workspace& b) {
   check_same_surface(a, b);
   CHECK(same_bits(a.image, b.image));

@@ -128,6 +128,19 @@ TEST_CASE("a saved session is loaded bit for bit, every variable") {
   }
 }
 
+TEST_CASE("a surface made again at start keeps the tangents it was made with") {
+  Scratch s;
+  Workspace ws = test::make_interpolated(6, 5, 2, 1);
+  {
+    Session session(s.disk);
+    session.load();
+    session.save(ws);
+  }
+  const Workspace back = load_fresh(s.disk);
+  test::check_same_surface(back, ws);
+  test::check_kept_splines(back);
+}
+
 TEST_CASE("END APL's defined functions are kept with the session") {
   Scratch s;
   Workspace ws = test::make_workspace(3, 3, 1, 1);

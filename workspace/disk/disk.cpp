@@ -357,6 +357,7 @@ void restore_surface(const Disk& disk, std::string_view name, Workspace& ws) {
   ws.intpn = std::move(in.intpn);
   ws.set_surface_modes(in.marks_twists(), in.auto_tangents());
   ws.changes.replaced(derived);
+  keep_splines(ws, std::move(surface.tangents));  // none when the file's surface is kept
   drop_derived_patches(ws);
 }
 

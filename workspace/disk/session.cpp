@@ -491,6 +491,7 @@ Workspace Session::State::read_session() {
         throw *overflow;
       ws.patches = std::move(made.patches);
       ws.intpn = std::move(made.intpn);
+      keep_splines(ws, std::move(made.tangents));
     } catch (const DataError& e) {
       throw disk::Damage(made_surface_reason(e));
     }

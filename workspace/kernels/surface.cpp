@@ -157,6 +157,7 @@ std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& ou
   }
   const PatchMaker maker(input);  // checks the inputs first
   const PatchSource& source = maker.source();
+  out.tangents = maker.tangents();
   const std::size_t patch_numbers =
       std::size_t(input.nocur - 1) * std::size_t(input.nostr - 1) * 48;
   if (patches == PatchesOut::dropped) {
@@ -171,25 +172,30 @@ std::optional<DataError> interpolate_into(const SurfaceInput& input, Surface& ou
   return not_finite(patch_numbers, kp, out.intpn, ki);
 }
 
-PatchMaker::PatchMaker(const SurfaceInput& input) {
+PatchMaker::PatchMaker(const SurfaceInput& input, std::shared_ptr<const SplineTangents> made)
+    : made_(std::move(made)) {
   check_grid(input);
   check_tangents(input);
   assert(input.nocur > 1 && input.nostr > 1);
   const auto points = as_vec3(*input.inppn);
-  // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
-  if (input.marks_twists) twists_ = marks_twists(input.nocur, input.nostr, points);
-  tangents_ = grid_tangents(input.nocur, input.nostr, points, *input.inptg);
-  source_ = {std::size_t(input.nocur), std::size_t(input.nostr), points, &tangents_,
-             as_vec3(std::as_const(twists_))};
+  if (!made_) {
+    auto splines = std::make_shared<SplineTangents>();
+    // Marks's twists (docs/marks.md, Birkhoff and de Boor) or the manual's zero block.
+    if (input.marks_twists) splines->twists = marks_twists(input.nocur, input.nostr, points);
+    splines->tangents = grid_tangents(input.nocur, input.nostr, points, *input.inptg);
+    made_ = std::move(splines);
+  }
+  source_ = {std::size_t(input.nocur), std::size_t(input.nostr), points, &made_->tangents,
+             as_vec3(made_->twists)};
 }
 
-Array surface_patches(const SurfaceInput& input) {
+Array surface_patches(const SurfaceInput& input, std::shared_ptr<const SplineTangents> made) {
   if (input.nocur == 1 || input.nostr == 1) {
     check_grid(input);
     check_tangents(input);
     return Array({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
   }
-  const PatchMaker maker(input);  // checks the inputs first
+  const PatchMaker maker(input, std::move(made));  // checks the inputs first
   const PatchSource& source = maker.source();
   Array patches({std::size_t(input.nocur) - 1, std::size_t(input.nostr) - 1, 3, 4, 4});
   // Finite: they were when the surface was made.

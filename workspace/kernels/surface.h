@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -21,10 +22,23 @@ struct SurfaceInput {
   bool marks_twists = false;
 };
 
+// What the patch matrices of a grid (not a single curve or stringer) are made of besides its
+// input points: the tangents of the splines through them, and its twists (empty: the manual's
+// zero block). Made once for a surface, and kept with it (workspace/state.h, kept_tangents).
+struct SplineTangents {
+  GridTangents tangents;
+  Array twists;
+};
+
 struct Surface {
   Array patches;  // PATCHES: (NOCUR-1) x (NOSTR-1) x 3 x 4 x 4
   Array intpn;    // INTPN: (NOCUR+INTCU(NOCUR-1)) x (NOSTR+INTST(NOSTR-1)) x 3
-  friend bool operator==(const Surface&, const Surface&) = default;
+  // A grid's tangents and twists, made on the way (none for a single curve or stringer).
+  std::shared_ptr<const SplineTangents> tangents = nullptr;
+  // The same surface: the same numbers (the tangents follow from the inputs).
+  friend bool operator==(const Surface& a, const Surface& b) {
+    return a.patches == b.patches && a.intpn == b.intpn;
+  }
 };
 
 // A surface of a single curve (NOCUR 1) or stringer (NOSTR 1) as the spline of its points: the
@@ -48,24 +62,28 @@ LineSpline line_spline(const SurfaceInput& in);
 Surface interpolate(const SurfaceInput& input);
 
 // What makes the patch matrices of a grid (not a single curve or stringer) a row at a time
-// (coons.h, PatchSource): the tangents of its input points and its twists, made here. Throws
-// DataError as interpolate does.
+// (coons.h, PatchSource): its input points with their tangents and twists, made here unless
+// `made` holds those of the same inputs. Throws DataError as interpolate does (the inputs are
+// checked either way).
 class PatchMaker {
  public:
-  explicit PatchMaker(const SurfaceInput& input);
-  PatchMaker(const PatchMaker&) = delete;  // the source points into the maker
+  explicit PatchMaker(const SurfaceInput& input,
+                      std::shared_ptr<const SplineTangents> made = nullptr);
+  PatchMaker(const PatchMaker&) = delete;  // the source points into the tangents
   PatchMaker& operator=(const PatchMaker&) = delete;
   const PatchSource& source() const { return source_; }
+  const std::shared_ptr<const SplineTangents>& tangents() const { return made_; }
 
  private:
-  GridTangents tangents_;
-  Array twists_;
+  std::shared_ptr<const SplineTangents> made_;
   PatchSource source_;
 };
 
 // COONS alone: the PATCHES interpolate keeps, for a surface made with PatchesOut::dropped whose
-// patches are asked for later. Throws DataError as interpolate does.
-Array surface_patches(const SurfaceInput& input);
+// patches are asked for later (from the tangents it made, when `made` holds them). Throws
+// DataError as interpolate does.
+Array surface_patches(const SurfaceInput& input,
+                      std::shared_ptr<const SplineTangents> made = nullptr);
 
 // FIT alone, for CHANGE GRID: INTPN for new INTCU/INTST from PATCHES already computed. The input
 // points are copied bit-exactly to their places in the grid. A single curve or stringer has no
