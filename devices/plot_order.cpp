@@ -171,25 +171,29 @@ std::vector<std::size_t> not_drawn(std::span<const Line> paths, const PointIds& 
         for (std::size_t k = cut[t]; k < cut[t + 1]; ++k) {
           const DevicePoint* q = paths[k].data();
           const std::size_t segments = paths[k].empty() ? 0 : paths[k].size() - 1;
-          if (segments == 0) continue;
           const auto p = static_cast<std::uint32_t>(k);
-          // The run being made: its tile (none yet: `open` false) and first segment.
-          std::uint32_t tile = 0, first = 0;
-          bool open = false;
-          DevicePoint a = q[0];
-          std::uint32_t tile_a = tile_of(a);
-          for (std::size_t i = 0; i < segments; ++i) {
+          std::uint32_t tile_a = segments > 0 ? tile_of(q[0]) : 0;
+          for (std::size_t i = 0; i < segments;) {
+            // A run: segment i, then those after it of its tile and a length.
             const DevicePoint b = q[i + 1];
-            const std::uint32_t tile_b = tile_of(b), here = std::min(tile_a, tile_b);
-            const bool zero_length = a == b;
-            a = b, tile_a = tile_b;
-            if (open && here == tile && !zero_length) [[likely]]
+            if (q[i] == b) {
+              zero.push_back(base[k] + i);
+              tile_a = tile_of(b), ++i;
               continue;
-            if (open) out.push_back({tile, p, first, static_cast<std::uint32_t>(i)});
-            tile = here, first = static_cast<std::uint32_t>(i), open = true;
-            if (zero_length) zero.push_back(base[k] + i), open = false;
+            }
+            std::uint32_t tile_b = tile_of(b);
+            const std::uint32_t tile = std::min(tile_a, tile_b);
+            const std::size_t first = i;
+            for (++i; i < segments; ++i) {
+              const DevicePoint c = q[i + 1];
+              const std::uint32_t tile_c = tile_of(c);
+              if (std::min(tile_b, tile_c) != tile || c == q[i]) break;
+              tile_b = tile_c;
+            }
+            tile_a = tile_b;
+            out.push_back(
+                {tile, p, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(i)});
           }
-          if (open) out.push_back({tile, p, first, static_cast<std::uint32_t>(segments)});
         }
         runs[t] = std::move(out);
         add(zero);
