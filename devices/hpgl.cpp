@@ -205,18 +205,20 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
     std::size_t drawn = 0;
     // The stroke's points through locals: a store through `w` (a char pointer) could change
     // anything as far as the compiler knows, and the stroke would be read again at every point.
+    // The mode too: `pair` is read through a reference.
     const Stroke& stroke = order.strokes[s];
-    const DevicePoint* const points = lines[stroke.line].data();
-    const std::size_t first = stroke.first, last = stroke.last;
-    const bool reversed = stroke.reversed;
+    const bool reversed = stroke.reversed, by_difference = relative;
+    const DevicePoint* const base =
+        lines[stroke.line].data() + (reversed ? stroke.last : stroke.first);
+    const std::ptrdiff_t step = reversed ? -1 : 1;
     for (std::size_t i = chunk.first; i < chunk.last; ++i) {
-      const DevicePoint p = points[reversed ? last - i : first + i];
+      const DevicePoint p = base[step * static_cast<std::ptrdiff_t>(i)];
       if (p == at) continue;
       if (i == pd_at)
         *w++ = 'P', *w++ = 'D';
       else
         *w++ = ',';
-      w = pair(w, p, at);
+      w = by_difference ? put_pair(w, p.x - at.x, p.y - at.y) : put_pair(w, p.x, p.y);
       ++drawn;
       at = p;
     }
