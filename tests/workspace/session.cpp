@@ -74,6 +74,17 @@ Workspace load_fresh(const Disk& disk, std::vector<std::string>* notices = nullp
   return ws;
 }
 
+// `ws` saved as the session of a disk that has none, then loaded afresh.
+Workspace saved_and_loaded(const Disk& disk, Workspace& ws,
+                           std::vector<std::string>* notices = nullptr) {
+  {
+    Session session(disk);
+    session.load();
+    session.save(ws);
+  }
+  return load_fresh(disk, notices);
+}
+
 std::string report_of(auto&& f) {
   try {
     f();
@@ -103,13 +114,8 @@ TEST_CASE("the very first session starts empty and quietly") {
 TEST_CASE("a saved session is loaded bit for bit, every variable") {
   Scratch s;
   Workspace ws = test::make_workspace(4, 5, 3, 2);
-  {
-    Session session(s.disk);
-    session.load();
-    session.save(ws);
-  }
   std::vector<std::string> notices;
-  Workspace back = load_fresh(s.disk, &notices);
+  Workspace back = saved_and_loaded(s.disk, ws, &notices);
   test::check_same_workspace(back, ws);
   CHECK(notices.empty());
   // The disk holds the session and the files of its large variables; no lock, no temporary.
@@ -131,12 +137,7 @@ TEST_CASE("a saved session is loaded bit for bit, every variable") {
 TEST_CASE("a surface made again at start keeps the tangents it was made with") {
   Scratch s;
   Workspace ws = test::make_interpolated(6, 5, 2, 1);
-  {
-    Session session(s.disk);
-    session.load();
-    session.save(ws);
-  }
-  const Workspace back = load_fresh(s.disk);
+  const Workspace back = saved_and_loaded(s.disk, ws);
   test::check_same_surface(back, ws);
   test::check_kept_splines(back);
 }
