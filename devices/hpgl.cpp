@@ -203,9 +203,9 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
     }
     const std::size_t pd_at = o.pd && o.stroke == s ? o.at : none;
     std::size_t drawn = 0;
-    // The stroke's points through locals: a store through `w` (a char pointer) could change
-    // anything as far as the compiler knows, and the stroke would be read again at every point.
-    // The mode too: `pair` is read through a reference.
+    // The stroke's points and the mode through locals: a store through `w` (a char pointer)
+    // could change anything as far as the compiler knows, and the stroke (and the mode, through
+    // `pair`) would be read again at every point.
     const Stroke& stroke = order.strokes[s];
     const bool reversed = stroke.reversed, by_difference = relative;
     const DevicePoint* const base =

@@ -24,7 +24,7 @@ struct SurfaceInput {
 
 // What the patch matrices of a grid (not a single curve or stringer) are made of besides its
 // input points: the tangents of the splines through them, and its twists (empty: the manual's
-// zero block). Made once for a surface, and kept with it (workspace/state.h, kept_tangents).
+// zero block). Made once for a surface, and kept with it (workspace/state.h, kept_splines).
 struct SplineTangents {
   GridTangents tangents;
   Array twists;
