@@ -13,6 +13,11 @@ namespace {
 
 constexpr std::size_t none = static_cast<std::size_t>(-1);
 
+// The pair of a vector to p from `at`: p's coordinates, or in relative mode their differences.
+char* put_vector(char* out, bool relative, DevicePoint p, DevicePoint at) {
+  return relative ? put_pair(out, p.x - at.x, p.y - at.y) : put_pair(out, p.x, p.y);
+}
+
 double distance(DevicePoint a, DevicePoint b) {
   return std::hypot(double(a.x) - b.x, double(a.y) - b.y);
 }
@@ -96,7 +101,7 @@ void HpglEncoder::draw_run(std::span<const DevicePoint> points, bool reversed) {
       const DevicePoint p = points[reversed ? n - 1 - i : i];
       if (at == p) continue;
       *out++ = ',';
-      out = relative ? put_pair(out, p.x - at.x, p.y - at.y) : put_pair(out, p.x, p.y);
+      out = put_vector(out, relative, p, at);
       ++vectors;
       at = p;
     }
@@ -179,9 +184,6 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
     }
   std::vector<std::size_t> vectors(chunks.size());
   const bool relative = relative_;
-  auto pair = [relative](char* w, DevicePoint p, DevicePoint at) {
-    return relative ? put_pair(w, p.x - at.x, p.y - at.y) : put_pair(w, p.x, p.y);
-  };
   // A move's ";PU", pair and ";", then a separator (or PD) and a pair a point: 24 bytes.
   put_each(*out_, chunks.size(), 28 + 1 + 24 * chunk_points, [&](char* w, std::size_t c) {
     const Chunk& chunk = chunks[c];
@@ -195,7 +197,7 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
       if (o.lift) {
         if (o.close) *w++ = ';';
         *w++ = 'P', *w++ = 'U';
-        w = pair(w, at, o.before);
+        w = put_vector(w, relative, at, o.before);
         *w++ = ';';
       }
     } else {
@@ -204,8 +206,8 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
     const std::size_t pd_at = o.pd && o.stroke == s ? o.at : none;
     std::size_t drawn = 0;
     // The stroke's points and the mode through locals: a store through `w` (a char pointer)
-    // could change anything as far as the compiler knows, and the stroke (and the mode, through
-    // `pair`) would be read again at every point.
+    // could change anything as far as the compiler knows, and the stroke (and the mode, captured
+    // by reference) would be read again at every point.
     const Stroke& stroke = order.strokes[s];
     const bool reversed = stroke.reversed, by_difference = relative;
     const DevicePoint* const base =
@@ -218,7 +220,7 @@ void HpglEncoder::draw_order(const PlotOrder& order, std::span<const Line> lines
         *w++ = 'P', *w++ = 'D';
       else
         *w++ = ',';
-      w = by_difference ? put_pair(w, p.x - at.x, p.y - at.y) : put_pair(w, p.x, p.y);
+      w = put_vector(w, by_difference, p, at);
       ++drawn;
       at = p;
     }

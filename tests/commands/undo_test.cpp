@@ -98,9 +98,15 @@ TEST_CASE("a surface keeps the tangents it was interpolated with, its own after 
     ctx.run(redo_command, "");
     check_kept_splines(ctx.ws);
   }
-  // Another generation of the surface, or twists that are not the surface's: not read.
+  // Another generation of the surface, tangents of another grid or twists that are not the
+  // surface's: not read.
   Workspace other = ctx.ws;
   other.changes.replaced();
+  CHECK(kept_splines(other) == nullptr);
+  other = ctx.ws;
+  auto smaller = std::make_shared<SplineTangents>(*ctx.ws.splines.made);
+  smaller->tangents.along_curves.pop_back();
+  other.splines.made = smaller;
   CHECK(kept_splines(other) == nullptr);
   other = ctx.ws;
   auto zero = std::make_shared<SplineTangents>(*ctx.ws.splines.made);
