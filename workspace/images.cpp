@@ -224,23 +224,44 @@ Image comb_image(const Workspace& ws, const View& view) {
       comb_vectors(Vec3::load(bends), Vec3::load(bends + 3), images_by, xy + 4 * k, largest);
     }
   };
-  if (known) {
-    image.comb_scale = *known;
-  } else {
-    // The largest curvature, in a pass of its own.
+  // The scale: known, or for CONIC first guessed from a sample of the rows (below), or measured
+  // in a pass of its own.
+  auto measured_scale = [&](const LargestCurvature& largest) {
+    const Vec3 size = box.hi - box.lo;
+    return comb_scale_for(std::max({size.x, size.y, size.z}), largest.length());
+  };
+  auto measure = [&](const auto& rows_of) {
     std::vector<LargestCurvature> found(parts);
-    by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
+    rows_of([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
       vectors(first, last, curvature, found[part]);
     });
     LargestCurvature largest;
     for (const LargestCurvature& f : found) largest.add(f);
-    const Vec3 size = box.hi - box.lo;
-    image.comb_scale = comb_scale_for(std::max({size.x, size.y, size.z}), largest.length());
+    return largest;
+  };
+  const bool guessed = !known && !parallel && !line;
+  if (known) {
+    image.comb_scale = *known;
+  } else if (guessed) {
+    // Every eighth row of patches: the scale goes by steps of 2 to 2.5 (comb_scale_for), so the
+    // largest curvature of a smooth surface's sample seldom gives another; the combs' pass
+    // measures them all, and is made again with the whole's scale where it does.
+    const std::size_t sampled = (rows + 8 * patch_rows - 1) / (8 * patch_rows);
+    image.comb_scale = measured_scale(measure([&](const auto& each) {
+      in_parallel(parts, [&](unsigned part) {
+        std::optional<CurvatureRows> curvature(std::in_place, in, ws.patches, source);
+        for (std::size_t k = sampled * part / parts; k < sampled * (part + 1) / parts; ++k)
+          each(part, 8 * patch_rows * k, std::min(rows, 8 * patch_rows * k + patch_rows),
+               curvature);
+      });
+    }));
+  } else {
+    image.comb_scale = measured_scale(measure(by_rows));
   }
-  const double scale = image.comb_scale;
   // The first comb (two a point) whose image is not finite, named by its point of INTPN.
   std::atomic<std::size_t> not_finite{2 * points.size()};
   if (parallel) {
+    const double scale = image.comb_scale;
     // The image of a comb's end p - s k is the image of p less s times that of k.
     auto combs = [&](std::size_t first, std::size_t last) {
       const std::size_t bad =
@@ -261,21 +282,23 @@ Image comb_image(const Workspace& ws, const View& view) {
   } else {
     // The comb's end in space, away from the centre of curvature (so that a comb stands outside
     // the surface's convex side and combs do not cross in a tight bend).
-    // CONIC is not linear: the ends are made again once s is known, and projected as they are
-    // made. A view point inside the box of all the ends is refused before any other report, as
-    // for any image (project_image): a part's own findings are reported after that box is known.
+    // CONIC is not linear: the ends are made with s, and projected as they are made. A view
+    // point inside the box of all the ends is refused before any other report, as for any image
+    // (project_image): a part's own findings are reported after that box is known.
     const Vec3 centre = bounding_box_centre(as_vec3(ws.inppn));
     const Vec3 eye{view.parameters[0], view.parameters[1], view.parameters[2]};
     const ConicFrame frame = conic_frame(eye, centre);  // the surface's image was made with it
     std::vector<ProjectedPart> found_ends(parts);
+    std::vector<LargestCurvature> found(parts);
     std::vector<std::vector<double>> line_ends(parts);  // a single line's, in space
-    by_rows([&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
+    auto ends = [&](unsigned part, std::size_t first, std::size_t last, auto& curvature) {
+      const double scale = image.comb_scale;
       const std::size_t n = 2 * (last - first) * cols;
       const double* at = ws.intpn.data() + 3 * cols * first;
       double* xy = image.combs.data() + 4 * cols * first;
       ProjectedPart p;
       if (curvature) {
-        p = curvature->conic_combs(first, last, at, scale, frame, eye, xy);
+        p = curvature->conic_combs(first, last, at, scale, frame, eye, xy, found[part]);
       } else {
         std::vector<double>& in_space = line_ends[part];
         in_space.resize(3 * n);
@@ -289,7 +312,18 @@ Image comb_image(const Workspace& ws, const View& view) {
       found_ends[part].behind = found_ends[part].behind || p.behind;
       found_ends[part].about_eye.add(p.about_eye);
       if (p.not_finite < n) keep_least(not_finite, 2 * cols * first + p.not_finite);
-    });
+    };
+    by_rows(ends);
+    if (guessed) {
+      LargestCurvature largest;
+      for (const LargestCurvature& f : found) largest.add(f);
+      if (const double whole = measured_scale(largest); whole != image.comb_scale) {
+        image.comb_scale = whole;
+        found_ends.assign(parts, {});
+        not_finite = 2 * points.size();
+        by_rows(ends);
+      }
+    }
     Box3 about_eye;
     bool behind = false;
     for (const ProjectedPart& p : found_ends)

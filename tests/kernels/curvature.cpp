@@ -357,7 +357,9 @@ TEST_CASE("the largest curvature: squares compared, lengths where they overflow,
   CHECK(other.length() == 1e200);
 }
 
-TEST_CASE("the combs seen from an eye as they are made: as their ends projected one at a time") {
+TEST_CASE(
+    "the combs seen from an eye as they are made: as their ends projected one at a time, "
+    "measured") {
   // 10 patches a row, 6 points a patch (7 in the last): four patches at a time, a patch at a
   // time and one point at a time. One point far out, whose combs' images overflow, and one that is
   // not a number (behind the eye, and not finite), each in turn where each way makes it.
@@ -391,10 +393,15 @@ TEST_CASE("the combs seen from an eye as they are made: as their ends projected 
                     ends.data() + 6 * k);
         const ProjectedPart want = project_part(view, centre, Vec3View(ends.data(), 2 * n),
                                                 MutablePoint2View(expected.data(), 2 * n));
-        const ProjectedPart got =
-            CurvatureRows(in, s.patches)
-                .conic_combs(0, shape.rows, points.data(), scale, frame, eye, images.data());
+        LargestCurvature measured, largest;
+        for (std::size_t k = 0; k < n; ++k)
+          largest.add(bend(bends, k, 0)), largest.add(bend(bends, k, 1));
+        const ProjectedPart got = CurvatureRows(in, s.patches)
+                                      .conic_combs(0, shape.rows, points.data(), scale, frame, eye,
+                                                   images.data(), measured);
         CHECK(std::equal(images.begin(), images.end(), expected.begin(), same));
+        CHECK(measured.squared == largest.squared);
+        CHECK(measured.overflowing == largest.overflowing);
         CHECK(got.not_finite == want.not_finite);
         CHECK(got.behind == want.behind);
         CHECK(got.about_eye.lo == want.about_eye.lo);

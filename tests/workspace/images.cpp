@@ -63,11 +63,11 @@ Workspace interpolated_again(Workspace ws) {
 }
 
 // 274 x 274 points: more than threads_for makes one part of (six numbers a point), and more than
-// DISPLAY COMBS takes at a time. The last curve zigzags: the highest points and the sharpest
-// bends are in the last rows.
-Workspace zigzag_surface() {
+// DISPLAY COMBS takes at a time. Input curve `curve` zigzags (by default the last: the highest
+// points and the sharpest bends are in the last rows).
+Workspace zigzag_surface(std::size_t curve = 39) {
   Workspace ws = test::make_interpolated(40, 40, 6, 6);
-  for (std::size_t j = 0; j < 40; ++j) ws.inppn.ravel[3 * (39 * 40 + j) + 2] += j % 2 ? 50 : 0;
+  for (std::size_t j = 0; j < 40; ++j) ws.inppn.ravel[3 * (curve * 40 + j) + 2] += j % 2 ? 50 : 0;
   return interpolated_again(std::move(ws));
 }
 
@@ -140,6 +140,29 @@ TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pas
     if (norm(bend[k]) > norm(bend[where])) where = k;
   CHECK(where >= bend.size() / 2);
   check_combs(ws);
+}
+
+TEST_CASE("DISPLAY COMBS CONIC guesses its scale from a sample of the rows, made again if wrong") {
+  // The guess takes the rows of every eighth row of patches (7 points a patch here): with the
+  // zigzag on the first curve they hold the sharpest bend, on the last curve they do not.
+  for (const std::size_t curve : {std::size_t(0), std::size_t(39)}) {
+    CAPTURE(curve);
+    const Workspace ws = zigzag_surface(curve);
+    Array made;
+    const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+    const auto bend = as_vec3(bends);
+    const std::size_t cols = 274, patch_rows = 7;
+    double most = 0, sampled = 0;
+    for (std::size_t k = 0; k < bend.size(); ++k) {
+      most = std::max(most, norm(bend[k]));
+      if (k / 2 / cols / patch_rows % 8 == 0) sampled = std::max(sampled, norm(bend[k]));
+    }
+    const Box3 box = bounding_box(as_vec3(ws.intpn));
+    const Vec3 size = box.hi - box.lo;
+    const double extent = std::max({size.x, size.y, size.z});
+    CHECK((comb_scale_for(extent, sampled) == comb_scale_for(extent, most)) == (curve == 0));
+    check_combs(ws);
+  }
 }
 
 TEST_CASE("DISPLAY COMBS of a single curve or stringer: the combs of its spline") {

@@ -159,36 +159,7 @@ struct Keep {
   }
 };
 
-// ... or the images seen from an eye of the points' combs' ends p - s k (CurvatureRows::
-// conic_combs), four numbers a point, with what the images find ...
-struct ConicCombs {
-  const double* points;  // the points, three numbers each
-  double scale;
-  double* out;
-  ConicImages conic;
-  Lanes seen = {0, 0, 0, 0};  // x * 0 of the images, summed
-  [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
-                                           const Vec3Lanes& across) {
-    const Vec3Lanes p = load_lanes(points + 3 * m, 3 * apart);
-    Lanes x[2], y[2];
-    conic(p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z, x[0], y[0]);
-    conic(p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z, x[1], y[1]);
-    for (int l = 0; l < 4; ++l) {
-      double* o = out + 4 * (m + l * apart);
-      o[0] = x[0][l], o[1] = y[0][l], o[2] = x[1][l], o[3] = y[1][l];
-    }
-    seen += (x[0] * 0.0 + y[0] * 0.0) + (x[1] * 0.0 + y[1] * 0.0);
-  }
-  void one(std::size_t m, Vec3 along, Vec3 across) {
-    const Vec3 p = Vec3::load(points + 3 * m);
-    const Point2 a = conic(p - scale * along), b = conic(p - scale * across);
-    a.store(out + 4 * m);
-    b.store(out + 4 * m + 2);
-    seen[0] += (a.x * 0.0 + a.y * 0.0) + (b.x * 0.0 + b.y * 0.0);
-  }
-};
-
-// ... or measured and, for a parallel projection, projected (CurvatureRows::combs).
+// ... or measured and, for a parallel projection, projected (CurvatureRows::combs) ...
 template <bool project>
 struct Measure {
   const ProjectiveMap* map;
@@ -224,6 +195,38 @@ struct Measure {
   }
   void finish() {
     largest.squared = std::max({largest.squared, squared[0], squared[1], squared[2], squared[3]});
+  }
+};
+
+// ... or the images seen from an eye of the points' combs' ends p - s k (CurvatureRows::
+// conic_combs), four numbers a point, with what the images find, the vectors measured.
+struct ConicCombs {
+  const double* points;  // the points, three numbers each
+  double scale;
+  double* out;
+  ConicImages conic;
+  Measure<false> measure;
+  Lanes seen = {0, 0, 0, 0};  // x * 0 of the images, summed
+  [[gnu::always_inline]] inline void lanes(std::size_t m, std::size_t apart, const Vec3Lanes& along,
+                                           const Vec3Lanes& across) {
+    measure.lanes(m, apart, along, across);
+    const Vec3Lanes p = load_lanes(points + 3 * m, 3 * apart);
+    Lanes x[2], y[2];
+    conic(p.x - scale * along.x, p.y - scale * along.y, p.z - scale * along.z, x[0], y[0]);
+    conic(p.x - scale * across.x, p.y - scale * across.y, p.z - scale * across.z, x[1], y[1]);
+    for (int l = 0; l < 4; ++l) {
+      double* o = out + 4 * (m + l * apart);
+      o[0] = x[0][l], o[1] = y[0][l], o[2] = x[1][l], o[3] = y[1][l];
+    }
+    seen += (x[0] * 0.0 + y[0] * 0.0) + (x[1] * 0.0 + y[1] * 0.0);
+  }
+  void one(std::size_t m, Vec3 along, Vec3 across) {
+    measure.one(m, along, across);
+    const Vec3 p = Vec3::load(points + 3 * m);
+    const Point2 a = conic(p - scale * along), b = conic(p - scale * across);
+    a.store(out + 4 * m);
+    b.store(out + 4 * m + 2);
+    seen[0] += (a.x * 0.0 + a.y * 0.0) + (b.x * 0.0 + b.y * 0.0);
   }
 };
 
@@ -371,10 +374,11 @@ void CurvatureRows::operator()(std::size_t first, std::size_t last, double* out)
 
 ProjectedPart CurvatureRows::conic_combs(std::size_t first, std::size_t last, const double* points,
                                          double scale, const ConicFrame& frame, Vec3 eye,
-                                         double* images) {
-  ConicCombs combs{points, scale, images, ConicImages(frame, eye)};
+                                         double* images, LargestCurvature& largest) {
+  ConicCombs combs{points, scale, images, ConicImages(frame, eye), {nullptr, nullptr, largest}};
   each_row(first, last, combs);
   combs.conic.finish();
+  combs.measure.finish();
   const std::size_t n = 2 * (last - first) * cols_;
   ProjectedPart found{n, combs.conic.behind, combs.conic.about_eye};
   const Lanes& seen = combs.seen;

@@ -66,9 +66,11 @@ class CurvatureRows {
   // Rows [first, last): the CONIC images seen from `eye` (`frame`: kernels/conic_lanes.h) of
   // their combs' ends (comb_ends of their points, `points`: 3 (last - first) cols numbers, INTPN's)
   // into `images` (4 (last - first) cols numbers: the curve's comb's x y, then the stringer's),
-  // with what project_part finds of them (not_finite counts the combs, two a point).
+  // with what project_part finds of them (not_finite counts the combs, two a point); their
+  // curvature vectors measured into `largest`.
   ProjectedPart conic_combs(std::size_t first, std::size_t last, const double* points, double scale,
-                            const ConicFrame& frame, Vec3 eye, double* images);
+                            const ConicFrame& frame, Vec3 eye, double* images,
+                            LargestCurvature& largest);
   // Rows [first, last) not kept: comb_vectors of each point, the images to `images` (4 (last -
   // first) cols numbers) with `map`.
   void combs(std::size_t first, std::size_t last, LargestCurvature& largest,
