@@ -45,6 +45,10 @@ void TextOut::put(char c, std::size_t count) {
   }
 }
 
+void TextOut::put_runs(std::span<const std::string_view> runs) {
+  for (std::string_view run : runs) put(run);
+}
+
 std::uint64_t TextOut::size() const {
   return std::max(end_offset_, offset());
 }
@@ -85,8 +89,11 @@ PiecesOut::PiecesOut() {
 }
 
 void PiecesOut::put_into(TextOut& out) const {
-  for (const auto& [bytes, size] : done_) out.put(std::string_view(bytes.get(), size));
-  out.put(std::string_view(begin_, static_cast<std::size_t>(at_ - begin_)));
+  std::vector<std::string_view> runs;
+  runs.reserve(done_.size() + 1);
+  for (const auto& [bytes, size] : done_) runs.emplace_back(bytes.get(), size);
+  runs.emplace_back(begin_, static_cast<std::size_t>(at_ - begin_));
+  out.put_runs(runs);
 }
 
 void PiecesOut::clear() {

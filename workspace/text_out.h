@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -53,6 +54,9 @@ class TextOut {
   }
   void put(std::string_view bytes);     // any length
   void put(char c, std::size_t count);  // `count` copies of c
+  // The runs one after the other, as put(run) for each; a file takes them from where they are,
+  // without a copy into its buffer (disk::write_file).
+  virtual void put_runs(std::span<const std::string_view> runs);
   std::uint64_t offset() const { return base_ + std::uint64_t(at_ - begin_); }  // the next byte's
   std::uint64_t size() const;  // the text's length so far
 

@@ -622,14 +622,21 @@ namespace igds {
 
 // A text of several pieces with a hole filled later, as EXPORT IGES writes its directory.
 void holed_text(TextOut& out) {
+  // A text made aside in pieces of a megabyte (as put_in_order's are), put whole: a file takes
+  // its runs from where they are, after the bytes in its buffer.
+  PiecesOut aside;
+  aside.put('x', 1500000);
+  aside.put('y', 1500000);
   out.put("head\n");
   const std::uint64_t hole = out.offset();
   out.skip(10);
+  aside.put_into(out);
   for (int k = 0; k < 3000000; ++k) {
     char* w = out.room(4);
     w[0] = char('a' + k % 26), w[1] = 'b', w[2] = 'c';
     out.commit(w + 3);
   }
+  aside.put_into(out);
   const std::uint64_t end = out.offset();
   out.seek(hole);
   out.put("0123456789");
@@ -641,9 +648,11 @@ TEST_CASE("a made text: pieces, a hole written later, the same in a string and i
   StringOut text;
   holed_text(text);
   const std::string expected = text.take_text();
-  REQUIRE(expected.size() == 5 + 10 + 9000000 + 1);
+  REQUIRE(expected.size() == 5 + 10 + 3000000 + 9000000 + 3000000 + 1);
   CHECK(expected.substr(0, 15) == "head\n0123456789");
-  CHECK(expected.substr(15, 6) == "abcbbc");
+  CHECK(expected.substr(15, 3000000) == std::string(1500000, 'x') + std::string(1500000, 'y'));
+  CHECK(expected.substr(3000015, 6) == "abcbbc");
+  CHECK(expected.substr(12000015, 3000000) == expected.substr(15, 3000000));
   Scratch s;
   CHECK(write_user_file(s.disk, "TEXT", "IGS", holed_text) == expected.size());
   std::ifstream in(s.disk.path("TEXT", "IGS"), std::ios::binary);
@@ -656,8 +665,11 @@ TEST_CASE("a made text: pieces, a hole written later, the same in a string and i
                                     throw std::runtime_error("writer failed");
                                   }),
                   std::runtime_error);
-  disk::set_write_limit_for_testing(std::size_t{5} << 20);
-  CHECK_THROWS_AS(write_user_file(s.disk, "TEXT", "IGS", holed_text), Report);
+  // The disk fills in the runs of a text made aside, then in the buffer's bytes.
+  for (const std::size_t limit : {std::size_t{1} << 20, std::size_t{5} << 20}) {
+    disk::set_write_limit_for_testing(limit);
+    CHECK_THROWS_AS(write_user_file(s.disk, "TEXT", "IGS", holed_text), Report);
+  }
   disk::set_write_limit_for_testing(std::nullopt);
   std::ifstream again(s.disk.path("TEXT", "IGS"), std::ios::binary);
   CHECK(std::string((std::istreambuf_iterator<char>(again)), std::istreambuf_iterator<char>()) ==

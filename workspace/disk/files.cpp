@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <span>
 #include <utility>
 
 #include <fmt/format.h>
@@ -70,8 +71,8 @@ class Fd {
   int fd_;
 };
 
-// writev(2) of as many runs as it takes, honouring the test limit.
-void write_runs(int fd, const std::vector<std::string_view>& runs) {
+// pwritev(2) of as many runs as it takes, at `at` in the file, honouring the test limit.
+void write_runs(int fd, std::span<const std::string_view> runs, std::uint64_t at) {
   std::size_t k = 0, offset = 0;  // the next byte: run k, at offset
   while (k < runs.size()) {
     if (offset == runs[k].size()) {
@@ -81,7 +82,9 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
     }
     ssize_t done;
     if (write_limit) {
-      done = limited_write(fd, runs[k].data() + offset, runs[k].size() - offset);
+      done = limited(runs[k].size() - offset, [&](std::size_t m) {
+        return ::pwrite(fd, runs[k].data() + offset, m, static_cast<off_t>(at));
+      });
     } else {
       iovec v[64];
       int n = 0;
@@ -92,7 +95,7 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
         v[n].iov_len = runs[j].size() - from;
         ++n;
       }
-      done = ::writev(fd, v, n);
+      done = ::pwritev(fd, v, n, static_cast<off_t>(at));
       if (done > 0) bytes_written += static_cast<std::size_t>(done);
     }
     if (done < 0) {
@@ -100,6 +103,7 @@ void write_runs(int fd, const std::vector<std::string_view>& runs) {
       throw IoError(errno);
     }
     auto left = static_cast<std::size_t>(done);
+    at += left;
     while (left > 0) {
       const std::size_t here = std::min(left, runs[k].size() - offset);
       offset += here;
@@ -152,6 +156,15 @@ class FileOut final : public TextOut {
   }
   // Writes what is left; IoError when the system refuses.
   void finish() { seek(offset()); }
+  // After the buffer, straight from where the runs are.
+  void put_runs(std::span<const std::string_view> runs) override {
+    seek(offset());
+    std::size_t n = 0;
+    for (std::string_view run : runs) n += run.size();
+    write_runs(fd_, runs, base_);
+    if (n > 0) start_writeback(fd_, base_, n);
+    base_ += n;
+  }
 
  private:
   void take(std::size_t) override {
@@ -171,7 +184,7 @@ void put_runs(int fd, const std::vector<std::string_view>& runs) {
   std::size_t size = 0;
   std::uint64_t offset = 0;
   auto flush = [&] {
-    write_runs(fd, some);
+    write_runs(fd, some, offset);
     if (size > 0) start_writeback(fd, offset, size);
     offset += size;
     some.clear();
