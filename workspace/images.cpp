@@ -158,6 +158,57 @@ double comb_scale_for(double extent, double most) {
 
 namespace {
 
+// The input point where the input lines of one direction bend most sharply, by the circle
+// through it and its two neighbours on its line (the squared curvature 4 |a x b|^2 / (|a| |b|
+// |c|)^2 of its sides a, b and c): its row of INPPN (`curves` rows of `stringers` points), or none
+// where no line has three points that make a circle. The curves when `along` is 1, else the
+// stringers (`along` is a row); the points are read in their order.
+std::optional<std::size_t> sharpest_input_row(Vec3View points, std::size_t curves,
+                                              std::size_t stringers, std::size_t along) {
+  // The first and last rows (stringers) or columns (curves) have no neighbour on one side.
+  const std::size_t edge_row = along == 1 ? 0 : 1, edge_column = along == 1 ? 1 : 0;
+  double most = 0;
+  std::optional<std::size_t> at;
+  for (std::size_t i = edge_row; i + edge_row < curves; ++i)
+    for (std::size_t j = edge_column; j + edge_column < stringers; ++j) {
+      const std::size_t m = i * stringers + j;
+      const Vec3 p = points[m - along], q = points[m], r = points[m + along];
+      const Vec3 a = q - p, b = r - q, c = r - p;
+      const double sides = dot(a, a) * dot(b, b) * dot(c, c);
+      const Vec3 area = cross(a, b);
+      const double bend = 4 * dot(area, area) / sides;
+      if (sides > 0 && bend > most) most = bend, at = i;
+    }
+  return at;
+}
+
+}  // namespace
+
+std::vector<std::size_t> comb_guess_rows(const Workspace& ws) {
+  const GridShape shape = intpn_shape(ws.nocur, ws.nostr, ws.intcu, ws.intst);
+  const std::size_t curves = std::size_t(ws.nocur), stringers = std::size_t(ws.nostr);
+  const std::size_t patch_rows = std::size_t(ws.intcu) + 1, last_patch = curves - 2;
+  std::vector<std::size_t> patches;
+  for (std::size_t q = 0; q <= last_patch; q += 8) patches.push_back(q);
+  const auto points = as_vec3(ws.inppn);
+  for (const std::optional<std::size_t> row :
+       {sharpest_input_row(points, curves, stringers, 1),
+        sharpest_input_row(points, curves, stringers, stringers)})
+    if (row) patches.insert(patches.end(), {*row - (*row > 0), std::min(*row, last_patch)});
+  std::sort(patches.begin(), patches.end());
+  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  std::vector<std::size_t> rows;
+  for (const std::size_t q : patches) {
+    // A row of patches has the grid's rows from its first to the next one's first; the last
+    // also the grid's last row.
+    const std::size_t end = q == last_patch ? shape.rows : (q + 1) * patch_rows;
+    for (std::size_t row = q * patch_rows; row < end; ++row) rows.push_back(row);
+  }
+  return rows;
+}
+
+namespace {
+
 // The comb scale of combs already drawn from the current surface (an image the workspace holds,
 // made): it depends on the surface alone (the box of INTPN and its largest curvature), not on the
 // view.
@@ -243,16 +294,16 @@ Image comb_image(const Workspace& ws, const View& view) {
   if (known) {
     image.comb_scale = *known;
   } else if (guessed) {
-    // Every eighth row of patches: the scale goes by steps of 2 to 2.5 (comb_scale_for), so the
-    // largest curvature of a smooth surface's sample seldom gives another; the combs' pass
-    // measures them all, and is made again with the whole's scale where it does.
-    const std::size_t sampled = (rows + 8 * patch_rows - 1) / (8 * patch_rows);
+    // The scale goes by steps of 2 to 2.5 (comb_scale_for), so the largest curvature of the
+    // rows that are likeliest to hold it is seldom another's; the combs' pass measures them all,
+    // and is made again with the whole's scale where it is.
+    const std::vector<std::size_t> sample = comb_guess_rows(ws);
     image.comb_scale = measured_scale(measure([&](const auto& each) {
       in_parallel(parts, [&](unsigned part) {
         std::optional<CurvatureRows> curvature(std::in_place, in, ws.patches, source);
-        for (std::size_t k = sampled * part / parts; k < sampled * (part + 1) / parts; ++k)
-          each(part, 8 * patch_rows * k, std::min(rows, 8 * patch_rows * k + patch_rows),
-               curvature);
+        const std::size_t n = sample.size();
+        for (std::size_t k = n * part / parts; k < n * (part + 1) / parts; ++k)
+          each(part, sample[k], sample[k] + 1, curvature);
       });
     }));
   } else {

@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "workspace/kernels/project.h"
 #include "workspace/state.h"
@@ -31,6 +32,11 @@ Image comb_image(const Workspace& ws, const View& view);
 inline constexpr double comb_fraction = 0.2;
 // The scale of the combs: largest curvature `most` on a grid `extent` long.
 double comb_scale_for(double extent, double most);
+// The rows of INTPN whose largest curvature is DISPLAY COMBS CONIC's guess of the scale of a
+// surface's first combs (docs/kernels.md, "Curvature"), in increasing order: every eighth row of
+// patches, and the rows of patches on either side of the input point where an input curve, and
+// where an input stringer, bends most sharply. A grid of NOCUR > 1 and NOSTR > 1.
+std::vector<std::size_t> comb_guess_rows(const Workspace& ws);
 
 // DISPLAY PICTURE: the DUCT picture `text` of NAME.DUCTPIC drawn in space (duct_drawing of
 // workspace/exchange/duct.h) and seen as `view` says, CONIC towards the centre of the picture's

@@ -10,6 +10,7 @@
 #include "tests/workspace/disk_fixtures.h"
 #include "workspace/kernels/curvature.h"
 #include "workspace/kernels/data_error.h"
+#include "workspace/kernels/fit.h"
 #include "workspace/kernels/parallel.h"
 #include "workspace/kernels/project.h"
 
@@ -142,27 +143,53 @@ TEST_CASE("DISPLAY COMBS of a grid made in parts: its scale and combs as one pas
   check_combs(ws);
 }
 
-TEST_CASE("DISPLAY COMBS CONIC guesses its scale from a sample of the rows, made again if wrong") {
-  // The guess takes the rows of every eighth row of patches (7 points a patch here): with the
-  // zigzag on the first curve they hold the sharpest bend, on the last curve they do not.
-  for (const std::size_t curve : {std::size_t(0), std::size_t(39)}) {
-    CAPTURE(curve);
-    const Workspace ws = zigzag_surface(curve);
-    Array made;
-    const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
-    const auto bend = as_vec3(bends);
-    const std::size_t cols = 274, patch_rows = 7;
-    double most = 0, sampled = 0;
-    for (std::size_t k = 0; k < bend.size(); ++k) {
-      most = std::max(most, norm(bend[k]));
-      if (k / 2 / cols / patch_rows % 8 == 0) sampled = std::max(sampled, norm(bend[k]));
-    }
-    const Box3 box = bounding_box(as_vec3(ws.intpn));
-    const Vec3 size = box.hi - box.lo;
-    const double extent = std::max({size.x, size.y, size.z});
-    CHECK((comb_scale_for(extent, sampled) == comb_scale_for(extent, most)) == (curve == 0));
-    check_combs(ws);
+// The largest curvature on the rows of comb_guess_rows (the guess of DISPLAY COMBS CONIC), then
+// the whole grid's.
+std::pair<double, double> guessed_and_whole(const Workspace& ws) {
+  Array made;
+  const Array bends = grid_curvature(surface_input(ws), patches_of(ws, made));
+  const auto bend = as_vec3(bends);
+  const std::size_t cols = intpn_shape(ws.nocur, ws.nostr, ws.intcu, ws.intst).cols;
+  const std::vector<std::size_t> rows = comb_guess_rows(ws);
+  double most = 0, sampled = 0;
+  for (std::size_t k = 0; k < bend.size(); ++k) {
+    most = std::max(most, norm(bend[k]));
+    if (std::binary_search(rows.begin(), rows.end(), k / 2 / cols))
+      sampled = std::max(sampled, norm(bend[k]));
   }
+  return {sampled, most};
+}
+
+// The scale of the combs of `ws` with the largest curvature `most`.
+double scale_of(const Workspace& ws, double most) {
+  const Box3 box = bounding_box(as_vec3(ws.intpn));
+  const Vec3 size = box.hi - box.lo;
+  return comb_scale_for(std::max({size.x, size.y, size.z}), most);
+}
+
+TEST_CASE("DISPLAY COMBS CONIC guesses its scale from some rows, made again if it was wrong") {
+  // Every eighth row of patches (7 lines each), and those on either side of input curve 20: its
+  // zigzag bends both its curve and the stringers that cross it most sharply there.
+  const Workspace zigzag = zigzag_surface(20);
+  std::vector<std::size_t> expected;
+  for (const std::size_t q : {0, 8, 16, 19, 20, 24, 32})
+    for (std::size_t row = 7 * q; row < 7 * q + 7; ++row) expected.push_back(row);
+  CHECK(comb_guess_rows(zigzag) == expected);
+  // Its sharpest bends are near the curve, and the guess is the whole's.
+  const auto [sampled, most] = guessed_and_whole(zigzag);
+  CHECK(scale_of(zigzag, sampled) == scale_of(zigzag, most));
+  check_combs(zigzag);
+  // Stringer 20 made to end upright on the last curve: it bends most in the last row of patches,
+  // not among those rows (its input points are the same), and the combs are made again.
+  Workspace upright = test::make_interpolated(40, 40, 6, 6);
+  const std::size_t end = 2 * 40 + 2 * 20 + 1;  // INPTG: the curves' ends, then the stringers'
+  upright.inptg.ravel[4 * end] = 0, upright.inptg.ravel[4 * end + 1] = 0;
+  upright.inptg.ravel[4 * end + 2] = 1;
+  upright = interpolated_again(std::move(upright));
+  CHECK(comb_guess_rows(upright).back() < 38 * 7);
+  const auto [upright_sampled, upright_most] = guessed_and_whole(upright);
+  CHECK(scale_of(upright, upright_sampled) != scale_of(upright, upright_most));
+  check_combs(upright);
 }
 
 TEST_CASE("DISPLAY COMBS of a single curve or stringer: the combs of its spline") {
