@@ -200,20 +200,17 @@ void run_change(Context& ctx, const Choice* option) {
     }
     density = ask_grid_too(ctx, ws);
   }
-  const Changes changes = ws.changes;
   SurfaceInput input{ws.nocur, ws.nostr, density.intcu,     density.intst,
                      &inppn,   &inptg,   modes.marks_twists};
-  // PATCHES of the workspace's own (FIT's, END APL's) are kept, and INTPN made from them.
+  // PATCHES of the workspace's own (FIT's, END APL's) are kept, and INTPN made from them: they
+  // are still not the interpolation's.
   const bool refitted = what == grid && !ws.patches.empty();
+  const bool derived = !refitted || ws.changes.derived;
   Surface surface = interpolate_surface(ws, input, refitted);
-  make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
-               std::move(surface), modes);
   // The grid of input points is the same: only the parts the entries changed are new.
-  ws.changes = changes;
-  ws.changes.edited(point_edits, tangent_edits);
-  keep_splines(ws, ws.splines.made);  // the new surface's, kept by make_current
-  // Patches kept as they were (FIT's, or assigned in APL) are still not the interpolation's.
-  if (refitted) ws.changes.derived = changes.derived;
+  const EditedInputs edited{point_edits, tangent_edits};
+  make_current(ws, ws.nocur, ws.nostr, density, std::move(inppn), std::move(inptg),
+               std::move(surface), modes, derived, &edited);
 }
 
 constexpr const Prompt* questions[] = {

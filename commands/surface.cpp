@@ -49,7 +49,7 @@ Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit
 }
 
 void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
-                  Surface surface, SurfaceModes modes, bool derived) {
+                  Surface surface, SurfaceModes modes, bool derived, const EditedInputs* edited) {
   ws.nocur = nocur;
   ws.nostr = nostr;
   ws.intcu = density.intcu;
@@ -59,7 +59,11 @@ void make_current(Workspace& ws, int nocur, int nostr, Density density, Array in
   ws.patches = std::move(surface.patches);
   ws.intpn = std::move(surface.intpn);
   ws.set_surface_modes(modes.marks_twists, modes.auto_tangents);
-  ws.changes.replaced(derived);
+  if (edited)
+    ws.changes.edited(edited->points, edited->tangents);
+  else
+    ws.changes.replaced();
+  ws.changes.derived = derived;
   keep_splines(ws, std::move(surface.tangents));
 }
 

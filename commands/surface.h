@@ -23,11 +23,19 @@ struct SurfaceModes {
 // `; THE SURFACE IS NOT CHANGED`.
 Surface interpolate_surface(Workspace& ws, const SurfaceInput& input, bool refit_only = false);
 
+// The parts of INPPN and INPTG that CHANGE edited in place.
+struct EditedInputs {
+  const Edits& points;
+  const Edits& tangents;
+};
+
 // Makes an interpolated surface the current one: the only change BUILD and CHANGE make to the
 // workspace, once everything has been asked and computed. It counts as a new surface
-// (Changes::replaced; `derived` false when PATCHES are not the interpolation of the inputs, as
-// FIT's); CHANGE then says which parts of the inputs are new.
+// (Changes::replaced), or with `edited` as the same inputs with those parts new
+// (Changes::edited); `derived` is false when PATCHES are not the interpolation of the inputs (as
+// FIT's). The surface keeps the tangents it was interpolated with (keep_splines).
 void make_current(Workspace& ws, int nocur, int nostr, Density density, Array inppn, Array inptg,
-                  Surface surface, SurfaceModes modes = {}, bool derived = true);
+                  Surface surface, SurfaceModes modes = {}, bool derived = true,
+                  const EditedInputs* edited = nullptr);
 
 }  // namespace igds
