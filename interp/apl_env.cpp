@@ -477,12 +477,14 @@ std::optional<std::string> AplEnvironment::start() {
       return reason(*p);
     }
     Array patches, intpn;
+    std::shared_ptr<const SplineTangents> tangents;  // those the interpolation made
     if (ws_.nocur > 0) {
       try {
         if (remake_patches) {
           Surface s = interpolate(igds::surface_input(ws_));
           patches = std::move(s.patches);
           intpn = std::move(s.intpn);
+          tangents = std::move(s.tangents);
         } else if (remake_intpn) {
           intpn = refit(igds::surface_input(ws_), old_patches);
         }
@@ -516,6 +518,7 @@ std::optional<std::string> AplEnvironment::start() {
     }
     // igds's interpolation when PATCHES was made here, or was and is kept (a FIT's stays its own).
     ws_.changes.replaced(!own_patches && !own_intpn && (remake_patches || ws_.changes.derived));
+    keep_splines(ws_, std::move(tangents));
   }
   drop_derived_patches(ws_);
   for (Variable v : {Variable::image, Variable::temp1, Variable::temp2}) {

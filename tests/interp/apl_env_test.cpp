@@ -168,6 +168,8 @@ TEST_CASE("START makes PATCHES and INTPN again from changed inputs") {
   CHECK(given_patches(apl.ws) == expected.patches);
   CHECK(apl.ws.intpn == expected.intpn);
   CHECK(apl.ws.changes.derived);
+  // The tangents the interpolation made are kept with the surface (as BUILD's are).
+  test::check_kept_splines(apl.ws);
   CHECK(apl("⍴INTPN") == Lines{"7 3 3"});
   // FIT is the grid of the current PATCHES, as igds computes it.
   CHECK(apl("∧/,FIT=INTPN") == Lines{"1"});
