@@ -175,9 +175,10 @@ std::optional<std::size_t> sharpest_input_row(Vec3View points, std::size_t curve
       const Vec3 p = points[m - along], q = points[m], r = points[m + along];
       const Vec3 a = q - p, b = r - q, c = r - p;
       const double sides = dot(a, a) * dot(b, b) * dot(c, c);
+      if (!(sides > 0)) continue;  // two of the points are one
       const Vec3 area = cross(a, b);
       const double bend = 4 * dot(area, area) / sides;
-      if (sides > 0 && bend > most) most = bend, at = i;
+      if (bend > most) most = bend, at = i;
     }
   return at;
 }
