@@ -175,6 +175,17 @@ TEST_CASE("DISPLAY COMBS CONIC guesses its scale from some rows, made again if i
   for (const std::size_t q : {0, 8, 16, 19, 20, 24, 32})
     for (std::size_t row = 7 * q; row < 7 * q + 7; ++row) expected.push_back(row);
   CHECK(comb_guess_rows(zigzag) == expected);
+  // Its first curve made a pole (every point one): no circle passes through three of its
+  // points, and the search along the curves goes on past them to the zigzag; the stringers bend
+  // most as they leave the pole, in the first two rows of patches.
+  Workspace pole = zigzag;
+  for (std::size_t j = 1; j < 40; ++j)
+    for (std::size_t c = 0; c < 3; ++c) pole.inppn.ravel[3 * j + c] = pole.inppn.ravel[c];
+  pole = interpolated_again(std::move(pole));
+  std::vector<std::size_t> with_pole = expected;
+  for (std::size_t row = 7; row < 14; ++row) with_pole.push_back(row);
+  std::sort(with_pole.begin(), with_pole.end());
+  CHECK(comb_guess_rows(pole) == with_pole);
   // Its sharpest bends are near the curve, and the guess is the whole's.
   const auto [sampled, most] = guessed_and_whole(zigzag);
   CHECK(scale_of(zigzag, sampled) == scale_of(zigzag, most));

@@ -145,44 +145,12 @@ void start_writeback([[maybe_unused]] int fd, [[maybe_unused]] std::uint64_t off
 #endif
 }
 
-// A TextOut into an open file: one buffer of `piece` bytes, written at its offset whenever it
-// fills or a seek moves the text elsewhere. A Ctrl-C waiting stops the text there (the files
-// made this way are the user's: EXPORT, PLOT, WRITE; the temporary is removed).
-class FileOut final : public TextOut {
- public:
-  explicit FileOut(int fd) : fd_(fd), buffer_(std::make_unique_for_overwrite<char[]>(piece)) {
-    begin_ = at_ = buffer_.get();
-    end_ = begin_ + piece;
-  }
-  // Writes what is left; IoError when the system refuses.
-  void finish() { seek(offset()); }
-  // After the buffer, straight from where the runs are.
-  void put_runs(std::span<const std::string_view> runs) override {
-    seek(offset());
-    std::size_t n = 0;
-    for (std::string_view run : runs) n += run.size();
-    write_runs(fd_, runs, base_);
-    if (n > 0) start_writeback(fd_, base_, n);
-    base_ += n;
-  }
-
- private:
-  void take(std::size_t) override {
-    check_interrupt();
-    const auto n = static_cast<std::size_t>(at_ - begin_);
-    put_at(fd_, begin_, n, base_);
-    if (n > 0) start_writeback(fd_, base_, n);
-    begin_ = at_ = buffer_.get();
-  }
-  int fd_;
-  std::unique_ptr<char[]> buffer_;
-};
-
-// The runs into the file, by writev, a piece at a time.
-void put_runs(int fd, const std::vector<std::string_view>& runs) {
+// The runs into the file from `offset` on, by pwritev, a piece at a time, the system asked to
+// start putting each piece on the disk once it is written. Returns the offset after them.
+std::uint64_t write_in_pieces(int fd, std::span<const std::string_view> runs,
+                              std::uint64_t offset = 0) {
   std::vector<std::string_view> some;
   std::size_t size = 0;
-  std::uint64_t offset = 0;
   auto flush = [&] {
     write_runs(fd, some, offset);
     if (size > 0) start_writeback(fd, offset, size);
@@ -200,7 +168,37 @@ void put_runs(int fd, const std::vector<std::string_view>& runs) {
     }
   }
   flush();
+  return offset;
 }
+
+// A TextOut into an open file: one buffer of `piece` bytes, written at its offset whenever it
+// fills or a seek moves the text elsewhere. A Ctrl-C waiting stops the text there (the files
+// made this way are the user's: EXPORT, PLOT, WRITE; the temporary is removed).
+class FileOut final : public TextOut {
+ public:
+  explicit FileOut(int fd) : fd_(fd), buffer_(std::make_unique_for_overwrite<char[]>(piece)) {
+    begin_ = at_ = buffer_.get();
+    end_ = begin_ + piece;
+  }
+  // Writes what is left; IoError when the system refuses.
+  void finish() { seek(offset()); }
+  // After the buffer, straight from where the runs are.
+  void put_runs(std::span<const std::string_view> runs) override {
+    seek(offset());
+    base_ = write_in_pieces(fd_, runs, base_);
+  }
+
+ private:
+  void take(std::size_t) override {
+    check_interrupt();
+    const auto n = static_cast<std::size_t>(at_ - begin_);
+    put_at(fd_, begin_, n, base_);
+    if (n > 0) start_writeback(fd_, base_, n);
+    begin_ = at_ = buffer_.get();
+  }
+  int fd_;
+  std::unique_ptr<char[]> buffer_;
+};
 
 // Creates `path` (it must not exist; never through a link), writes by `write(fd)`, fsyncs;
 // removes it on failure.
@@ -223,7 +221,7 @@ void create_and_write(const std::filesystem::path& path, const Write& write) {
 }
 
 void create_and_write(const std::filesystem::path& path, const Writer& bytes) {
-  create_and_write(path, [&](int fd) { put_runs(fd, bytes.runs()); });
+  create_and_write(path, [&](int fd) { write_in_pieces(fd, bytes.runs()); });
 }
 
 // Clears the way for a temporary: a stale file or link there is removed (never followed), a
@@ -285,7 +283,7 @@ std::filesystem::path temporary_for(const std::filesystem::path& target) {
 
 bool write_file(const std::filesystem::path& target, const Writer& bytes, bool replace) {
   return write_in_place(
-      target, [&](int fd) { put_runs(fd, bytes.runs()); }, replace);
+      target, [&](int fd) { write_in_pieces(fd, bytes.runs()); }, replace);
 }
 
 std::optional<std::uint64_t> write_made(const std::filesystem::path& target, const Make& make,
