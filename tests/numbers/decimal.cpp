@@ -5,11 +5,13 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <random>
 #include <string>
 
@@ -75,6 +77,25 @@ TEST_CASE("The shortest reals of IGES and STEP: exactly std::to_chars's digits a
   CHECK(real_of(5e-324) == "5.E-324");
   CHECK(real_of(-1.7976931348623157e308) == "-1.7976931348623157E308");
   CHECK(real_of(9007199254740993.0) == "9007199254740992.");  // beyond 2^53: the integer's digits
+}
+
+TEST_CASE("format_real writes no further than its 32 characters") {
+  const double values[] = {-1.2345678901234567e-308,
+                           -1.7976931348623157e308,
+                           123.45678901234567,
+                           -0.0001234567890123456,
+                           1e21,
+                           4503599627370495.5,
+                           0.1,
+                           -7.0};
+  for (double v : values) {
+    char buffer[64];
+    std::fill(std::begin(buffer), std::end(buffer), '#');
+    const std::size_t n = format_real(buffer, v);
+    CHECK(std::string(buffer, n) == real_by_to_chars(v));
+    CHECK(n <= 24);
+    CHECK(std::string(buffer + 32, 32) == std::string(32, '#'));
+  }
 }
 
 TEST_CASE("the integers' reals are made once and are format_real's") {

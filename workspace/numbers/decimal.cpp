@@ -22,11 +22,12 @@ char* put_exponent(char* w, int x) {
 // format_real of a finite non-zero value below 2^53 in magnitude. std::to_chars gives its shortest
 // digits in scientific form, d.ddde+XX (the cheapest of the library's ways to them), and they are
 // laid out here as its general form lays them out: fixed or scientific, whichever is shorter, fixed
-// on a tie.
+// on a tie. Each part (at most 16 digits, or 5 zeros) is moved by a copy of 8 or 16 bytes, a vector
+// move or two where a copy of the part's own length is a call to the library's; what a copy puts
+// past its part is written over by the next, and none reaches past the 32 bytes at `out`.
 std::size_t format_below_2_53(char* out, double value) {
-  char text[32];
-  const char* const end =
-      std::to_chars(text, text + sizeof text, value, std::chars_format::scientific).ptr;
+  char text[48];  // the scientific form, and bytes read past its end
+  const char* const end = std::to_chars(text, text + 32, value, std::chars_format::scientific).ptr;
   const char* p = text;
   char* o = out;
   if (*p == '-') *o++ = *p++;
@@ -42,11 +43,14 @@ std::size_t format_below_2_53(char* out, double value) {
   const int scientific = n + (n > 1 ? 1 : 0) + 2 + (std::abs(x) >= 100 ? 3 : 2);
   const int fixed = x < 0 ? n + 1 - x : (n > x + 1 ? n + 1 : x + 1);
   auto copy = [&](const char* from, int count) {
-    std::memcpy(o, from, static_cast<std::size_t>(count));
+    if (count <= 8)
+      std::memcpy(o, from, 8);
+    else
+      std::memcpy(o, from, 16);
     o += count;
   };
   auto zeros = [&](int count) {
-    std::memset(o, '0', static_cast<std::size_t>(count));
+    std::memset(o, '0', 8);
     o += count;
   };
   if (fixed > scientific) {
@@ -55,6 +59,7 @@ std::size_t format_below_2_53(char* out, double value) {
     copy(fraction, nf);
     return static_cast<std::size_t>(put_exponent(o, x) - out);
   }
+  // A fixed form is chosen only when no longer than the scientific one: at most 5 zeros.
   if (x < 0) {
     *o++ = '0';
     *o++ = '.';

@@ -17,7 +17,8 @@ namespace igds {
 // (fixed or scientific, whichever is shorter, fixed on a tie), with a decimal point always (IGES
 // and STEP reals must have one) and the exponent without its plus and leading zeros: 1 -> "1.",
 // 0.1 -> "0.1", 1e+20 -> "1.E20", -2.5e-07 -> "-2.5E-7". A zero has no sign.
-// Into `buffer` (at least 32 characters); returns the length.
+// Into `buffer` (at least 32 characters, any of which may be written whatever the text's own
+// length); returns the length.
 std::size_t format_real(char* buffer, double value);
 void put_real(std::string& out, double value);
 
