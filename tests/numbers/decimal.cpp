@@ -79,6 +79,9 @@ TEST_CASE("The shortest reals of IGES and STEP: exactly std::to_chars's digits a
   CHECK(real_of(9007199254740993.0) == "9007199254740992.");  // beyond 2^53: the integer's digits
 }
 
+// A text of each form of the layout: the longest, the largest double, a point among the digits,
+// zeros after the point, an exponent, sixteen digits before the point, an integer and its zeros
+// (the most, five), a short fraction and an integer.
 TEST_CASE("format_real writes no further than its 32 characters") {
   const double values[] = {-1.2345678901234567e-308,
                            -1.7976931348623157e308,
@@ -86,6 +89,7 @@ TEST_CASE("format_real writes no further than its 32 characters") {
                            -0.0001234567890123456,
                            1e21,
                            4503599627370495.5,
+                           -1234567890100000.0,
                            0.1,
                            -7.0};
   for (double v : values) {
